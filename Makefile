@@ -1,0 +1,56 @@
+# intercurve: the commands for people. CMake does the building underneath.
+#   make          build (build/)
+#   make test     install missing Debian packages, build, run every test
+#   make demo     run the main job on a bundled example
+#   make bench    run the benchmarks
+#   make install  install library, headers, pkg-config file and command (PREFIX)
+#   make fuzz     build the libFuzzer target with clang and run it (FUZZ_SECONDS)
+
+BUILD ?= build
+PREFIX ?= /usr/local
+FUZZ_SECONDS ?= 60
+CMAKE_FLAGS ?=
+DEB_PACKAGES = cmake pkg-config libcjson-dev libcairo2-dev
+
+.PHONY: all deps configure test demo bench install fuzz sanitize clean
+
+all: configure
+	cmake --build $(BUILD) -j2
+
+# Debian packages the build needs, installed only when missing.
+deps:
+	@missing=""; for p in $(DEB_PACKAGES); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+	  echo "installing:$$missing"; \
+	  if [ "$$(id -u)" = 0 ]; then SUDO=""; else SUDO=sudo; fi; \
+	  $$SUDO apt-get update -qq && $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing; \
+	fi
+
+configure: deps
+	@test -f $(BUILD)/CMakeCache.txt || cmake -S . -B $(BUILD) -DCMAKE_INSTALL_PREFIX=$(PREFIX) $(CMAKE_FLAGS)
+
+test: all
+	cd $(BUILD) && ctest --output-on-failure -j2
+
+sanitize:
+	$(MAKE) test BUILD=build-asan CMAKE_FLAGS="-DIC_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug"
+
+demo: all
+	./$(BUILD)/intercurve eval examples/viviani.json --surface sphere --at 0.3,0.4 --order 3
+
+bench: all
+	./$(BUILD)/bench/bench_surface
+
+install: all
+	cmake --install $(BUILD) --prefix $(PREFIX)
+
+fuzz: deps
+	cmake -S . -B build-fuzz -DCMAKE_C_COMPILER=clang -DIC_FUZZ=ON -DIC_BUILD_TESTS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
+	cmake --build build-fuzz -j2 --target fuzz_expr
+	mkdir -p fuzz/corpus/expr
+	./build-fuzz/fuzz/fuzz_expr -max_total_time=$(FUZZ_SECONDS) -max_len=256 fuzz/corpus/expr fuzz/seeds/expr
+
+clean:
+	rm -rf build build-asan build-fuzz

@@ -1,0 +1,17 @@
+/**
+ * @file intercurve.h
+ * intercurve: differential geometry of surface intersection curves.
+ * Includes every public header (DESIGN.md section 1 lists the layers).
+ */
+#ifndef INTERCURVE_H
+#define INTERCURVE_H
+
+#include "intercurve/common.h"
+#include "intercurve/jet.h"
+#include "intercurve/expr.h"
+#include "intercurve/surface.h"
+#include "intercurve/problem.h"
+
+#define IC_VERSION "0.1.0"
+
+#endif

@@ -1,0 +1,144 @@
+/**
+ * @file expr.h
+ * The formula language (DESIGN.md 3.2): parse, report errors with the
+ * column, compile to a flat tape, evaluate on doubles, intervals and jets.
+ *
+ * Grammar (lowest precedence first):
+ *   sum     = product { ("+" | "-") product }
+ *   product = unary { ("*" | "/") unary }
+ *   unary   = ("-" | "+") unary | power
+ *   power   = primary [ "^" unary ]          (right-associative; -x^2 = -(x^2))
+ *   primary = number | name | name "(" sum { "," sum } ")" | "(" sum ")"
+ * Numbers: 1, 2.5, .5, 1e-3 (read without regard to the C locale).
+ * Names: the variables, the constants given at compile time, pi, e.
+ * Functions: sqrt exp log sin cos tan asin acos atan atan2 sinh cosh tanh
+ * abs pow. pow(a, b) is a^b. A non-constant exponent needs a positive base.
+ *
+ * One ::ic_expr holds several formulas over the same variables (the x, y, z
+ * of a parametric surface) in one tape: shared subexpressions are computed
+ * once, constants are folded at compile time.
+ *
+ * An ::ic_expr is immutable after compilation and may be shared between
+ * threads; evaluation takes caller-owned work memory.
+ */
+#ifndef INTERCURVE_EXPR_H
+#define INTERCURVE_EXPR_H
+
+#include "intercurve/common.h"
+#include "intercurve/jet.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Longest formula accepted, in bytes, and deepest nesting of the grammar. */
+#define IC_EXPR_MAX_LEN 65536
+#define IC_EXPR_MAX_DEPTH 200
+
+typedef struct ic_expr ic_expr;
+
+/** A closed interval [lo, hi]. lo > hi (both NaN) is the empty interval. */
+typedef struct {
+    double lo, hi;
+} ic_interval;
+
+/**
+ * Compiles `nformulas` formulas over the variables `vars[nvars]` with the
+ * named constants `consts[nconsts]` (may be NULL when nconsts = 0).
+ * On a parse error returns IC_ERR_PARSE and fills `err` with the 1-based
+ * column of the offending token and a message; `*which` (if not NULL)
+ * receives the index of the formula at fault. Names of variables and
+ * constants must be identifiers distinct from each other, from pi and e
+ * and from the function names (IC_ERR_INVALID otherwise).
+ */
+IC_NODISCARD ic_status ic_expr_compile(ic_expr **out, const char *const *formulas, int nformulas,
+                                       const char *const *vars, int nvars,
+                                       const ic_constant *consts, int nconsts, int *which,
+                                       ic_error *err);
+/** Frees a compiled expression; NULL is allowed. */
+void ic_expr_free(ic_expr *e);
+
+int ic_expr_num_outputs(const ic_expr *e);
+int ic_expr_num_vars(const ic_expr *e);
+/** Number of instructions of the tape (after folding and sharing). */
+int ic_expr_tape_len(const ic_expr *e);
+
+/**
+ * Evaluates a formula made only of numbers, pi, e and the given constants
+ * (used for numbers written as formulas in problem files, "2*pi").
+ * IC_ERR_PARSE with the column on a malformed or non-constant formula,
+ * IC_ERR_DOMAIN if the value is not finite.
+ */
+IC_NODISCARD ic_status ic_expr_eval_constant(double *value, const char *formula,
+                                             const ic_constant *consts, int nconsts,
+                                             ic_error *err);
+
+/** Doubles of work memory for ic_expr_eval. */
+size_t ic_expr_work_len(const ic_expr *e);
+/**
+ * out[i] = formula i at the point x[nvars]. Returns IC_ERR_DOMAIN (with the
+ * column of the operation in `err`) if an intermediate value is not finite
+ * or an argument is outside its function's domain.
+ */
+IC_NODISCARD ic_status ic_expr_eval(const ic_expr *e, double *out, const double *x, double *work,
+                                    ic_error *err);
+
+/** ic_interval elements of work memory for ic_expr_eval_interval. */
+size_t ic_expr_interval_work_len(const ic_expr *e);
+/**
+ * out[i] encloses the values of formula i over the box x[nvars], at the
+ * points of the box where it is defined (rounding is outward). An empty
+ * result means the formula is defined nowhere in the box; an infinite bound
+ * means no finite bound was found (a division by an interval holding 0).
+ */
+void ic_expr_eval_interval(const ic_expr *e, ic_interval *out, const ic_interval *x,
+                           ic_interval *work);
+
+/** Doubles of work memory for ic_expr_eval_jet in space sp. */
+size_t ic_expr_jet_work_len(const ic_expr *e, const ic_jet_space *sp);
+/**
+ * out[i] (jet i of ic_jet_space_len(sp) doubles, consecutive) = formula i
+ * composed with the jets x[0..nvars-1] of sp. IC_ERR_DOMAIN (with the
+ * column in `err`) where a function's jet does not exist.
+ */
+IC_NODISCARD ic_status ic_expr_eval_jet(const ic_expr *e, double *out, const double *const *x,
+                                        const ic_jet_space *sp, double *work, ic_error *err);
+
+/**
+ * Writes a two-line picture of an error position into buf:
+ *   "  <formula>\n  <spaces>^\n". Formulas longer than fits are cut around
+ * the column. Returns buf.
+ */
+char *ic_expr_caret(char *buf, size_t size, const char *formula, int column);
+
+/* Interval arithmetic used by the evaluator, exposed for the subdivision
+ * code and for tests. Every result encloses the exact image. */
+ic_interval ic_interval_add(ic_interval a, ic_interval b);
+ic_interval ic_interval_sub(ic_interval a, ic_interval b);
+ic_interval ic_interval_mul(ic_interval a, ic_interval b);
+ic_interval ic_interval_div(ic_interval a, ic_interval b);
+ic_interval ic_interval_neg(ic_interval a);
+ic_interval ic_interval_sqrt(ic_interval a);
+ic_interval ic_interval_exp(ic_interval a);
+ic_interval ic_interval_log(ic_interval a);
+ic_interval ic_interval_pow_int(ic_interval a, long n);
+ic_interval ic_interval_pow_real(ic_interval a, double p);
+ic_interval ic_interval_pow(ic_interval a, ic_interval b);
+ic_interval ic_interval_sin(ic_interval a);
+ic_interval ic_interval_cos(ic_interval a);
+ic_interval ic_interval_tan(ic_interval a);
+ic_interval ic_interval_asin(ic_interval a);
+ic_interval ic_interval_acos(ic_interval a);
+ic_interval ic_interval_atan(ic_interval a);
+ic_interval ic_interval_atan2(ic_interval y, ic_interval x);
+ic_interval ic_interval_sinh(ic_interval a);
+ic_interval ic_interval_cosh(ic_interval a);
+ic_interval ic_interval_tanh(ic_interval a);
+ic_interval ic_interval_abs(ic_interval a);
+/** 1 if the interval is empty (lo > hi or NaN). */
+int ic_interval_is_empty(ic_interval a);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

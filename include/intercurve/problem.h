@@ -1,0 +1,47 @@
+/**
+ * @file problem.h
+ * Problem files (DESIGN.md 3.1; docs/problem-files.md lists every key).
+ *
+ * Every error names the file, the JSON path ("surfaces[1].xyz[2]") in
+ * err->path and, for a formula, the column in err->column; the message then
+ * ends with a caret picture of the formula.
+ */
+#ifndef INTERCURVE_PROBLEM_H
+#define INTERCURVE_PROBLEM_H
+
+#include "intercurve/common.h"
+#include "intercurve/surface.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define IC_PROBLEM_MAX_FILE (16 * 1024 * 1024)
+
+typedef struct ic_problem ic_problem;
+
+/** Reads and validates a problem file. IC_ERR_PARSE for malformed JSON or
+ *  formulas, IC_ERR_INVALID for wrong values, with path and message. */
+IC_NODISCARD ic_status ic_problem_load(ic_problem **p, const char *filename, ic_error *err);
+/** The same from a JSON text in memory. */
+IC_NODISCARD ic_status ic_problem_parse(ic_problem **p, const char *json, size_t len,
+                                        ic_error *err);
+/** Frees a problem and its surfaces; NULL is allowed. */
+void ic_problem_free(ic_problem *p);
+
+const char *ic_problem_title(const ic_problem *p);
+int ic_problem_num_surfaces(const ic_problem *p);
+/** The i-th surface (owned by the problem). */
+ic_surface *ic_problem_surface(const ic_problem *p, int i);
+const char *ic_problem_surface_name(const ic_problem *p, int i);
+/** Index of the surface called `name`, or -1. */
+int ic_problem_find_surface(const ic_problem *p, const char *name);
+/** 1 for a self-intersection problem. */
+int ic_problem_is_self(const ic_problem *p);
+/** 1 if the problem has a box; then box[3][2] receives it. */
+int ic_problem_box(const ic_problem *p, double box[3][2]);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

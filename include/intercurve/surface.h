@@ -1,0 +1,167 @@
+/**
+ * @file surface.h
+ * One type for every surface: parametric R(u, v) or implicit f(x, y, z) = 0,
+ * given as formulas, as a C callback, or as a primitive.
+ *
+ * Conventions (docs/conventions.md):
+ *  - unit normal: parametric N = (R_u x R_v) / |R_u x R_v|, implicit
+ *    N = grad f / |grad f|;
+ *  - second fundamental form L = R_uu . N, M = R_uv . N, N = R_vv . N
+ *    (implicit: II(X, Y) = -X^T Hess(f) Y / |grad f| on an orthonormal
+ *    tangent basis), so the normal curvature of a curve c on the surface is
+ *    c'' . N and a sphere with its outward normal has principal curvatures
+ *    -1/r;
+ *  - principal curvatures are ordered k1 >= k2.
+ *
+ * A surface owns a workspace that grows on first use of a new order, so
+ * evaluation does not allocate in steady state; one surface object must not
+ * be evaluated from two threads at once.
+ */
+#ifndef INTERCURVE_SURFACE_H
+#define INTERCURVE_SURFACE_H
+
+#include "intercurve/common.h"
+#include "intercurve/jet.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum { IC_PARAMETRIC = 0, IC_IMPLICIT = 1 } ic_surface_kind;
+
+typedef enum {
+    IC_PRIM_PLANE,
+    IC_PRIM_SPHERE,
+    IC_PRIM_CYLINDER,
+    IC_PRIM_CONE,
+    IC_PRIM_TORUS,
+    IC_PRIM_ELLIPSOID
+} ic_primitive_kind;
+
+/**
+ * A primitive in standard position, axis along z, moved to `center`
+ * (docs/surfaces.md gives both forms of each):
+ *  - plane:     point `center`, normal `normal`;
+ *               R = center + u e1 + v e2 with (e1, e2, normal/|normal|) a
+ *               right-handed orthonormal frame; f = normal . (x - center);
+ *  - sphere:    R = c + r (cos u cos v, sin u cos v, sin v); f = |x-c|^2 - r^2;
+ *  - cylinder:  R = c + (r cos u, r sin u, v); f = (x-cx)^2 + (y-cy)^2 - r^2;
+ *  - cone:      apex c, half-angle a: R = c + (v tan a cos u, v tan a sin u, v);
+ *               f = (x-cx)^2 + (y-cy)^2 - tan^2(a) (z-cz)^2;
+ *  - torus:     R = c + ((R + r cos v) cos u, (R + r cos v) sin u, r sin v);
+ *               f = (|x-c|^2 + R^2 - r^2)^2 - 4 R^2 ((x-cx)^2 + (y-cy)^2);
+ *  - ellipsoid: R = c + (a cos u cos v, b sin u cos v, c sin v);
+ *               f = (x-cx)^2/a^2 + (y-cy)^2/b^2 + (z-cz)^2/c^2 - 1.
+ */
+typedef struct {
+    ic_primitive_kind kind;
+    double center[3];
+    double normal[3];     /**< plane */
+    double radius;        /**< sphere, cylinder; torus: tube radius r */
+    double major_radius;  /**< torus: R */
+    double half_angle;    /**< cone, radians, in (0, pi/2) */
+    double axes[3];       /**< ellipsoid semi-axes */
+} ic_primitive;
+
+/**
+ * A surface given by code. It fills `derivs` with the partial derivatives
+ * (not divided by factorials) of the surface at `at`, up to the order of
+ * `sp`, in the monomial order of `sp` (jet.h): for a parametric surface
+ * three consecutive arrays (x, y, z) of ic_jet_space_len(sp) doubles over
+ * (u, v); for an implicit one a single array over (x, y, z). It returns 0,
+ * or nonzero where the surface is not defined at `at`.
+ */
+typedef int (*ic_surface_callback)(void *user, double *derivs, const double *at,
+                                   const ic_jet_space *sp);
+
+/** Sine-like threshold below which a parametric point counts as degenerate:
+ *  |R_u x R_v| <= IC_SURFACE_DEGENERATE * max(|R_u|, |R_v|)^2. */
+#define IC_SURFACE_DEGENERATE 1e-10
+
+typedef struct ic_surface ic_surface;
+
+/** Parametric surface from formulas x, y, z over the parameters
+ *  params[2] (NULL: "u", "v"). On a parse error, *which (if not NULL) is the
+ *  index of the formula at fault and err->column its column. */
+IC_NODISCARD ic_status ic_surface_new_parametric(ic_surface **s, const char *const xyz[3],
+                                                 const char *const params[2],
+                                                 const ic_constant *consts, int nconsts,
+                                                 int *which, ic_error *err);
+/** Implicit surface f(x, y, z) = 0 from a formula. */
+IC_NODISCARD ic_status ic_surface_new_implicit(ic_surface **s, const char *f,
+                                               const ic_constant *consts, int nconsts,
+                                               ic_error *err);
+IC_NODISCARD ic_status ic_surface_new_callback(ic_surface **s, ic_surface_kind kind,
+                                               ic_surface_callback fn, void *user,
+                                               ic_error *err);
+/** A primitive in its parametric or implicit form. IC_ERR_INVALID on
+ *  non-positive radii or axes, a zero plane normal, a cone angle outside
+ *  (0, pi/2). Parametric primitives get their natural domain (docs). */
+IC_NODISCARD ic_status ic_surface_new_primitive(ic_surface **s, const ic_primitive *prim,
+                                                ic_surface_kind form, ic_error *err);
+/** Frees a surface; NULL is allowed. */
+void ic_surface_free(ic_surface *s);
+
+ic_surface_kind ic_surface_get_kind(const ic_surface *s);
+/** 2 for parametric (u, v), 3 for implicit (x, y, z). */
+int ic_surface_num_inputs(const ic_surface *s);
+/** 3 for parametric (x, y, z), 1 for implicit (f). */
+int ic_surface_num_outputs(const ic_surface *s);
+
+/** Parameter domain [[u0, u1], [v0, v1]] and periodic flags of a parametric
+ *  surface. IC_ERR_INVALID for an implicit surface or u0 >= u1. */
+IC_NODISCARD ic_status ic_surface_set_domain(ic_surface *s, const double domain[2][2],
+                                             const int periodic[2], ic_error *err);
+void ic_surface_get_domain(const ic_surface *s, double domain[2][2], int periodic[2]);
+
+/**
+ * Taylor coefficients of the surface at `at` (u, v or x, y, z): `sp` must
+ * have ic_surface_num_inputs(s) variables; `out` receives
+ * ic_surface_num_outputs(s) consecutive jets of sp. The partial derivative
+ * d^alpha is out[i] * ic_jet_factorial(sp, i). IC_ERR_DOMAIN where the
+ * surface is undefined at `at` (err says which operation), IC_ERR_INVALID on
+ * a space of the wrong number of variables.
+ */
+IC_NODISCARD ic_status ic_surface_taylor(ic_surface *s, double *out, const double *at,
+                                         const ic_jet_space *sp, ic_error *err);
+
+/**
+ * The surface composed with jets: `in` holds ic_surface_num_inputs(s) jets of
+ * `sp` (a parameter curve (u(s), v(s)) or a space curve (x(s), y(s), z(s)),
+ * or jets in more variables); `out` receives ic_surface_num_outputs(s)
+ * consecutive jets of sp: R(u(s), v(s)) or f(x(s), y(s), z(s)).
+ */
+IC_NODISCARD ic_status ic_surface_compose(ic_surface *s, double *out, const double *const *in,
+                                          const ic_jet_space *sp, ic_error *err);
+
+/** Point R(at) (parametric, out[3]) or value f(at) (implicit, out[1]). */
+IC_NODISCARD ic_status ic_surface_eval(ic_surface *s, double *out, const double *at,
+                                       ic_error *err);
+
+/** Local geometry of a surface at a point (see the conventions above). */
+typedef struct {
+    double point[3];       /**< R(u, v); implicit: the given point */
+    double value;          /**< implicit: f there (0 on the surface); parametric: 0 */
+    double normal[3];      /**< unit normal */
+    double basis[2][3];    /**< tangent basis: R_u, R_v; implicit: orthonormal e1, e2 */
+    double first[3];       /**< E, F, G in that basis */
+    double second[3];      /**< L, M, N in that basis */
+    double principal_curvatures[2];          /**< k1 >= k2 */
+    double principal_directions[2][3];       /**< unit vectors in space */
+    double principal_directions_basis[2][2]; /**< the same in basis coordinates */
+    double gauss, mean;    /**< K = k1 k2, H = (k1 + k2) / 2 */
+    double normal_length;  /**< |R_u x R_v| or |grad f| */
+} ic_surface_geometry;
+
+/**
+ * Geometry at `at`. IC_ERR_DOMAIN at a degenerate point (parametric:
+ * |R_u x R_v| <= IC_SURFACE_DEGENERATE max(|R_u|, |R_v|)^2, e.g. a sphere
+ * pole; implicit: grad f = 0), with err saying so.
+ */
+IC_NODISCARD ic_status ic_surface_geometry_at(ic_surface *s, ic_surface_geometry *g,
+                                              const double *at, ic_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,30 @@
+/* Shared pieces of the intercurve command. Exit codes (DESIGN.md 3.3):
+ * 0 success, 1 wrong input, 2 the computation cannot be done. */
+#ifndef IC_CLI_H
+#define IC_CLI_H
+
+#include <cjson/cJSON.h>
+#include <stdio.h>
+
+#include "intercurve.h"
+
+enum { EXIT_INPUT = 1, EXIT_COMPUTE = 2 };
+
+/* Commands */
+int ic_cmd_eval(int argc, char **argv);
+
+/* Parses "a,b[,c]" (each a formula of constants, "pi/2") into out[max];
+ * returns the count, or -1 with a message on stderr naming `option`. */
+int ic_cli_parse_list(double *out, int max, const char *text, const char *option);
+/* Parses a whole number in [lo, hi]; -1 with a message on failure. */
+int ic_cli_parse_int(int *out, const char *text, int lo, int hi, const char *option);
+/* Prints an error of the library with its file, path and column. */
+void ic_cli_print_error(const char *file, const ic_error *err);
+
+/* JSON output: arrays of doubles (non-finite values become null). */
+cJSON *ic_json_vector(const double *v, int n);
+cJSON *ic_json_number_or_null(double x);
+/* Prints the document to stdout and frees it; 0 on success. */
+int ic_json_print(cJSON *doc);
+
+#endif

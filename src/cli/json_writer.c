@@ -1,0 +1,35 @@
+/* JSON output helpers for the command. */
+#include "cli.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+cJSON *ic_json_number_or_null(double x)
+{
+    return isfinite(x) ? cJSON_CreateNumber(x) : cJSON_CreateNull();
+}
+
+cJSON *ic_json_vector(const double *v, int n)
+{
+    cJSON *a = cJSON_CreateArray();
+    for (int i = 0; a && i < n; i++)
+        cJSON_AddItemToArray(a, ic_json_number_or_null(v[i]));
+    return a;
+}
+
+int ic_json_print(cJSON *doc)
+{
+    char *text = doc ? cJSON_Print(doc) : NULL;
+    cJSON_Delete(doc);
+    if (!text) {
+        fprintf(stderr, "intercurve: out of memory writing JSON\n");
+        return -1;
+    }
+    int ok = puts(text) >= 0 && fflush(stdout) == 0;
+    free(text);
+    if (!ok) {
+        fprintf(stderr, "intercurve: cannot write the output\n");
+        return -1;
+    }
+    return 0;
+}

@@ -1,0 +1,44 @@
+/* The intercurve command: dispatch to the subcommands. */
+#include "cli.h"
+
+#include <string.h>
+
+static const char USAGE[] =
+    "intercurve " IC_VERSION " - differential geometry of surface intersection curves\n"
+    "\n"
+    "usage: intercurve COMMAND PROBLEM.json [options]\n"
+    "\n"
+    "commands:\n"
+    "  eval    point, normal, fundamental forms, principal curvatures and the\n"
+    "          derivative tensor of one surface of a problem at a point\n"
+    "  point   (not yet available) the intersection's Frenet apparatus at a point\n"
+    "  trace   (not yet available) trace the whole intersection\n"
+    "  plot    (not yet available) draw surfaces, curves and frames\n"
+    "\n"
+    "example:\n"
+    "  intercurve eval examples/viviani.json --surface sphere --at 0.3,0.4\n"
+    "\n"
+    "'intercurve COMMAND --help' describes a command. Exit status: 0 success,\n"
+    "1 wrong input (the message says what and where), 2 the computation cannot be done.\n";
+
+int main(int argc, char **argv)
+{
+    if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 ||
+        strcmp(argv[1], "help") == 0) {
+        fputs(USAGE, argc < 2 ? stderr : stdout);
+        return argc < 2 ? EXIT_INPUT : 0;
+    }
+    if (strcmp(argv[1], "--version") == 0) {
+        puts("intercurve " IC_VERSION);
+        return 0;
+    }
+    if (strcmp(argv[1], "eval") == 0)
+        return ic_cmd_eval(argc - 1, argv + 1);
+    if (strcmp(argv[1], "point") == 0 || strcmp(argv[1], "trace") == 0 ||
+        strcmp(argv[1], "plot") == 0) {
+        fprintf(stderr, "intercurve: '%s' is not available in this version yet\n", argv[1]);
+        return EXIT_INPUT;
+    }
+    fprintf(stderr, "intercurve: unknown command '%s' (try 'intercurve --help')\n", argv[1]);
+    return EXIT_INPUT;
+}

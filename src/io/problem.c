@@ -1,0 +1,502 @@
+/* Problem files: reading and validating (problem.h, docs/problem-files.md). */
+#include "intercurve/problem.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "intercurve/expr.h"
+#include "json_path.h"
+
+#define MAX_SURFACES 2
+#define MAX_CONSTANTS 64
+#define NAME_LEN 64
+
+struct ic_problem {
+    char title[200];
+    int nsurfaces;
+    ic_surface *surfaces[MAX_SURFACES];
+    char names[MAX_SURFACES][NAME_LEN];
+    int self;
+    int has_box;
+    double box[3][2];
+    ic_constant consts[MAX_CONSTANTS];
+    char const_names[MAX_CONSTANTS][NAME_LEN];
+    int nconsts;
+};
+
+typedef struct {
+    const char *name;
+    ic_primitive_kind kind;
+} primitive_name;
+
+static const primitive_name PRIMITIVES[] = {
+    {"plane", IC_PRIM_PLANE},   {"sphere", IC_PRIM_SPHERE}, {"cylinder", IC_PRIM_CYLINDER},
+    {"cone", IC_PRIM_CONE},     {"torus", IC_PRIM_TORUS},   {"ellipsoid", IC_PRIM_ELLIPSOID},
+};
+
+static ic_status invalid(ic_error *err, const char *path, const char *msg)
+{
+    ic_error_set_path(err, "%s", path);
+    return ic_error_set(err, IC_ERR_INVALID, 0, "%s", msg);
+}
+
+static ic_status read_constants(ic_problem *p, const cJSON *obj, ic_error *err)
+{
+    if (!obj)
+        return IC_OK;
+    if (!cJSON_IsObject(obj))
+        return invalid(err, "constants", "expected an object of name: value");
+    for (const cJSON *it = obj->child; it; it = it->next) {
+        char path[IC_ERROR_PATH_LEN];
+        snprintf(path, sizeof path, "constants.%s", it->string);
+        if (p->nconsts == MAX_CONSTANTS)
+            return invalid(err, path, "too many constants (at most 64)");
+        if (strlen(it->string) >= NAME_LEN)
+            return invalid(err, path, "constant name too long");
+        double v;
+        /* a constant may use the ones before it */
+        ic_status st = ic_json_number(&v, it, path, p->consts, p->nconsts, err);
+        if (st != IC_OK)
+            return st;
+        strcpy(p->const_names[p->nconsts], it->string);
+        p->consts[p->nconsts].name = p->const_names[p->nconsts];
+        p->consts[p->nconsts].value = v;
+        p->nconsts++;
+        /* validate the name now, so the error points at it */
+        ic_expr *probe = NULL;
+        const char *one = "0";
+        st = ic_expr_compile(&probe, &one, 1, NULL, 0, p->consts, p->nconsts, NULL, err);
+        ic_expr_free(probe);
+        if (st != IC_OK) {
+            ic_error_set_path(err, "%s", path);
+            return st;
+        }
+    }
+    return IC_OK;
+}
+
+static const cJSON *need(const cJSON *obj, const char *key, const char *path, ic_error *err)
+{
+    const cJSON *it = cJSON_GetObjectItemCaseSensitive(obj, key);
+    if (!it) {
+        ic_error_set_path(err, "%s", path);
+        ic_error_set(err, IC_ERR_INVALID, 0, "missing key \"%s\"", key);
+    }
+    return it;
+}
+
+/* A formula field: a string, or a number (written as a formula). */
+static const char *formula_text(const cJSON *item, char *buf, size_t size)
+{
+    if (cJSON_IsString(item))
+        return item->valuestring;
+    if (cJSON_IsNumber(item)) {
+        snprintf(buf, size, "%.17g", item->valuedouble);
+        return buf;
+    }
+    return NULL;
+}
+
+static ic_status read_parametric(ic_problem *p, ic_surface **s, const cJSON *js,
+                                 const char *path, ic_error *err)
+{
+    static const char *const keys[] = {"name", "type", "params", "xyz", "domain", "periodic",
+                                       NULL};
+    char sub[IC_ERROR_PATH_LEN];
+    ic_status st = ic_json_check_keys(js, path, keys, err);
+    if (st != IC_OK)
+        return st;
+    const char *params[2] = {"u", "v"};
+    const cJSON *jp = cJSON_GetObjectItemCaseSensitive(js, "params");
+    if (jp) {
+        snprintf(sub, sizeof sub, "%s.params", path);
+        if (!cJSON_IsArray(jp) || cJSON_GetArraySize(jp) != 2 ||
+            !cJSON_IsString(cJSON_GetArrayItem(jp, 0)) ||
+            !cJSON_IsString(cJSON_GetArrayItem(jp, 1)))
+            return invalid(err, sub, "expected two parameter names, e.g. [\"u\", \"v\"]");
+        params[0] = cJSON_GetArrayItem(jp, 0)->valuestring;
+        params[1] = cJSON_GetArrayItem(jp, 1)->valuestring;
+    }
+    const cJSON *jx = need(js, "xyz", path, err);
+    if (!jx)
+        return IC_ERR_INVALID;
+    snprintf(sub, sizeof sub, "%s.xyz", path);
+    if (!cJSON_IsArray(jx) || cJSON_GetArraySize(jx) != 3)
+        return invalid(err, sub, "expected three formulas [x, y, z]");
+    const char *xyz[3];
+    char numbuf[3][40];
+    for (int i = 0; i < 3; i++) {
+        xyz[i] = formula_text(cJSON_GetArrayItem(jx, i), numbuf[i], sizeof numbuf[i]);
+        if (!xyz[i]) {
+            snprintf(sub, sizeof sub, "%s.xyz[%d]", path, i);
+            return invalid(err, sub, "expected a formula string");
+        }
+    }
+    int which = -1;
+    st = ic_surface_new_parametric(s, xyz, params, p->consts, p->nconsts, &which, err);
+    if (st != IC_OK) {
+        if (which >= 0) {
+            snprintf(sub, sizeof sub, "%s.xyz[%d]", path, which);
+            return ic_json_formula_error(err, sub, xyz[which]);
+        }
+        snprintf(sub, sizeof sub, "%s.params", path);
+        ic_error_set_path(err, "%s", sub);
+        return st;
+    }
+    double domain[2][2];
+    int periodic[2] = {0, 0};
+    const cJSON *jd = cJSON_GetObjectItemCaseSensitive(js, "domain");
+    if (!jd)
+        return IC_OK; /* unbounded; tracing asks for a domain */
+    snprintf(sub, sizeof sub, "%s.domain", path);
+    if (!cJSON_IsArray(jd) || cJSON_GetArraySize(jd) != 2)
+        return invalid(err, sub, "expected [[u0, u1], [v0, v1]]");
+    for (int i = 0; i < 2; i++) {
+        snprintf(sub, sizeof sub, "%s.domain[%d]", path, i);
+        st = ic_json_numbers(domain[i], 2, cJSON_GetArrayItem(jd, i), sub, p->consts,
+                             p->nconsts, err);
+        if (st != IC_OK)
+            return st;
+    }
+    const cJSON *jper = cJSON_GetObjectItemCaseSensitive(js, "periodic");
+    if (jper) {
+        snprintf(sub, sizeof sub, "%s.periodic", path);
+        if (!cJSON_IsArray(jper) || cJSON_GetArraySize(jper) != 2 ||
+            !cJSON_IsBool(cJSON_GetArrayItem(jper, 0)) ||
+            !cJSON_IsBool(cJSON_GetArrayItem(jper, 1)))
+            return invalid(err, sub, "expected two booleans, e.g. [false, true]");
+        periodic[0] = cJSON_IsTrue(cJSON_GetArrayItem(jper, 0));
+        periodic[1] = cJSON_IsTrue(cJSON_GetArrayItem(jper, 1));
+    }
+    st = ic_surface_set_domain(*s, (const double(*)[2])domain, periodic, err);
+    if (st != IC_OK) {
+        snprintf(sub, sizeof sub, "%s.domain", path);
+        ic_error_set_path(err, "%s", sub);
+    }
+    return st;
+}
+
+static ic_status read_implicit(ic_problem *p, ic_surface **s, const cJSON *js, const char *path,
+                               ic_error *err)
+{
+    static const char *const keys[] = {"name", "type", "f", NULL};
+    char sub[IC_ERROR_PATH_LEN], numbuf[40];
+    ic_status st = ic_json_check_keys(js, path, keys, err);
+    if (st != IC_OK)
+        return st;
+    const cJSON *jf = need(js, "f", path, err);
+    if (!jf)
+        return IC_ERR_INVALID;
+    snprintf(sub, sizeof sub, "%s.f", path);
+    const char *f = formula_text(jf, numbuf, sizeof numbuf);
+    if (!f)
+        return invalid(err, sub, "expected a formula string in x, y, z");
+    st = ic_surface_new_implicit(s, f, p->consts, p->nconsts, err);
+    if (st != IC_OK)
+        return ic_json_formula_error(err, sub, f);
+    return IC_OK;
+}
+
+/* Optional number field of a primitive. */
+static ic_status prim_number(ic_problem *p, double *out, const cJSON *js, const char *key,
+                             const char *path, int required, ic_error *err)
+{
+    char sub[IC_ERROR_PATH_LEN];
+    const cJSON *it = cJSON_GetObjectItemCaseSensitive(js, key);
+    if (!it) {
+        if (!required)
+            return IC_OK;
+        ic_error_set_path(err, "%s", path);
+        return ic_error_set(err, IC_ERR_INVALID, 0, "missing key \"%s\"", key);
+    }
+    snprintf(sub, sizeof sub, "%s.%s", path, key);
+    return ic_json_number(out, it, sub, p->consts, p->nconsts, err);
+}
+
+static ic_status prim_vector(ic_problem *p, double *out, const cJSON *js, const char *key,
+                             const char *path, int required, ic_error *err)
+{
+    char sub[IC_ERROR_PATH_LEN];
+    const cJSON *it = cJSON_GetObjectItemCaseSensitive(js, key);
+    if (!it) {
+        if (!required)
+            return IC_OK;
+        ic_error_set_path(err, "%s", path);
+        return ic_error_set(err, IC_ERR_INVALID, 0, "missing key \"%s\"", key);
+    }
+    snprintf(sub, sizeof sub, "%s.%s", path, key);
+    return ic_json_numbers(out, 3, it, sub, p->consts, p->nconsts, err);
+}
+
+static ic_status read_primitive(ic_problem *p, ic_surface **s, const cJSON *js,
+                                ic_primitive_kind kind, const char *path, ic_error *err)
+{
+    static const char *const keys[] = {"name",   "type",         "form",         "center",
+                                       "normal", "radius",       "major_radius", "minor_radius",
+                                       "half_angle", "axes", "domain", "periodic", NULL};
+    ic_status st = ic_json_check_keys(js, path, keys, err);
+    if (st != IC_OK)
+        return st;
+    ic_primitive prim;
+    memset(&prim, 0, sizeof prim);
+    prim.kind = kind;
+    ic_surface_kind form = IC_IMPLICIT;
+    char sub[IC_ERROR_PATH_LEN];
+    const cJSON *jform = cJSON_GetObjectItemCaseSensitive(js, "form");
+    if (jform) {
+        snprintf(sub, sizeof sub, "%s.form", path);
+        if (cJSON_IsString(jform) && strcmp(jform->valuestring, "parametric") == 0)
+            form = IC_PARAMETRIC;
+        else if (!(cJSON_IsString(jform) && strcmp(jform->valuestring, "implicit") == 0))
+            return invalid(err, sub, "expected \"implicit\" or \"parametric\"");
+    }
+    if ((st = prim_vector(p, prim.center, js, "center", path, 0, err)) != IC_OK)
+        return st;
+    switch (kind) {
+    case IC_PRIM_PLANE:
+        st = prim_vector(p, prim.normal, js, "normal", path, 1, err);
+        break;
+    case IC_PRIM_SPHERE:
+    case IC_PRIM_CYLINDER:
+        st = prim_number(p, &prim.radius, js, "radius", path, 1, err);
+        break;
+    case IC_PRIM_CONE:
+        st = prim_number(p, &prim.half_angle, js, "half_angle", path, 1, err);
+        break;
+    case IC_PRIM_TORUS:
+        st = prim_number(p, &prim.major_radius, js, "major_radius", path, 1, err);
+        if (st == IC_OK)
+            st = prim_number(p, &prim.radius, js, "minor_radius", path, 1, err);
+        break;
+    case IC_PRIM_ELLIPSOID:
+        st = prim_vector(p, prim.axes, js, "axes", path, 1, err);
+        break;
+    }
+    if (st != IC_OK)
+        return st;
+    st = ic_surface_new_primitive(s, &prim, form, err);
+    if (st != IC_OK) {
+        ic_error_set_path(err, "%s", path);
+        return st;
+    }
+    if (cJSON_GetObjectItemCaseSensitive(js, "domain") ||
+        cJSON_GetObjectItemCaseSensitive(js, "periodic")) {
+        if (form != IC_PARAMETRIC)
+            return invalid(err, path, "\"domain\" and \"periodic\" need \"form\": \"parametric\"");
+        double domain[2][2];
+        int periodic[2];
+        ic_surface_get_domain(*s, domain, periodic);
+        const cJSON *jd = cJSON_GetObjectItemCaseSensitive(js, "domain");
+        for (int i = 0; jd && i < 2; i++) {
+            snprintf(sub, sizeof sub, "%s.domain[%d]", path, i);
+            if (!cJSON_IsArray(jd) || cJSON_GetArraySize(jd) != 2)
+                return invalid(err, sub, "expected [[u0, u1], [v0, v1]]");
+            st = ic_json_numbers(domain[i], 2, cJSON_GetArrayItem(jd, i), sub, p->consts,
+                                 p->nconsts, err);
+            if (st != IC_OK)
+                return st;
+        }
+        const cJSON *jper = cJSON_GetObjectItemCaseSensitive(js, "periodic");
+        for (int i = 0; jper && i < 2; i++) {
+            if (!cJSON_IsArray(jper) || cJSON_GetArraySize(jper) != 2 ||
+                !cJSON_IsBool(cJSON_GetArrayItem(jper, i))) {
+                snprintf(sub, sizeof sub, "%s.periodic", path);
+                return invalid(err, sub, "expected two booleans");
+            }
+            periodic[i] = cJSON_IsTrue(cJSON_GetArrayItem(jper, i));
+        }
+        st = ic_surface_set_domain(*s, (const double(*)[2])domain, periodic, err);
+        if (st != IC_OK)
+            ic_error_set_path(err, "%s.domain", path);
+    }
+    return st;
+}
+
+static ic_status read_surface(ic_problem *p, int i, const cJSON *js, ic_error *err)
+{
+    char path[IC_ERROR_PATH_LEN];
+    snprintf(path, sizeof path, "surfaces[%d]", i);
+    if (!cJSON_IsObject(js))
+        return invalid(err, path, "expected an object");
+    const cJSON *jn = cJSON_GetObjectItemCaseSensitive(js, "name");
+    if (jn) {
+        if (!cJSON_IsString(jn) || jn->valuestring[0] == '\0' ||
+            strlen(jn->valuestring) >= NAME_LEN) {
+            snprintf(path, sizeof path, "surfaces[%d].name", i);
+            return invalid(err, path, "expected a non-empty name of at most 63 characters");
+        }
+        strcpy(p->names[i], jn->valuestring);
+    } else {
+        strcpy(p->names[i], i == 0 ? "A" : "B");
+    }
+    for (int j = 0; j < i; j++)
+        if (strcmp(p->names[j], p->names[i]) == 0) {
+            snprintf(path, sizeof path, "surfaces[%d].name", i);
+            return invalid(err, path, "two surfaces have the same name");
+        }
+    const cJSON *jt = need(js, "type", path, err);
+    if (!jt)
+        return IC_ERR_INVALID;
+    const char *type = cJSON_IsString(jt) ? jt->valuestring : "";
+    if (strcmp(type, "parametric") == 0)
+        return read_parametric(p, &p->surfaces[i], js, path, err);
+    if (strcmp(type, "implicit") == 0)
+        return read_implicit(p, &p->surfaces[i], js, path, err);
+    for (size_t k = 0; k < sizeof PRIMITIVES / sizeof PRIMITIVES[0]; k++)
+        if (strcmp(type, PRIMITIVES[k].name) == 0)
+            return read_primitive(p, &p->surfaces[i], js, PRIMITIVES[k].kind, path, err);
+    snprintf(path, sizeof path, "surfaces[%d].type", i);
+    return invalid(err, path,
+                   "expected \"parametric\", \"implicit\", \"plane\", \"sphere\", "
+                   "\"cylinder\", \"cone\", \"torus\" or \"ellipsoid\"");
+}
+
+static ic_status read_problem(ic_problem *p, const cJSON *root, ic_error *err)
+{
+    static const char *const keys[] = {"title", "constants", "surfaces", "self", "box", NULL};
+    if (!cJSON_IsObject(root))
+        return invalid(err, "(root)", "expected a JSON object");
+    ic_status st = ic_json_check_keys(root, "(root)", keys, err);
+    if (st != IC_OK)
+        return st;
+    const cJSON *jt = cJSON_GetObjectItemCaseSensitive(root, "title");
+    if (jt) {
+        if (!cJSON_IsString(jt))
+            return invalid(err, "title", "expected a string");
+        snprintf(p->title, sizeof p->title, "%s", jt->valuestring);
+    }
+    if ((st = read_constants(p, cJSON_GetObjectItemCaseSensitive(root, "constants"), err)))
+        return st;
+    const cJSON *jself = cJSON_GetObjectItemCaseSensitive(root, "self");
+    if (jself && !cJSON_IsBool(jself))
+        return invalid(err, "self", "expected true or false");
+    p->self = jself && cJSON_IsTrue(jself);
+    const cJSON *js = need(root, "surfaces", "(root)", err);
+    if (!js)
+        return IC_ERR_INVALID;
+    const int want = p->self ? 1 : 2;
+    if (!cJSON_IsArray(js) || cJSON_GetArraySize(js) != want)
+        return invalid(err, "surfaces",
+                       p->self ? "a self-intersection problem (\"self\": true) has exactly one "
+                                 "surface"
+                               : "expected an array of exactly two surfaces (or one with "
+                                 "\"self\": true)");
+    for (int i = 0; i < want; i++) {
+        if ((st = read_surface(p, i, cJSON_GetArrayItem(js, i), err)) != IC_OK)
+            return st;
+        p->nsurfaces++;
+    }
+    if (p->self && ic_surface_get_kind(p->surfaces[0]) != IC_PARAMETRIC)
+        return invalid(err, "surfaces[0]", "a self-intersection needs a parametric surface");
+    const cJSON *jb = cJSON_GetObjectItemCaseSensitive(root, "box");
+    if (jb) {
+        if (!cJSON_IsArray(jb) || cJSON_GetArraySize(jb) != 3)
+            return invalid(err, "box", "expected [[x0, x1], [y0, y1], [z0, z1]]");
+        for (int i = 0; i < 3; i++) {
+            char path[IC_ERROR_PATH_LEN];
+            snprintf(path, sizeof path, "box[%d]", i);
+            st = ic_json_numbers(p->box[i], 2, cJSON_GetArrayItem(jb, i), path, p->consts,
+                                 p->nconsts, err);
+            if (st != IC_OK)
+                return st;
+            if (!(p->box[i][0] < p->box[i][1]))
+                return invalid(err, path, "empty interval: the lower bound must be smaller");
+        }
+        p->has_box = 1;
+    }
+    return IC_OK;
+}
+
+ic_status ic_problem_parse(ic_problem **out, const char *json, size_t len, ic_error *err)
+{
+    *out = NULL;
+    ic_error_clear(err);
+    cJSON *root = cJSON_ParseWithLength(json, len);
+    if (!root) {
+        const char *where = cJSON_GetErrorPtr();
+        int line = 1, col = 1;
+        if (where && where >= json && where <= json + len)
+            ic_json_line_col(json, (size_t)(where - json), &line, &col);
+        ic_error_set_path(err, "(line %d, column %d)", line, col);
+        return ic_error_set(err, IC_ERR_PARSE, 0, "invalid JSON near line %d, column %d", line,
+                            col);
+    }
+    ic_problem *p = calloc(1, sizeof *p);
+    if (!p) {
+        cJSON_Delete(root);
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory reading a problem");
+    }
+    ic_status st = read_problem(p, root, err);
+    cJSON_Delete(root);
+    if (st != IC_OK) {
+        ic_problem_free(p);
+        return st;
+    }
+    *out = p;
+    return IC_OK;
+}
+
+ic_status ic_problem_load(ic_problem **out, const char *filename, ic_error *err)
+{
+    *out = NULL;
+    ic_error_clear(err);
+    FILE *f = fopen(filename, "rb");
+    if (!f)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "cannot open %s: %s", filename,
+                            strerror(errno));
+    char *buf = malloc(IC_PROBLEM_MAX_FILE + 1);
+    if (!buf) {
+        fclose(f);
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory reading %s", filename);
+    }
+    size_t len = fread(buf, 1, IC_PROBLEM_MAX_FILE + 1, f);
+    const int failed = ferror(f);
+    fclose(f);
+    ic_status st;
+    if (failed)
+        st = ic_error_set(err, IC_ERR_INVALID, 0, "cannot read %s", filename);
+    else if (len > IC_PROBLEM_MAX_FILE)
+        st = ic_error_set(err, IC_ERR_INVALID, 0, "%s is larger than %d bytes", filename,
+                          IC_PROBLEM_MAX_FILE);
+    else
+        st = ic_problem_parse(out, buf, len, err);
+    free(buf);
+    return st;
+}
+
+void ic_problem_free(ic_problem *p)
+{
+    if (!p)
+        return;
+    for (int i = 0; i < MAX_SURFACES; i++)
+        ic_surface_free(p->surfaces[i]);
+    free(p);
+}
+
+const char *ic_problem_title(const ic_problem *p) { return p->title; }
+int ic_problem_num_surfaces(const ic_problem *p) { return p->nsurfaces; }
+ic_surface *ic_problem_surface(const ic_problem *p, int i)
+{
+    return i >= 0 && i < p->nsurfaces ? p->surfaces[i] : NULL;
+}
+const char *ic_problem_surface_name(const ic_problem *p, int i)
+{
+    return i >= 0 && i < p->nsurfaces ? p->names[i] : NULL;
+}
+int ic_problem_find_surface(const ic_problem *p, const char *name)
+{
+    for (int i = 0; i < p->nsurfaces; i++)
+        if (strcmp(p->names[i], name) == 0)
+            return i;
+    return -1;
+}
+int ic_problem_is_self(const ic_problem *p) { return p->self; }
+int ic_problem_box(const ic_problem *p, double box[3][2])
+{
+    if (p->has_box && box)
+        memcpy(box, p->box, sizeof p->box);
+    return p->has_box;
+}

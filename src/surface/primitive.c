@@ -1,0 +1,292 @@
+/*
+ * Primitive surfaces (surface.h lists both forms of each).
+ *
+ * Parametric primitives are sums of products f(u) g(v) of cos, sin and
+ * linear functions, so their Taylor coefficients are products of the
+ * one-variable ones: d^i/du^i cos u = cos(u + i pi/2). Implicit quadrics
+ * sum_i A_i d_i^2 + B_i d_i + C (d = x - center) have a constant Hessian;
+ * the torus is expanded with jet arithmetic (a quartic, exact).
+ */
+#include "surface_internal.h"
+#include "common/mathconst.h"
+
+#include <math.h>
+#include <string.h>
+
+#define MAXK (IC_JET_MAX_ORDER + 1)
+
+static int positive(double x) { return isfinite(x) && x > 0.0; }
+
+ic_status ic_primitive_check(ic_surface *s, ic_error *err)
+{
+    const ic_primitive *p = &s->prim;
+    for (int i = 0; i < 3; i++)
+        if (!isfinite(p->center[i]))
+            return ic_error_set(err, IC_ERR_INVALID, 0, "primitive: center is not finite");
+    switch (p->kind) {
+    case IC_PRIM_PLANE: {
+        const double len = sqrt(p->normal[0] * p->normal[0] + p->normal[1] * p->normal[1] +
+                                p->normal[2] * p->normal[2]);
+        if (!positive(len))
+            return ic_error_set(err, IC_ERR_INVALID, 0, "plane: the normal is zero");
+        double *e1 = s->plane_frame[0], *e2 = s->plane_frame[1], *e3 = s->plane_frame[2];
+        for (int i = 0; i < 3; i++)
+            e3[i] = p->normal[i] / len;
+        /* e1: the coordinate axis least aligned with e3, made orthogonal */
+        int k = 0;
+        for (int i = 1; i < 3; i++)
+            if (fabs(e3[i]) < fabs(e3[k]))
+                k = i;
+        double a[3] = {0, 0, 0};
+        a[k] = 1.0;
+        double dot = e3[k], norm = 0.0;
+        for (int i = 0; i < 3; i++) {
+            e1[i] = a[i] - dot * e3[i];
+            norm += e1[i] * e1[i];
+        }
+        norm = sqrt(norm);
+        for (int i = 0; i < 3; i++)
+            e1[i] /= norm;
+        e2[0] = e3[1] * e1[2] - e3[2] * e1[1];
+        e2[1] = e3[2] * e1[0] - e3[0] * e1[2];
+        e2[2] = e3[0] * e1[1] - e3[1] * e1[0];
+        return IC_OK;
+    }
+    case IC_PRIM_SPHERE:
+    case IC_PRIM_CYLINDER:
+        if (!positive(p->radius))
+            return ic_error_set(err, IC_ERR_INVALID, 0, "radius must be positive, got %g",
+                                p->radius);
+        return IC_OK;
+    case IC_PRIM_CONE:
+        if (!(p->half_angle > 0.0 && p->half_angle < 0.5 * IC_PI))
+            return ic_error_set(err, IC_ERR_INVALID, 0,
+                                "cone: half_angle must be in (0, pi/2) radians, got %g",
+                                p->half_angle);
+        return IC_OK;
+    case IC_PRIM_TORUS:
+        if (!positive(p->radius) || !positive(p->major_radius))
+            return ic_error_set(err, IC_ERR_INVALID, 0,
+                                "torus: radii must be positive, got R = %g, r = %g",
+                                p->major_radius, p->radius);
+        return IC_OK;
+    case IC_PRIM_ELLIPSOID:
+        for (int i = 0; i < 3; i++)
+            if (!positive(p->axes[i]))
+                return ic_error_set(err, IC_ERR_INVALID, 0,
+                                    "ellipsoid: semi-axes must be positive, got %g", p->axes[i]);
+        return IC_OK;
+    }
+    return ic_error_set(err, IC_ERR_INVALID, 0, "unknown primitive kind %d", (int)p->kind);
+}
+
+void ic_primitive_default_domain(ic_surface *s)
+{
+    const ic_primitive *p = &s->prim;
+    const double two_pi = 2.0 * IC_PI;
+    double d[2][2] = {{-INFINITY, INFINITY}, {-INFINITY, INFINITY}};
+    int per[2] = {0, 0};
+    switch (p->kind) {
+    case IC_PRIM_PLANE:
+        break;
+    case IC_PRIM_SPHERE:
+    case IC_PRIM_ELLIPSOID:
+        d[0][0] = 0.0, d[0][1] = two_pi, per[0] = 1;
+        d[1][0] = -0.5 * IC_PI, d[1][1] = 0.5 * IC_PI;
+        break;
+    case IC_PRIM_CYLINDER:
+    case IC_PRIM_CONE:
+        d[0][0] = 0.0, d[0][1] = two_pi, per[0] = 1;
+        break;
+    case IC_PRIM_TORUS:
+        d[0][0] = 0.0, d[0][1] = two_pi, per[0] = 1;
+        d[1][0] = 0.0, d[1][1] = two_pi, per[1] = 1;
+        break;
+    }
+    for (int i = 0; i < 2; i++) {
+        s->domain[i][0] = d[i][0];
+        s->domain[i][1] = d[i][1];
+        s->periodic[i] = per[i];
+    }
+}
+
+/* One-variable Taylor coefficients at t up to order K. */
+static void taylor_cos_sin(double *c, double *s, double t, int K)
+{
+    const double ct = cos(t), st = sin(t);
+    const double cyc_c[4] = {ct, -st, -ct, st}, cyc_s[4] = {st, ct, -st, -ct};
+    double inv_fact = 1.0;
+    for (int i = 0; i <= K; i++) {
+        if (i > 0)
+            inv_fact /= i;
+        c[i] = cyc_c[i % 4] * inv_fact;
+        s[i] = cyc_s[i % 4] * inv_fact;
+    }
+}
+
+static void taylor_linear(double *l, double t, int K)
+{
+    for (int i = 0; i <= K; i++)
+        l[i] = i == 0 ? t : i == 1 ? 1.0 : 0.0;
+}
+
+static void taylor_one(double *one, int K)
+{
+    for (int i = 0; i <= K; i++)
+        one[i] = i == 0 ? 1.0 : 0.0;
+}
+
+/* out += scale * f(u) g(v) as a two-variable jet. */
+static void add_tensor(double *out, const ic_jet_space *sp, double scale, const double *f,
+                       const double *g)
+{
+    const int K = ic_jet_space_order(sp);
+    for (int i = 0; i <= K; i++) {
+        if (f[i] == 0.0)
+            continue;
+        for (int j = 0; i + j <= K; j++)
+            out[ic_jet_degree_start(sp, i + j) + j] += scale * f[i] * g[j];
+    }
+}
+
+static void parametric_taylor(const ic_surface *s, double *out, const double *at,
+                              const ic_jet_space *sp)
+{
+    const ic_primitive *p = &s->prim;
+    const int K = ic_jet_space_order(sp), n = ic_jet_space_len(sp);
+    double cu[MAXK], su[MAXK], cv[MAXK], sv[MAXK], lu[MAXK], lv[MAXK], one[MAXK];
+    taylor_cos_sin(cu, su, at[0], K);
+    taylor_cos_sin(cv, sv, at[1], K);
+    taylor_linear(lu, at[0], K);
+    taylor_linear(lv, at[1], K);
+    taylor_one(one, K);
+    double *x = out, *y = out + n, *z = out + 2 * n;
+    memset(out, 0, 3 * (size_t)n * sizeof *out);
+    switch (p->kind) {
+    case IC_PRIM_PLANE:
+        for (int k = 0; k < 3; k++) {
+            add_tensor(out + k * n, sp, s->plane_frame[0][k], lu, one);
+            add_tensor(out + k * n, sp, s->plane_frame[1][k], one, lv);
+        }
+        break;
+    case IC_PRIM_SPHERE:
+    case IC_PRIM_ELLIPSOID: {
+        const double a = p->kind == IC_PRIM_SPHERE ? p->radius : p->axes[0];
+        const double b = p->kind == IC_PRIM_SPHERE ? p->radius : p->axes[1];
+        const double c = p->kind == IC_PRIM_SPHERE ? p->radius : p->axes[2];
+        add_tensor(x, sp, a, cu, cv);
+        add_tensor(y, sp, b, su, cv);
+        add_tensor(z, sp, c, one, sv);
+        break;
+    }
+    case IC_PRIM_CYLINDER:
+        add_tensor(x, sp, p->radius, cu, one);
+        add_tensor(y, sp, p->radius, su, one);
+        add_tensor(z, sp, 1.0, one, lv);
+        break;
+    case IC_PRIM_CONE: {
+        const double t = tan(p->half_angle);
+        add_tensor(x, sp, t, cu, lv);
+        add_tensor(y, sp, t, su, lv);
+        add_tensor(z, sp, 1.0, one, lv);
+        break;
+    }
+    case IC_PRIM_TORUS:
+        add_tensor(x, sp, p->major_radius, cu, one);
+        add_tensor(x, sp, p->radius, cu, cv);
+        add_tensor(y, sp, p->major_radius, su, one);
+        add_tensor(y, sp, p->radius, su, cv);
+        add_tensor(z, sp, p->radius, one, sv);
+        break;
+    }
+    for (int k = 0; k < 3; k++)
+        out[k * n] += p->center[k];
+}
+
+/* sum_i A_i d_i^2 + B_i d_i + C with d = x - center. */
+static void quadric_taylor(const ic_surface *s, double *out, const double *at,
+                           const ic_jet_space *sp, const double A[3], const double B[3],
+                           double C)
+{
+    const int K = ic_jet_space_order(sp);
+    ic_jet_zero(out, sp);
+    double f = C;
+    for (int i = 0; i < 3; i++) {
+        const double d = at[i] - s->prim.center[i];
+        f += (A[i] * d + B[i]) * d;
+        if (K >= 1)
+            out[1 + i] = 2.0 * A[i] * d + B[i];
+        if (K >= 2) {
+            int alpha[3] = {0, 0, 0};
+            alpha[i] = 2;
+            out[ic_jet_index(sp, alpha)] = A[i];
+        }
+    }
+    out[0] = f;
+}
+
+static ic_status torus_taylor(ic_surface *s, double *out, const double *at,
+                              const ic_jet_space *sp, ic_error *err)
+{
+    const int n = ic_jet_space_len(sp);
+    double *w = ic_surface_work(s, IC_WORK_EVAL, 7 * (size_t)n);
+    if (!w)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory evaluating a torus");
+    double *d[3] = {w, w + n, w + 2 * n}, *sq = w + 3 * n, *sum = w + 4 * n;
+    double *rho = w + 5 * n, *tmp = w + 6 * n;
+    const double R = s->prim.major_radius, r = s->prim.radius;
+    for (int i = 0; i < 3; i++)
+        ic_jet_set_var(d[i], at[i] - s->prim.center[i], i, sp);
+    ic_jet_zero(rho, sp); /* (x-cx)^2 + (y-cy)^2 */
+    for (int i = 0; i < 2; i++) {
+        ic_jet_mul(sq, d[i], d[i], sp);
+        ic_jet_add(rho, rho, sq, sp);
+    }
+    ic_jet_mul(sq, d[2], d[2], sp);
+    ic_jet_add(sum, rho, sq, sp);
+    sum[0] += R * R - r * r;
+    ic_jet_mul(tmp, sum, sum, sp);
+    ic_jet_scale(rho, rho, -4.0 * R * R, sp);
+    ic_jet_add(out, tmp, rho, sp);
+    return IC_OK;
+}
+
+ic_status ic_primitive_taylor(ic_surface *s, double *out, const double *at,
+                              const ic_jet_space *sp, ic_error *err)
+{
+    const ic_primitive *p = &s->prim;
+    if (s->kind == IC_PARAMETRIC) {
+        parametric_taylor(s, out, at, sp);
+        return IC_OK;
+    }
+    double A[3] = {0, 0, 0}, B[3] = {0, 0, 0}, C = 0.0;
+    switch (p->kind) {
+    case IC_PRIM_PLANE:
+        for (int i = 0; i < 3; i++)
+            B[i] = p->normal[i];
+        break;
+    case IC_PRIM_SPHERE:
+        A[0] = A[1] = A[2] = 1.0;
+        C = -p->radius * p->radius;
+        break;
+    case IC_PRIM_CYLINDER:
+        A[0] = A[1] = 1.0;
+        C = -p->radius * p->radius;
+        break;
+    case IC_PRIM_CONE: {
+        const double t = tan(p->half_angle);
+        A[0] = A[1] = 1.0;
+        A[2] = -t * t;
+        break;
+    }
+    case IC_PRIM_ELLIPSOID:
+        for (int i = 0; i < 3; i++)
+            A[i] = 1.0 / (p->axes[i] * p->axes[i]);
+        C = -1.0;
+        break;
+    case IC_PRIM_TORUS:
+        return torus_taylor(s, out, at, sp, err);
+    }
+    quadric_taylor(s, out, at, sp, A, B, C);
+    return IC_OK;
+}

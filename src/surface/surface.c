@@ -1,0 +1,261 @@
+/* Surfaces: construction, backends, Taylor coefficients, composition. */
+#include "surface_internal.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static ic_surface *surface_alloc(ic_surface_kind kind, ic_backend backend)
+{
+    ic_surface *s = calloc(1, sizeof *s);
+    if (!s)
+        return NULL;
+    s->kind = kind;
+    s->backend = backend;
+    /* an unbounded domain until one is set */
+    for (int i = 0; i < 2; i++) {
+        s->domain[i][0] = -INFINITY;
+        s->domain[i][1] = INFINITY;
+    }
+    return s;
+}
+
+ic_status ic_surface_new_parametric(ic_surface **out, const char *const xyz[3],
+                                    const char *const params[2], const ic_constant *consts,
+                                    int nconsts, int *which, ic_error *err)
+{
+    static const char *const default_params[2] = {"u", "v"};
+    *out = NULL;
+    ic_surface *s = surface_alloc(IC_PARAMETRIC, BACKEND_FORMULA);
+    if (!s)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory creating a surface");
+    ic_status st = ic_expr_compile(&s->expr, (const char *const *)xyz, 3,
+                                   params ? params : default_params, 2, consts, nconsts, which,
+                                   err);
+    if (st != IC_OK) {
+        ic_surface_free(s);
+        return st;
+    }
+    *out = s;
+    return IC_OK;
+}
+
+ic_status ic_surface_new_implicit(ic_surface **out, const char *f, const ic_constant *consts,
+                                  int nconsts, ic_error *err)
+{
+    static const char *const xyz[3] = {"x", "y", "z"};
+    *out = NULL;
+    ic_surface *s = surface_alloc(IC_IMPLICIT, BACKEND_FORMULA);
+    if (!s)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory creating a surface");
+    ic_status st = ic_expr_compile(&s->expr, &f, 1, xyz, 3, consts, nconsts, NULL, err);
+    if (st != IC_OK) {
+        ic_surface_free(s);
+        return st;
+    }
+    *out = s;
+    return IC_OK;
+}
+
+ic_status ic_surface_new_callback(ic_surface **out, ic_surface_kind kind, ic_surface_callback fn,
+                                  void *user, ic_error *err)
+{
+    *out = NULL;
+    if (!fn || (kind != IC_PARAMETRIC && kind != IC_IMPLICIT))
+        return ic_error_set(err, IC_ERR_INVALID, 0, "callback surface: no function or bad kind");
+    ic_surface *s = surface_alloc(kind, BACKEND_CALLBACK);
+    if (!s)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory creating a surface");
+    s->fn = fn;
+    s->user = user;
+    *out = s;
+    return IC_OK;
+}
+
+ic_status ic_surface_new_primitive(ic_surface **out, const ic_primitive *prim,
+                                   ic_surface_kind form, ic_error *err)
+{
+    *out = NULL;
+    if (!prim || (form != IC_PARAMETRIC && form != IC_IMPLICIT))
+        return ic_error_set(err, IC_ERR_INVALID, 0, "primitive surface: bad arguments");
+    ic_surface *s = surface_alloc(form, BACKEND_PRIMITIVE);
+    if (!s)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory creating a surface");
+    s->prim = *prim;
+    ic_status st = ic_primitive_check(s, err);
+    if (st != IC_OK) {
+        ic_surface_free(s);
+        return st;
+    }
+    if (form == IC_PARAMETRIC)
+        ic_primitive_default_domain(s);
+    *out = s;
+    return IC_OK;
+}
+
+void ic_surface_free(ic_surface *s)
+{
+    if (!s)
+        return;
+    ic_expr_free(s->expr);
+    for (int k = 0; k <= IC_JET_MAX_ORDER; k++)
+        ic_jet_space_free(s->spaces[k]);
+    free(s->work[0]);
+    free(s->work[1]);
+    free(s);
+}
+
+ic_surface_kind ic_surface_get_kind(const ic_surface *s) { return s->kind; }
+int ic_surface_num_inputs(const ic_surface *s) { return s->kind == IC_PARAMETRIC ? 2 : 3; }
+int ic_surface_num_outputs(const ic_surface *s) { return s->kind == IC_PARAMETRIC ? 3 : 1; }
+
+ic_status ic_surface_set_domain(ic_surface *s, const double domain[2][2], const int periodic[2],
+                                ic_error *err)
+{
+    if (s->kind != IC_PARAMETRIC)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "an implicit surface has no parameter domain");
+    for (int i = 0; i < 2; i++) {
+        if (!(domain[i][0] < domain[i][1]))
+            return ic_error_set(err, IC_ERR_INVALID, 0,
+                                "domain of parameter %d is empty: [%g, %g]", i + 1,
+                                domain[i][0], domain[i][1]);
+        if (periodic && periodic[i] && !(isfinite(domain[i][0]) && isfinite(domain[i][1])))
+            return ic_error_set(err, IC_ERR_INVALID, 0,
+                                "periodic parameter %d needs a finite domain", i + 1);
+    }
+    memcpy(s->domain, domain, sizeof s->domain);
+    for (int i = 0; i < 2; i++)
+        s->periodic[i] = periodic ? periodic[i] != 0 : 0;
+    return IC_OK;
+}
+
+void ic_surface_get_domain(const ic_surface *s, double domain[2][2], int periodic[2])
+{
+    if (domain)
+        memcpy(domain, s->domain, sizeof s->domain);
+    if (periodic) {
+        periodic[0] = s->periodic[0];
+        periodic[1] = s->periodic[1];
+    }
+}
+
+double *ic_surface_work(ic_surface *s, int slot, size_t len)
+{
+    if (len <= s->work_len[slot])
+        return s->work[slot];
+    double *w = realloc(s->work[slot], len * sizeof *w);
+    if (!w)
+        return NULL;
+    s->work[slot] = w;
+    s->work_len[slot] = len;
+    return w;
+}
+
+const ic_jet_space *ic_surface_space(ic_surface *s, int order, ic_error *err)
+{
+    if (order < 0 || order > IC_JET_MAX_ORDER) {
+        ic_error_set(err, IC_ERR_INVALID, 0, "order %d outside 0..%d", order, IC_JET_MAX_ORDER);
+        return NULL;
+    }
+    if (!s->spaces[order] &&
+        ic_jet_space_new(&s->spaces[order], ic_surface_num_inputs(s), order, err) != IC_OK)
+        return NULL;
+    return s->spaces[order];
+}
+
+/* Callback: partial derivatives in, Taylor coefficients out. */
+static ic_status callback_taylor(ic_surface *s, double *out, const double *at,
+                                 const ic_jet_space *sp, ic_error *err)
+{
+    if (s->fn(s->user, out, at, sp) != 0)
+        return ic_error_set(err, IC_ERR_DOMAIN, 0, "the surface callback failed at this point");
+    const int n = ic_jet_space_len(sp), nout = ic_surface_num_outputs(s);
+    for (int k = 0; k < nout; k++)
+        for (int i = 0; i < n; i++) {
+            out[k * n + i] /= ic_jet_factorial(sp, i);
+            if (!isfinite(out[k * n + i]))
+                return ic_error_set(err, IC_ERR_DOMAIN, 0,
+                                    "the surface callback returned a non-finite derivative");
+        }
+    return IC_OK;
+}
+
+/* Formula: the tape on the coordinate jets of the point. */
+static ic_status formula_taylor(ic_surface *s, double *out, const double *at,
+                                const ic_jet_space *sp, ic_error *err)
+{
+    const int n = ic_jet_space_len(sp), nin = ic_surface_num_inputs(s);
+    double *w = ic_surface_work(s, IC_WORK_EVAL, (size_t)nin * n + ic_expr_jet_work_len(s->expr, sp));
+    if (!w)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory evaluating a surface");
+    const double *in[3];
+    for (int i = 0; i < nin; i++) {
+        ic_jet_set_var(w + i * n, at[i], i, sp);
+        in[i] = w + i * n;
+    }
+    return ic_expr_eval_jet(s->expr, out, in, sp, w + (size_t)nin * n, err);
+}
+
+ic_status ic_surface_taylor(ic_surface *s, double *out, const double *at, const ic_jet_space *sp,
+                            ic_error *err)
+{
+    if (ic_jet_space_nvars(sp) != ic_surface_num_inputs(s))
+        return ic_error_set(err, IC_ERR_INVALID, 0,
+                            "ic_surface_taylor: the space has %d variables, the surface %d",
+                            ic_jet_space_nvars(sp), ic_surface_num_inputs(s));
+    for (int i = 0; i < ic_surface_num_inputs(s); i++)
+        if (!isfinite(at[i]))
+            return ic_error_set(err, IC_ERR_INVALID, 0, "non-finite coordinate %d", i + 1);
+    switch (s->backend) {
+    case BACKEND_FORMULA: return formula_taylor(s, out, at, sp, err);
+    case BACKEND_CALLBACK: return callback_taylor(s, out, at, sp, err);
+    case BACKEND_PRIMITIVE: return ic_primitive_taylor(s, out, at, sp, err);
+    }
+    return ic_error_set(err, IC_ERR_INVALID, 0, "corrupt surface");
+}
+
+ic_status ic_surface_compose(ic_surface *s, double *out, const double *const *in,
+                             const ic_jet_space *sp, ic_error *err)
+{
+    const int n = ic_jet_space_len(sp), nin = ic_surface_num_inputs(s);
+    const int nout = ic_surface_num_outputs(s);
+    if (s->backend == BACKEND_FORMULA) {
+        double *w = ic_surface_work(s, IC_WORK_EVAL, ic_expr_jet_work_len(s->expr, sp));
+        if (!w)
+            return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory evaluating a surface");
+        return ic_expr_eval_jet(s->expr, out, in, sp, w, err);
+    }
+    /* Taylor polynomial at the constant terms, then the chain rule. */
+    const ic_jet_space *tsp = ic_surface_space(s, ic_jet_space_order(sp), err);
+    if (!tsp)
+        return err ? err->code : IC_ERR_NOMEM;
+    const int tn = ic_jet_space_len(tsp);
+    double at[3];
+    for (int i = 0; i < nin; i++)
+        at[i] = in[i][0];
+    double *taylor = ic_surface_work(s, IC_WORK_COMPOSE,
+                                     (size_t)nout * tn + ic_jet_scratch_len(sp));
+    if (!taylor)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory composing a surface");
+    double *scratch = taylor + (size_t)nout * tn;
+    ic_status st = ic_surface_taylor(s, taylor, at, tsp, err);
+    if (st != IC_OK)
+        return st;
+    for (int k = 0; k < nout; k++)
+        ic_jet_compose(out + (size_t)k * n, taylor + (size_t)k * tn, tsp, in, sp, scratch);
+    return st;
+}
+
+ic_status ic_surface_eval(ic_surface *s, double *out, const double *at, ic_error *err)
+{
+    if (s->backend == BACKEND_FORMULA) {
+        double *w = ic_surface_work(s, IC_WORK_EVAL, ic_expr_work_len(s->expr));
+        if (!w)
+            return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory evaluating a surface");
+        return ic_expr_eval(s->expr, out, at, w, err);
+    }
+    const ic_jet_space *sp = ic_surface_space(s, 0, err);
+    if (!sp)
+        return err ? err->code : IC_ERR_NOMEM;
+    return ic_surface_taylor(s, out, at, sp, err);
+}

@@ -1,0 +1,43 @@
+/* Internal layout of a surface, shared by surface.c, primitive.c, geometry.c. */
+#ifndef IC_SURFACE_INTERNAL_H
+#define IC_SURFACE_INTERNAL_H
+
+#include "intercurve/expr.h"
+#include "intercurve/surface.h"
+
+typedef enum { BACKEND_FORMULA, BACKEND_CALLBACK, BACKEND_PRIMITIVE } ic_backend;
+
+struct ic_surface {
+    ic_surface_kind kind;
+    ic_backend backend;
+    ic_expr *expr;                 /* formula */
+    ic_surface_callback fn;        /* callback */
+    void *user;
+    ic_primitive prim;             /* primitive */
+    double plane_frame[3][3];      /* plane: e1, e2, unit normal */
+    double domain[2][2];
+    int periodic[2];
+    /* Spaces of the surface's own inputs (2 or 3 variables), by order,
+     * created on first use, and a growing workspace. */
+    ic_jet_space *spaces[IC_JET_MAX_ORDER + 1];
+    double *work[2];
+    size_t work_len[2];
+};
+
+/* Workspace slots: backends evaluate in slot 0; composition keeps the
+ * Taylor polynomial and its scratch in slot 1. */
+enum { IC_WORK_EVAL = 0, IC_WORK_COMPOSE = 1 };
+
+/* Workspace slot of at least len doubles (grows, keeps nothing). NULL on OOM. */
+double *ic_surface_work(ic_surface *s, int slot, size_t len);
+/* The space of the surface's inputs at this order (cached). */
+const ic_jet_space *ic_surface_space(ic_surface *s, int order, ic_error *err);
+
+/* Primitives (primitive.c) */
+ic_status ic_primitive_check(ic_surface *s, ic_error *err);
+/* Sets the natural domain and periodic flags of a parametric primitive. */
+void ic_primitive_default_domain(ic_surface *s);
+ic_status ic_primitive_taylor(ic_surface *s, double *out, const double *at,
+                              const ic_jet_space *sp, ic_error *err);
+
+#endif

@@ -175,6 +175,43 @@ static ic_status check_names(const char *const *vars, int nvars, const ic_consta
     return IC_OK;
 }
 
+/* Drops instructions no output depends on (the intermediate constants left
+ * by folding) and renumbers the rest; the sharing table is no longer needed. */
+static void remove_dead_code(ic_expr *e)
+{
+    int *live = calloc((size_t)e->len + 1, sizeof *live);
+    if (!live)
+        return; /* keeping dead code is harmless */
+    for (int k = 0; k < e->noutputs; k++)
+        live[e->outputs[k]] = 1;
+    for (int i = e->len - 1; i >= 0; i--)
+        if (live[i]) {
+            if (e->code[i].a >= 0)
+                live[e->code[i].a] = 1;
+            if (e->code[i].b >= 0)
+                live[e->code[i].b] = 1;
+        }
+    int next = 0;
+    for (int i = 0; i < e->len; i++) {
+        if (!live[i])
+            continue;
+        ic_instr x = e->code[i];
+        if (x.a >= 0)
+            x.a = live[x.a] - 1;
+        if (x.b >= 0)
+            x.b = live[x.b] - 1;
+        e->code[next] = x;
+        live[i] = ++next; /* new index + 1 */
+    }
+    for (int k = 0; k < e->noutputs; k++)
+        e->outputs[k] = live[e->outputs[k]] - 1;
+    e->len = next;
+    free(live);
+    free(e->hash);
+    e->hash = NULL;
+    e->hash_cap = 0;
+}
+
 ic_status ic_expr_compile(ic_expr **out, const char *const *formulas, int nformulas,
                           const char *const *vars, int nvars, const ic_constant *consts,
                           int nconsts, int *which, ic_error *err)
@@ -209,6 +246,7 @@ ic_status ic_expr_compile(ic_expr **out, const char *const *formulas, int nformu
         }
         e->outputs[i] = r;
     }
+    remove_dead_code(e);
     *out = e;
     return IC_OK;
 }

@@ -1,0 +1,363 @@
+/* Surfaces: derivatives against sympy truth (tests/truth/surface_truth.txt),
+ * primitives against their formula forms, principal curvatures in closed
+ * form, degenerate points, callbacks and composition. */
+#include <string.h>
+
+#include "harness.h"
+#include "intercurve/surface.h"
+
+#define ORDER 6
+
+/* Derivatives of order d are sums of O(2^d) products of rounded values;
+ * measured against the largest derivative of that order, 32 ulps covers
+ * order 6 (observed worst 8.8, printed). */
+#define TIER_DERIV (32 * DBL_EPSILON)
+
+static double worst_deriv;
+
+static void compare_derivs(const char *name, ic_surface *s, const double *at, int nout,
+                           double want[][3], const ic_jet_space *sp)
+{
+    const int n = ic_jet_space_len(sp);
+    double got[3 * 84];
+    ic_error err;
+    ic_status st = ic_surface_taylor(s, got, at, sp, &err);
+    CHECK(st == IC_OK, "%s: taylor failed: %s", name, err.message);
+    if (st != IC_OK)
+        return;
+    for (int d = 0; d <= ORDER; d++) {
+        double scale = 1.0;
+        for (int i = ic_jet_degree_start(sp, d); i < ic_jet_degree_start(sp, d + 1); i++)
+            for (int k = 0; k < nout; k++)
+                scale = fmax(scale, fabs(want[i][k]));
+        for (int i = ic_jet_degree_start(sp, d); i < ic_jet_degree_start(sp, d + 1); i++)
+            for (int k = 0; k < nout; k++) {
+                const double g = got[k * n + i] * ic_jet_factorial(sp, i);
+                const double e = fabs(g - want[i][k]) / scale;
+                worst_deriv = fmax(worst_deriv, e / DBL_EPSILON);
+                CHECK(e <= TIER_DERIV, "%s: derivative %d component %d: got %.17g want %.17g",
+                      name, i, k, g, want[i][k]);
+            }
+    }
+}
+
+static int test_truth_file(const char *path)
+{
+    FILE *f = fopen(path, "r");
+    if (!f) {
+        fprintf(stderr, "cannot open %s\n", path);
+        return -1;
+    }
+    ic_jet_space *s2 = NULL, *s3 = NULL;
+    if (ic_jet_space_new(&s2, 2, ORDER, NULL) || ic_jet_space_new(&s3, 3, ORDER, NULL))
+        return -1;
+    char line[4096], kind[32], name[64];
+    int cases = 0;
+    if (!fgets(line, sizeof line, f))
+        return -1;
+    while (fgets(line, sizeof line, f) && strncmp(line, "end", 3) != 0) {
+        if (sscanf(line, "%31s %63s", kind, name) != 2)
+            return -1;
+        const int parametric = strcmp(kind, "parametric") == 0;
+        const ic_jet_space *sp = parametric ? s2 : s3;
+        const int n = ic_jet_space_len(sp), nout = parametric ? 3 : 1;
+        char formula[1024];
+        if (!fgets(line, sizeof line, f) || strncmp(line, "formula ", 8) != 0)
+            return -1;
+        snprintf(formula, sizeof formula, "%s", line + 8);
+        formula[strcspn(formula, "\n")] = '\0';
+        double at[3];
+        if (!fgets(line, sizeof line, f) ||
+            sscanf(line, "at %lf %lf %lf", &at[0], &at[1], &at[2]) < (parametric ? 2 : 3))
+            return -1;
+        double want[84][3];
+        for (int i = 0; i < n; i++) {
+            int e[3];
+            if (!fgets(line, sizeof line, f))
+                return -1;
+            if (parametric) {
+                if (sscanf(line, "d %d %d %lf %lf %lf", &e[0], &e[1], &want[i][0], &want[i][1],
+                           &want[i][2]) != 5)
+                    return -1;
+            } else if (sscanf(line, "d %d %d %d %lf", &e[0], &e[1], &e[2], &want[i][0]) != 4) {
+                return -1;
+            }
+            CHECK(ic_jet_index(sp, e) == i, "%s: monomial order of the truth file", name);
+        }
+        ic_surface *s = NULL;
+        ic_error err;
+        ic_status st;
+        if (parametric) {
+            char *parts[3], *save = NULL;
+            parts[0] = strtok_r(formula, ";", &save);
+            parts[1] = strtok_r(NULL, ";", &save);
+            parts[2] = strtok_r(NULL, ";", &save);
+            const char *xyz[3] = {parts[0], parts[1], parts[2]};
+            st = ic_surface_new_parametric(&s, xyz, NULL, NULL, 0, NULL, &err);
+        } else {
+            st = ic_surface_new_implicit(&s, formula, NULL, 0, &err);
+        }
+        CHECK(st == IC_OK, "%s compiles: %s", name, err.message);
+        if (st == IC_OK)
+            compare_derivs(name, s, at, nout, want, sp);
+        ic_surface_free(s);
+        cases++;
+    }
+    fclose(f);
+    ic_jet_space_free(s2);
+    ic_jet_space_free(s3);
+    return cases;
+}
+
+/* Each primitive against the same surface written as formulas. */
+static void test_primitives_match_formulas(harness_rng *rng)
+{
+    ic_primitive prims[6];
+    memset(prims, 0, sizeof prims);
+    const double c[3] = {0.3, -1.2, 0.7};
+    for (int i = 0; i < 6; i++)
+        memcpy(prims[i].center, c, sizeof c);
+    prims[0].kind = IC_PRIM_PLANE;
+    prims[0].normal[0] = 0.0, prims[0].normal[1] = 0.0, prims[0].normal[2] = 2.0;
+    prims[1].kind = IC_PRIM_SPHERE, prims[1].radius = 2.5;
+    prims[2].kind = IC_PRIM_CYLINDER, prims[2].radius = 1.5;
+    prims[3].kind = IC_PRIM_CONE, prims[3].half_angle = 0.4;
+    prims[4].kind = IC_PRIM_TORUS, prims[4].major_radius = 2.0, prims[4].radius = 0.5;
+    prims[5].kind = IC_PRIM_ELLIPSOID;
+    prims[5].axes[0] = 1.5, prims[5].axes[1] = 0.8, prims[5].axes[2] = 1.1;
+    const char *par[6][3] = {
+        {"0.3 + u", "-1.2 + v", "0.7"}, /* plane with normal +z: e1 = x, e2 = y */
+        {"0.3 + 2.5*cos(u)*cos(v)", "-1.2 + 2.5*sin(u)*cos(v)", "0.7 + 2.5*sin(v)"},
+        {"0.3 + 1.5*cos(u)", "-1.2 + 1.5*sin(u)", "0.7 + v"},
+        {"0.3 + v*tan(0.4)*cos(u)", "-1.2 + v*tan(0.4)*sin(u)", "0.7 + v"},
+        {"0.3 + (2 + 0.5*cos(v))*cos(u)", "-1.2 + (2 + 0.5*cos(v))*sin(u)", "0.7 + 0.5*sin(v)"},
+        {"0.3 + 1.5*cos(u)*cos(v)", "-1.2 + 0.8*sin(u)*cos(v)", "0.7 + 1.1*sin(v)"},
+    };
+    const char *imp[6] = {
+        "2*(z - 0.7)",
+        "(x-0.3)^2 + (y+1.2)^2 + (z-0.7)^2 - 6.25",
+        "(x-0.3)^2 + (y+1.2)^2 - 2.25",
+        "(x-0.3)^2 + (y+1.2)^2 - tan(0.4)^2*(z-0.7)^2",
+        "((x-0.3)^2 + (y+1.2)^2 + (z-0.7)^2 + 3.75)^2 - 16*((x-0.3)^2 + (y+1.2)^2)",
+        "(x-0.3)^2/2.25 + (y+1.2)^2/0.64 + (z-0.7)^2/1.21 - 1",
+    };
+    ic_jet_space *s2 = NULL, *s3 = NULL;
+    if (ic_jet_space_new(&s2, 2, ORDER, NULL) || ic_jet_space_new(&s3, 3, ORDER, NULL))
+        return;
+    for (int i = 0; i < 6; i++) {
+        for (int form = 0; form < 2; form++) {
+            ic_surface *p = NULL, *q = NULL;
+            ic_error err;
+            CHECK(ic_surface_new_primitive(&p, &prims[i], form ? IC_IMPLICIT : IC_PARAMETRIC,
+                                           &err) == IC_OK,
+                  "primitive %d: %s", i, err.message);
+            if (form)
+                CHECK(ic_surface_new_implicit(&q, imp[i], NULL, 0, &err) == IC_OK, "%s", err.message);
+            else
+                CHECK(ic_surface_new_parametric(&q, par[i], NULL, NULL, 0, NULL, &err) == IC_OK,
+                      "%s", err.message);
+            if (!p || !q)
+                continue;
+            const ic_jet_space *sp = form ? s3 : s2;
+            const int n = ic_jet_space_len(sp), nout = form ? 1 : 3;
+            for (int trial = 0; trial < 10; trial++) {
+                double at[3], a[3 * 84], b[3 * 84];
+                for (int k = 0; k < 3; k++)
+                    at[k] = harness_uniform(rng, -1.4, 1.4);
+                CHECK(ic_surface_taylor(p, a, at, sp, NULL) == IC_OK &&
+                          ic_surface_taylor(q, b, at, sp, NULL) == IC_OK,
+                      "taylor of primitive %d", i);
+                double worst = 0.0, scale = 1.0;
+                for (int k = 0; k < nout * n; k++)
+                    scale = fmax(scale, fabs(b[k]));
+                for (int k = 0; k < nout * n; k++)
+                    worst = fmax(worst, fabs(a[k] - b[k]));
+                /* closed form vs recurrences: both within a few ulps of
+                 * the coefficients' scale */
+                CHECK(worst <= 32 * DBL_EPSILON * scale, "primitive %d form %d vs formula: %g",
+                      i, form, worst / scale);
+            }
+            ic_surface_free(p);
+            ic_surface_free(q);
+        }
+    }
+    ic_jet_space_free(s2);
+    ic_jet_space_free(s3);
+}
+
+static ic_surface *primitive(ic_primitive_kind kind, ic_surface_kind form, double r, double R)
+{
+    ic_primitive p;
+    memset(&p, 0, sizeof p);
+    p.kind = kind;
+    p.radius = r;
+    p.major_radius = R;
+    p.half_angle = 0.5;
+    ic_surface *s = NULL;
+    return ic_surface_new_primitive(&s, &p, form, NULL) == IC_OK ? s : NULL;
+}
+
+/* Principal curvatures in closed form (outward normals: -1/r on a sphere). */
+static void test_principal_curvatures(void)
+{
+    const double tier = 8 * DBL_EPSILON; /* a few roundings of O(1) values */
+    ic_surface_geometry g;
+    ic_surface *s = primitive(IC_PRIM_SPHERE, IC_PARAMETRIC, 2.5, 0);
+    const double uv[2] = {0.3, 0.4};
+    CHECK(ic_surface_geometry_at(s, &g, uv, NULL) == IC_OK, "sphere geometry");
+    CHECK_ABS(g.principal_curvatures[0], -0.4, tier, "sphere k1");
+    CHECK_ABS(g.principal_curvatures[1], -0.4, tier, "sphere k2");
+    CHECK_ABS(g.gauss, 0.16, tier, "sphere K");
+    const double pole[2] = {0.3, 1.5707963267948966};
+    ic_error err;
+    CHECK(ic_surface_geometry_at(s, &g, pole, &err) == IC_ERR_DOMAIN &&
+              strstr(err.message, "degenerate"),
+          "sphere pole is degenerate: %s", err.message);
+    ic_surface_free(s);
+
+    s = primitive(IC_PRIM_SPHERE, IC_IMPLICIT, 2.5, 0);
+    const double p[3] = {1.5, 2.0, 0.0};
+    CHECK(ic_surface_geometry_at(s, &g, p, NULL) == IC_OK, "implicit sphere");
+    CHECK_ABS(g.principal_curvatures[0], -0.4, tier, "implicit sphere k1");
+    CHECK_ABS(g.principal_curvatures[1], -0.4, tier, "implicit sphere k2");
+    CHECK_ABS(g.normal[0], 0.6, tier, "outward normal");
+    ic_surface_free(s);
+
+    s = primitive(IC_PRIM_CYLINDER, IC_PARAMETRIC, 1.5, 0);
+    CHECK(ic_surface_geometry_at(s, &g, uv, NULL) == IC_OK, "cylinder");
+    CHECK_ABS(g.principal_curvatures[0], 0.0, tier, "cylinder k1");
+    CHECK_ABS(g.principal_curvatures[1], -1.0 / 1.5, tier, "cylinder k2");
+    CHECK_ABS(fabs(g.principal_directions[0][2]), 1.0, tier, "cylinder: k1 along the axis");
+    ic_surface_free(s);
+
+    s = primitive(IC_PRIM_CYLINDER, IC_IMPLICIT, 1.5, 0);
+    const double q[3] = {0.9, 1.2, 7.0};
+    CHECK(ic_surface_geometry_at(s, &g, q, NULL) == IC_OK, "implicit cylinder");
+    CHECK_ABS(g.principal_curvatures[0], 0.0, tier, "implicit cylinder k1");
+    CHECK_ABS(g.principal_curvatures[1], -1.0 / 1.5, tier, "implicit cylinder k2");
+    ic_surface_free(s);
+
+    /* torus R = 2, r = 0.5 at v: -1/r along meridians, -cos v/(R + r cos v) */
+    for (int form = 0; form < 2; form++) {
+        s = primitive(IC_PRIM_TORUS, form ? IC_IMPLICIT : IC_PARAMETRIC, 0.5, 2.0);
+        const double u = 0.7, v = 2.3;
+        const double at_uv[2] = {u, v};
+        const double w = 2.0 + 0.5 * cos(v);
+        const double at_xyz[3] = {w * cos(u), w * sin(u), 0.5 * sin(v)};
+        CHECK(ic_surface_geometry_at(s, &g, form ? at_xyz : at_uv, NULL) == IC_OK, "torus");
+        const double ka = -2.0, kb = -cos(v) / w;
+        CHECK_ABS(g.principal_curvatures[0], fmax(ka, kb), 16 * DBL_EPSILON, "torus k1");
+        CHECK_ABS(g.principal_curvatures[1], fmin(ka, kb), 16 * DBL_EPSILON, "torus k2");
+        ic_surface_free(s);
+    }
+    /* cone apex (implicit): grad f = 0 */
+    s = primitive(IC_PRIM_CONE, IC_IMPLICIT, 0, 0);
+    const double apex[3] = {0, 0, 0};
+    CHECK(ic_surface_geometry_at(s, &g, apex, &err) == IC_ERR_DOMAIN, "cone apex degenerate");
+    ic_surface_free(s);
+}
+
+/* z = x^2 + 3xy as a callback (derivatives supplied by hand). */
+static int paraboloid(void *user, double *d, const double *at, const ic_jet_space *sp)
+{
+    (void)user;
+    const int n = ic_jet_space_len(sp), K = ic_jet_space_order(sp);
+    memset(d, 0, 3 * (size_t)n * sizeof *d);
+    const double u = at[0], v = at[1];
+    d[0] = u, d[n] = v, d[2 * n] = u * u + 3 * u * v;
+    if (K >= 1) {
+        d[1] = 1.0, d[n + 2] = 1.0;
+        d[2 * n + 1] = 2 * u + 3 * v, d[2 * n + 2] = 3 * u;
+    }
+    if (K >= 2)
+        d[2 * n + 3] = 2.0, d[2 * n + 4] = 3.0; /* d_uu, d_uv */
+    return 0;
+}
+
+static int failing(void *user, double *d, const double *at, const ic_jet_space *sp)
+{
+    (void)user, (void)d, (void)at, (void)sp;
+    return 1;
+}
+
+static void test_callback_and_compose(void)
+{
+    ic_surface *cb = NULL, *fm = NULL;
+    const char *xyz[3] = {"u", "v", "u^2 + 3*u*v"};
+    CHECK(ic_surface_new_callback(&cb, IC_PARAMETRIC, paraboloid, NULL, NULL) == IC_OK, "cb");
+    CHECK(ic_surface_new_parametric(&fm, xyz, NULL, NULL, 0, NULL, NULL) == IC_OK, "formula");
+    ic_jet_space *s1 = NULL;
+    if (!cb || !fm || ic_jet_space_new(&s1, 1, 8, NULL) != IC_OK)
+        return;
+    /* a parameter curve u = 0.4 + s - s^2, v = -0.3 + 2 s */
+    double u[9] = {0.4, 1.0, -1.0}, v[9] = {-0.3, 2.0}, a[27], b[27];
+    for (int i = 3; i < 9; i++)
+        u[i] = 0.0;
+    for (int i = 2; i < 9; i++)
+        v[i] = 0.0;
+    const double *in[2] = {u, v};
+    CHECK(ic_surface_compose(cb, a, in, s1, NULL) == IC_OK, "compose callback");
+    CHECK(ic_surface_compose(fm, b, in, s1, NULL) == IC_OK, "compose formula");
+    double worst = 0.0;
+    for (int i = 0; i < 27; i++)
+        worst = fmax(worst, fabs(a[i] - b[i]));
+    CHECK(worst <= 8 * DBL_EPSILON, "callback and formula compose alike: %g", worst);
+    /* z(s) = u^2 + 3uv, exact polynomial: s^4 coefficient = 1 (from (-s^2)^2) */
+    CHECK_ABS(b[18 + 4], 1.0, 8 * DBL_EPSILON, "s^4 coefficient of z");
+    ic_surface_geometry g;
+    const double at[2] = {0.4, -0.3};
+    CHECK(ic_surface_geometry_at(cb, &g, at, NULL) == IC_OK, "callback geometry");
+    ic_surface *bad = NULL;
+    ic_error err;
+    CHECK(ic_surface_new_callback(&bad, IC_PARAMETRIC, failing, NULL, NULL) == IC_OK, "cb");
+    CHECK(ic_surface_geometry_at(bad, &g, at, &err) == IC_ERR_DOMAIN, "failing callback reported");
+    ic_surface_free(bad);
+    ic_surface_free(cb);
+    ic_surface_free(fm);
+    ic_jet_space_free(s1);
+}
+
+static void test_invalid(void)
+{
+    ic_primitive p;
+    memset(&p, 0, sizeof p);
+    ic_surface *s = NULL;
+    ic_error err;
+    p.kind = IC_PRIM_SPHERE, p.radius = -1.0;
+    CHECK(ic_surface_new_primitive(&s, &p, IC_IMPLICIT, &err) == IC_ERR_INVALID && !s, "radius");
+    p.kind = IC_PRIM_CONE, p.half_angle = 2.0;
+    CHECK(ic_surface_new_primitive(&s, &p, IC_IMPLICIT, &err) == IC_ERR_INVALID, "cone angle");
+    p.kind = IC_PRIM_PLANE;
+    CHECK(ic_surface_new_primitive(&s, &p, IC_IMPLICIT, &err) == IC_ERR_INVALID, "zero normal");
+    const char *xyz[3] = {"u", "v", "w"};
+    int which = -1;
+    CHECK(ic_surface_new_parametric(&s, xyz, NULL, NULL, 0, &which, &err) == IC_ERR_PARSE &&
+              which == 2,
+          "unknown identifier in z: which = %d", which);
+    const char *ok[3] = {"u", "v", "0"};
+    CHECK(ic_surface_new_parametric(&s, ok, NULL, NULL, 0, NULL, NULL) == IC_OK, "plane");
+    const double empty[2][2] = {{1, 0}, {0, 1}};
+    CHECK(ic_surface_set_domain(s, empty, NULL, &err) == IC_ERR_INVALID, "empty domain");
+    ic_jet_space *s3 = NULL;
+    if (ic_jet_space_new(&s3, 3, 2, NULL) == IC_OK) {
+        double out[30];
+        const double at[3] = {0, 0, 0};
+        CHECK(ic_surface_taylor(s, out, at, s3, &err) == IC_ERR_INVALID, "wrong space");
+    }
+    ic_jet_space_free(s3);
+    ic_surface_free(s);
+}
+
+int main(int argc, char **argv)
+{
+    harness_rng rng = {0xD1B54A32D192ED03ull};
+    const int cases = test_truth_file(argc > 1 ? argv[1] : "tests/truth/surface_truth.txt");
+    CHECK(cases == 13, "truth cases read: %d", cases);
+    printf("worst derivative error: %.1f ulps of the order's largest derivative (tier 32)\n",
+           worst_deriv);
+    test_primitives_match_formulas(&rng);
+    test_principal_curvatures();
+    test_callback_and_compose();
+    test_invalid();
+    return harness_finish("test_surface");
+}

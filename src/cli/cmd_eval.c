@@ -166,6 +166,7 @@ int ic_cmd_eval(int argc, char **argv)
     cJSON *tensor = derivative_tensor(s, at, order, &err);
     if (!tensor) {
         cJSON_Delete(doc);
+        ic_error_set_path(&err, "surfaces[%d] (\"%s\")", idx, ic_problem_surface_name(p, idx));
         ic_cli_print_error(file, &err);
         rc = EXIT_COMPUTE;
         goto cleanup;
@@ -175,6 +176,7 @@ int ic_cmd_eval(int argc, char **argv)
     if (st != IC_OK && st != IC_ERR_DOMAIN) {
         cJSON_Delete(doc);
         cJSON_Delete(tensor);
+        ic_error_set_path(&err, "surfaces[%d] (\"%s\")", idx, ic_problem_surface_name(p, idx));
         ic_cli_print_error(file, &err);
         rc = EXIT_COMPUTE;
         goto cleanup;

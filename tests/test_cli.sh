@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# The intercurve command: every example evaluates; bad input exits 1 with a
+# message naming file, JSON path and column; help texts exist.
+# usage: test_cli.sh BUILD_DIR SOURCE_DIR
+set -u
+bin="$1/intercurve"
+src="$2"
+pass=0
+fail=0
+check() { # description, condition status
+    if [ "$2" -eq 0 ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: $1"; fi
+}
+out=$(mktemp)
+errf=$(mktemp)
+trap 'rm -f "$out" "$errf"' EXIT
+
+for f in "$src"/examples/*.json; do
+    for name in $(grep -o '"name": *"[^"]*"' "$f" | sed 's/.*: *"//; s/"$//'); do
+        "$bin" eval "$f" --surface "$name" --at 0.3,0.4 >"$out" 2>"$errf"
+        rc=$?
+        if grep -q "needs three coordinates" "$errf"; then
+            "$bin" eval "$f" --surface "$name" --at 0.3,0.4,0.5 >"$out" 2>"$errf"
+            rc=$?
+        fi
+        check "eval $f --surface $name (rc $rc: $(cat "$errf"))" "$rc"
+        grep -q '"principal_curvatures"' "$out"
+        check "eval $f --surface $name prints principal_curvatures" $?
+    done
+done
+
+# Viviani's sphere (radius 2) has principal curvatures -1/2
+"$bin" eval "$src/examples/viviani.json" --surface sphere --at pi/5,0.4 >"$out"
+grep -A1 '"principal_curvatures"' "$out" | grep -q '\[-0.5, -0.5\]'
+check "sphere of radius 2: principal curvatures [-0.5, -0.5]" $?
+
+expect_error() { # file-or-args, expected exit, expected message parts...
+    local rc_want="$1"; shift
+    local args="$1"; shift
+    # shellcheck disable=SC2086
+    "$bin" $args >"$out" 2>"$errf"
+    local rc=$?
+    check "'$args' exits $rc_want (got $rc)" $([ "$rc" -eq "$rc_want" ]; echo $?)
+    for part in "$@"; do
+        grep -qF -- "$part" "$errf"
+        check "'$args' message contains '$part': $(head -c 300 "$errf")" $?
+    done
+}
+d="$src/tests/data"
+expect_error 1 "eval $d/bad-formula.json --at 1,2,3" "bad-formula.json" "surfaces[0].f" "column 7" "unknown identifier 'foo'" "^"
+expect_error 1 "eval $d/bad-paren.json --at 1,2" "surfaces[0].xyz[2]" "never closed"
+expect_error 1 "eval $d/one-surface.json --at 1,2,3" "surfaces" "exactly two surfaces"
+expect_error 1 "eval $d/bad-radius.json --at 1,2,3" "surfaces[0]" "radius must be positive"
+expect_error 1 "eval $d/unknown-key.json --at 1,2,3" "(root)" "unknown key \"boxx\""
+expect_error 1 "eval $d/bad-json.json --at 1,2,3" "invalid JSON near line 2"
+expect_error 1 "eval $d/bad-domain.json --at 1,2" "surfaces[0].domain[1][1]" "exponent has no digits"
+expect_error 1 "eval $d/bad-type.json --at 1,2,3" "surfaces[0].type" "expected \"parametric\""
+expect_error 1 "eval $d/bad-constant.json --at 1,2,3" "constants.sin" "reserved"
+expect_error 1 "eval $d/self-implicit.json --at 1,2,3" "self-intersection needs a parametric surface"
+expect_error 1 "eval $d/missing.json --at 1,2" "cannot open"
+expect_error 1 "eval $src/examples/viviani.json --surface torus --at 1,2" "no surface named 'torus'" "'cylinder'"
+expect_error 1 "eval $src/examples/viviani.json --at 1" "needs two parameters"
+expect_error 1 "eval $src/examples/viviani.json --at 1,foo" "--at, value 2" "unknown identifier 'foo'"
+expect_error 1 "eval $src/examples/viviani.json --at 1,2 --order 99" "--order expects a whole number from 0 to 24"
+expect_error 1 "eval $src/examples/viviani.json" "needs PROBLEM.json and --at"
+expect_error 1 "frobnicate" "unknown command"
+expect_error 2 "eval $src/examples/viviani-implicit.json --surface sphere --at 0,0,1e300" "surfaces[1] (\"sphere\")" "column 14" "overflows"
+
+# a degenerate point: printed with nulls and the reason
+"$bin" eval "$src/examples/viviani.json" --surface sphere --at 0.3,pi/2 >"$out" 2>"$errf"
+check "sphere pole exits 0" $?
+grep -q '"degenerate":.*degenerate point' "$out"
+check "sphere pole says degenerate" $?
+grep -q '"normal":.*null' "$out"
+check "sphere pole: normal is null" $?
+
+"$bin" --help | grep -q "eval"
+check "--help lists eval" $?
+"$bin" eval --help | grep -q "example:"
+check "eval --help has an example" $?
+
+echo "test_cli: $pass passed, $fail failed"
+[ "$fail" -eq 0 ]

@@ -177,6 +177,28 @@ static void test_primitives_match_formulas(harness_rng *rng)
                 CHECK(worst <= 32 * DBL_EPSILON * scale, "primitive %d form %d vs formula: %g",
                       i, form, worst / scale);
             }
+            /* composition with a curve jet: primitives use jet arithmetic */
+            ic_jet_space *s1 = NULL;
+            if (ic_jet_space_new(&s1, 1, 12, NULL) == IC_OK) {
+                double curve[3][13] = {{0}}, a[39], b[39];
+                for (int k = 0; k < 3; k++) {
+                    curve[k][0] = harness_uniform(rng, -1.4, 1.4);
+                    curve[k][1] = harness_uniform(rng, -1.0, 1.0);
+                    curve[k][2] = harness_uniform(rng, -0.5, 0.5);
+                }
+                const double *in[3] = {curve[0], curve[1], curve[2]};
+                CHECK(ic_surface_compose(p, a, in, s1, NULL) == IC_OK &&
+                          ic_surface_compose(q, b, in, s1, NULL) == IC_OK,
+                      "compose primitive %d", i);
+                double worst = 0.0, scale = 1.0;
+                for (int k = 0; k < 13 * nout; k++) {
+                    worst = fmax(worst, fabs(a[k] - b[k]));
+                    scale = fmax(scale, fabs(b[k]));
+                }
+                CHECK(worst <= 32 * DBL_EPSILON * scale,
+                      "primitive %d form %d composed vs formula: %g", i, form, worst / scale);
+            }
+            ic_jet_space_free(s1);
             ic_surface_free(p);
             ic_surface_free(q);
         }

@@ -60,6 +60,15 @@ void ic_jet_add_const(double *c, const double *a, double s, const ic_jet_space *
 
 void ic_jet_mul(double *c, const double *a, const double *b, const ic_jet_space *sp)
 {
+    if (sp->m == 1) { /* plain convolution: the common case of curve jets */
+        for (int k = 0; k <= sp->K; k++) {
+            double sum = 0.0;
+            for (int i = 0; i <= k; i++)
+                sum += a[i] * b[k - i];
+            c[k] = sum;
+        }
+        return;
+    }
     ic_jet_zero(c, sp);
     for (int j = 0; j <= sp->K; j++)
         for (int k = 0; j + k <= sp->K; k++)

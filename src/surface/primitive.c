@@ -225,18 +225,13 @@ static void quadric_taylor(const ic_surface *s, double *out, const double *at,
     out[0] = f;
 }
 
-static ic_status torus_taylor(ic_surface *s, double *out, const double *at,
-                              const ic_jet_space *sp, ic_error *err)
+/* The implicit torus on jets d = x - center (w: 4 jets of workspace). */
+static void torus_on_jets(const ic_primitive *p, double *out, double *const d[3],
+                          const ic_jet_space *sp, double *w)
 {
     const int n = ic_jet_space_len(sp);
-    double *w = ic_surface_work(s, IC_WORK_EVAL, 7 * (size_t)n);
-    if (!w)
-        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory evaluating a torus");
-    double *d[3] = {w, w + n, w + 2 * n}, *sq = w + 3 * n, *sum = w + 4 * n;
-    double *rho = w + 5 * n, *tmp = w + 6 * n;
-    const double R = s->prim.major_radius, r = s->prim.radius;
-    for (int i = 0; i < 3; i++)
-        ic_jet_set_var(d[i], at[i] - s->prim.center[i], i, sp);
+    double *sq = w, *sum = w + n, *rho = w + 2 * n, *tmp = w + 3 * n;
+    const double R = p->major_radius, r = p->radius;
     ic_jet_zero(rho, sp); /* (x-cx)^2 + (y-cy)^2 */
     for (int i = 0; i < 2; i++) {
         ic_jet_mul(sq, d[i], d[i], sp);
@@ -248,18 +243,28 @@ static ic_status torus_taylor(ic_surface *s, double *out, const double *at,
     ic_jet_mul(tmp, sum, sum, sp);
     ic_jet_scale(rho, rho, -4.0 * R * R, sp);
     ic_jet_add(out, tmp, rho, sp);
+}
+
+static ic_status torus_taylor(ic_surface *s, double *out, const double *at,
+                              const ic_jet_space *sp, ic_error *err)
+{
+    const int n = ic_jet_space_len(sp);
+    double *w = ic_surface_work(s, IC_WORK_EVAL, 7 * (size_t)n);
+    if (!w)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory evaluating a torus");
+    double *d[3] = {w, w + n, w + 2 * n};
+    for (int i = 0; i < 3; i++)
+        ic_jet_set_var(d[i], at[i] - s->prim.center[i], i, sp);
+    torus_on_jets(&s->prim, out, d, sp, w + 3 * n);
     return IC_OK;
 }
 
-ic_status ic_primitive_taylor(ic_surface *s, double *out, const double *at,
-                              const ic_jet_space *sp, ic_error *err)
+/* Diagonal quadric coefficients of the implicit primitives (not the torus). */
+static void quadric_coefficients(const ic_primitive *p, double A[3], double B[3], double *C)
 {
-    const ic_primitive *p = &s->prim;
-    if (s->kind == IC_PARAMETRIC) {
-        parametric_taylor(s, out, at, sp);
-        return IC_OK;
-    }
-    double A[3] = {0, 0, 0}, B[3] = {0, 0, 0}, C = 0.0;
+    for (int i = 0; i < 3; i++)
+        A[i] = B[i] = 0.0;
+    *C = 0.0;
     switch (p->kind) {
     case IC_PRIM_PLANE:
         for (int i = 0; i < 3; i++)
@@ -267,11 +272,11 @@ ic_status ic_primitive_taylor(ic_surface *s, double *out, const double *at,
         break;
     case IC_PRIM_SPHERE:
         A[0] = A[1] = A[2] = 1.0;
-        C = -p->radius * p->radius;
+        *C = -p->radius * p->radius;
         break;
     case IC_PRIM_CYLINDER:
         A[0] = A[1] = 1.0;
-        C = -p->radius * p->radius;
+        *C = -p->radius * p->radius;
         break;
     case IC_PRIM_CONE: {
         const double t = tan(p->half_angle);
@@ -282,11 +287,111 @@ ic_status ic_primitive_taylor(ic_surface *s, double *out, const double *at,
     case IC_PRIM_ELLIPSOID:
         for (int i = 0; i < 3; i++)
             A[i] = 1.0 / (p->axes[i] * p->axes[i]);
-        C = -1.0;
+        *C = -1.0;
         break;
     case IC_PRIM_TORUS:
-        return torus_taylor(s, out, at, sp, err);
+        break;
     }
+}
+
+/* Parametric primitive on jets u, v (w: 4 jets of workspace). */
+static void parametric_on_jets(const ic_surface *s, double *out, const double *u,
+                               const double *v, const ic_jet_space *sp, double *w)
+{
+    const ic_primitive *p = &s->prim;
+    const int n = ic_jet_space_len(sp);
+    double *x = out, *y = out + n, *z = out + 2 * n;
+    double *cu = w, *su = w + n, *cv = w + 2 * n, *sv = w + 3 * n;
+    ic_jet_sin_cos(su, cu, u, sp);
+    ic_jet_sin_cos(sv, cv, v, sp);
+    switch (p->kind) {
+    case IC_PRIM_PLANE:
+        for (int k = 0; k < 3; k++)
+            for (int i = 0; i < n; i++)
+                out[k * n + i] = s->plane_frame[0][k] * u[i] + s->plane_frame[1][k] * v[i];
+        break;
+    case IC_PRIM_SPHERE:
+    case IC_PRIM_ELLIPSOID: {
+        const int sph = p->kind == IC_PRIM_SPHERE;
+        ic_jet_mul(x, cu, cv, sp);
+        ic_jet_scale(x, x, sph ? p->radius : p->axes[0], sp);
+        ic_jet_mul(y, su, cv, sp);
+        ic_jet_scale(y, y, sph ? p->radius : p->axes[1], sp);
+        ic_jet_scale(z, sv, sph ? p->radius : p->axes[2], sp);
+        break;
+    }
+    case IC_PRIM_CYLINDER:
+        ic_jet_scale(x, cu, p->radius, sp);
+        ic_jet_scale(y, su, p->radius, sp);
+        ic_jet_copy(z, v, sp);
+        break;
+    case IC_PRIM_CONE: {
+        const double t = tan(p->half_angle);
+        ic_jet_mul(x, cu, v, sp);
+        ic_jet_scale(x, x, t, sp);
+        ic_jet_mul(y, su, v, sp);
+        ic_jet_scale(y, y, t, sp);
+        ic_jet_copy(z, v, sp);
+        break;
+    }
+    case IC_PRIM_TORUS:
+        ic_jet_scale(cv, cv, p->radius, sp); /* w = R + r cos v */
+        cv[0] += p->major_radius;
+        ic_jet_mul(x, cv, cu, sp);
+        ic_jet_mul(y, cv, su, sp);
+        ic_jet_scale(z, sv, p->radius, sp);
+        break;
+    }
+    for (int k = 0; k < 3; k++)
+        out[k * n] += p->center[k];
+}
+
+ic_status ic_primitive_compose(ic_surface *s, double *out, const double *const *in,
+                               const ic_jet_space *sp, ic_error *err)
+{
+    const int n = ic_jet_space_len(sp);
+    double *w = ic_surface_work(s, IC_WORK_COMPOSE, 7 * (size_t)n);
+    if (!w)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory composing a primitive");
+    if (s->kind == IC_PARAMETRIC) {
+        parametric_on_jets(s, out, in[0], in[1], sp, w);
+        return IC_OK;
+    }
+    double *d[3] = {w, w + n, w + 2 * n};
+    for (int i = 0; i < 3; i++) {
+        ic_jet_copy(d[i], in[i], sp);
+        d[i][0] -= s->prim.center[i];
+    }
+    if (s->prim.kind == IC_PRIM_TORUS) {
+        torus_on_jets(&s->prim, out, d, sp, w + 3 * n);
+        return IC_OK;
+    }
+    double A[3], B[3], C, *sq = w + 3 * n;
+    quadric_coefficients(&s->prim, A, B, &C);
+    ic_jet_set_const(out, C, sp);
+    for (int i = 0; i < 3; i++) {
+        if (A[i] != 0.0) {
+            ic_jet_mul(sq, d[i], d[i], sp);
+            for (int j = 0; j < n; j++)
+                out[j] += A[i] * sq[j];
+        }
+        for (int j = 0; j < n; j++)
+            out[j] += B[i] * d[i][j];
+    }
+    return IC_OK;
+}
+
+ic_status ic_primitive_taylor(ic_surface *s, double *out, const double *at,
+                              const ic_jet_space *sp, ic_error *err)
+{
+    if (s->kind == IC_PARAMETRIC) {
+        parametric_taylor(s, out, at, sp);
+        return IC_OK;
+    }
+    if (s->prim.kind == IC_PRIM_TORUS)
+        return torus_taylor(s, out, at, sp, err);
+    double A[3], B[3], C;
+    quadric_coefficients(&s->prim, A, B, &C);
     quadric_taylor(s, out, at, sp, A, B, C);
     return IC_OK;
 }

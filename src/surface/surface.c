@@ -225,7 +225,9 @@ ic_status ic_surface_compose(ic_surface *s, double *out, const double *const *in
             return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory evaluating a surface");
         return ic_expr_eval_jet(s->expr, out, in, sp, w, err);
     }
-    /* Taylor polynomial at the constant terms, then the chain rule. */
+    if (s->backend == BACKEND_PRIMITIVE)
+        return ic_primitive_compose(s, out, in, sp, err);
+    /* Callbacks: Taylor polynomial at the constant terms, then the chain rule. */
     const ic_jet_space *tsp = ic_surface_space(s, ic_jet_space_order(sp), err);
     if (!tsp)
         return err ? err->code : IC_ERR_NOMEM;

@@ -40,4 +40,8 @@ void ic_primitive_default_domain(ic_surface *s);
 ic_status ic_primitive_taylor(ic_surface *s, double *out, const double *at,
                               const ic_jet_space *sp, ic_error *err);
 
+/* The primitive composed with jets, by jet arithmetic (slot 1). */
+ic_status ic_primitive_compose(ic_surface *s, double *out, const double *const *in,
+                               const ic_jet_space *sp, ic_error *err);
+
 #endif

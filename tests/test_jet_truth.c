@@ -1,6 +1,7 @@
 /* Jets against truth computed offline at 60 digits by an independent method
  * (tests/truth/gen_jet_truth.py): every elementary function, products,
- * quotients and atan2, in 1, 2 and 3 variables, orders 8 and 16. */
+ * quotients and atan2, at two or three points each, in 1, 2 and 3
+ * variables, orders 8, 12 and 16. */
 #include <string.h>
 
 #include "harness.h"
@@ -54,8 +55,12 @@ int main(int argc, char **argv)
     }
     static double a[MAXN], b[MAXN], want[MAXN], got[MAXN];
     char line[256];
-    if (!fgets(line, sizeof line, f)) /* header comment */
+    int expected = -1;
+    if (!fgets(line, sizeof line, f)) /* header comment: "...; N cases" */
         return 1;
+    const char *semi = strrchr(line, ';');
+    if (semi)
+        expected = atoi(semi + 1);
     double worst = 0.0;
     int cases = 0;
     char name[32], param[32];
@@ -77,8 +82,8 @@ int main(int argc, char **argv)
         /* Tolerance: the degree-d coefficient is a sum of O(d) products of
          * lower ones, each rounded; with inputs of O(1) and coefficients that
          * decay, the error stays within 4 (d + 1) ulps of the largest
-         * coefficient magnitude up to that degree (observed worst 1.26; see the
-         * printed figure). */
+         * coefficient magnitude up to that degree (observed worst 2.29: the
+         * value of x^5 after the three roundings of binary powering). */
         double big = 0.0;
         for (int d = 0; d <= K; d++) {
             for (int i = ic_jet_degree_start(sp, d); i < ic_jet_degree_start(sp, d + 1); i++)
@@ -96,7 +101,7 @@ int main(int argc, char **argv)
         cases++;
     }
     fclose(f);
-    CHECK(cases == 80, "read %d cases, expected 80", cases);
+    CHECK(cases == expected && cases > 0, "read %d cases, the file announces %d", cases, expected);
     printf("worst error: %.2f units of (d+1) eps x max |coefficient| (tolerance 4)\n", worst);
     return harness_finish("test_jet_truth");
 }

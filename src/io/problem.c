@@ -100,6 +100,46 @@ static const char *formula_text(const cJSON *item, char *buf, size_t size)
     return NULL;
 }
 
+/* The optional "domain" and "periodic" keys of a parametric surface, over
+ * its current ones (unbounded, or a primitive's natural domain). */
+static ic_status read_domain(ic_problem *p, ic_surface *s, const cJSON *js, const char *path,
+                             ic_error *err)
+{
+    const cJSON *jd = cJSON_GetObjectItemCaseSensitive(js, "domain");
+    const cJSON *jper = cJSON_GetObjectItemCaseSensitive(js, "periodic");
+    if (!jd && !jper)
+        return IC_OK;
+    char sub[IC_ERROR_PATH_LEN];
+    double domain[2][2];
+    int periodic[2];
+    ic_surface_get_domain(s, domain, periodic);
+    if (jd) {
+        snprintf(sub, sizeof sub, "%s.domain", path);
+        if (!cJSON_IsArray(jd) || cJSON_GetArraySize(jd) != 2)
+            return invalid(err, sub, "expected [[u0, u1], [v0, v1]]");
+        for (int i = 0; i < 2; i++) {
+            snprintf(sub, sizeof sub, "%s.domain[%d]", path, i);
+            ic_status st = ic_json_numbers(domain[i], 2, cJSON_GetArrayItem(jd, i), sub,
+                                           p->consts, p->nconsts, err);
+            if (st != IC_OK)
+                return st;
+        }
+    }
+    if (jper) {
+        snprintf(sub, sizeof sub, "%s.periodic", path);
+        if (!cJSON_IsArray(jper) || cJSON_GetArraySize(jper) != 2 ||
+            !cJSON_IsBool(cJSON_GetArrayItem(jper, 0)) ||
+            !cJSON_IsBool(cJSON_GetArrayItem(jper, 1)))
+            return invalid(err, sub, "expected two booleans, e.g. [false, true]");
+        periodic[0] = cJSON_IsTrue(cJSON_GetArrayItem(jper, 0));
+        periodic[1] = cJSON_IsTrue(cJSON_GetArrayItem(jper, 1));
+    }
+    ic_status st = ic_surface_set_domain(s, (const double(*)[2])domain, periodic, err);
+    if (st != IC_OK)
+        ic_error_set_path(err, "%s.domain", path);
+    return st;
+}
+
 static ic_status read_parametric(ic_problem *p, ic_surface **s, const cJSON *js,
                                  const char *path, ic_error *err)
 {
@@ -146,37 +186,7 @@ static ic_status read_parametric(ic_problem *p, ic_surface **s, const cJSON *js,
         ic_error_set_path(err, "%s", sub);
         return st;
     }
-    double domain[2][2];
-    int periodic[2] = {0, 0};
-    const cJSON *jd = cJSON_GetObjectItemCaseSensitive(js, "domain");
-    if (!jd)
-        return IC_OK; /* unbounded; tracing asks for a domain */
-    snprintf(sub, sizeof sub, "%s.domain", path);
-    if (!cJSON_IsArray(jd) || cJSON_GetArraySize(jd) != 2)
-        return invalid(err, sub, "expected [[u0, u1], [v0, v1]]");
-    for (int i = 0; i < 2; i++) {
-        snprintf(sub, sizeof sub, "%s.domain[%d]", path, i);
-        st = ic_json_numbers(domain[i], 2, cJSON_GetArrayItem(jd, i), sub, p->consts,
-                             p->nconsts, err);
-        if (st != IC_OK)
-            return st;
-    }
-    const cJSON *jper = cJSON_GetObjectItemCaseSensitive(js, "periodic");
-    if (jper) {
-        snprintf(sub, sizeof sub, "%s.periodic", path);
-        if (!cJSON_IsArray(jper) || cJSON_GetArraySize(jper) != 2 ||
-            !cJSON_IsBool(cJSON_GetArrayItem(jper, 0)) ||
-            !cJSON_IsBool(cJSON_GetArrayItem(jper, 1)))
-            return invalid(err, sub, "expected two booleans, e.g. [false, true]");
-        periodic[0] = cJSON_IsTrue(cJSON_GetArrayItem(jper, 0));
-        periodic[1] = cJSON_IsTrue(cJSON_GetArrayItem(jper, 1));
-    }
-    st = ic_surface_set_domain(*s, (const double(*)[2])domain, periodic, err);
-    if (st != IC_OK) {
-        snprintf(sub, sizeof sub, "%s.domain", path);
-        ic_error_set_path(err, "%s", sub);
-    }
-    return st;
+    return read_domain(p, *s, js, path, err); /* absent: unbounded */
 }
 
 static ic_status read_implicit(ic_problem *p, ic_surface **s, const cJSON *js, const char *path,
@@ -200,9 +210,9 @@ static ic_status read_implicit(ic_problem *p, ic_surface **s, const cJSON *js, c
     return IC_OK;
 }
 
-/* Optional number field of a primitive. */
-static ic_status prim_number(ic_problem *p, double *out, const cJSON *js, const char *key,
-                             const char *path, int required, ic_error *err)
+/* A field of a primitive: one number (count 1) or an array of `count`. */
+static ic_status prim_field(ic_problem *p, double *out, int count, const cJSON *js,
+                           const char *key, const char *path, int required, ic_error *err)
 {
     char sub[IC_ERROR_PATH_LEN];
     const cJSON *it = cJSON_GetObjectItemCaseSensitive(js, key);
@@ -213,22 +223,9 @@ static ic_status prim_number(ic_problem *p, double *out, const cJSON *js, const 
         return ic_error_set(err, IC_ERR_INVALID, 0, "missing key \"%s\"", key);
     }
     snprintf(sub, sizeof sub, "%s.%s", path, key);
-    return ic_json_number(out, it, sub, p->consts, p->nconsts, err);
-}
-
-static ic_status prim_vector(ic_problem *p, double *out, const cJSON *js, const char *key,
-                             const char *path, int required, ic_error *err)
-{
-    char sub[IC_ERROR_PATH_LEN];
-    const cJSON *it = cJSON_GetObjectItemCaseSensitive(js, key);
-    if (!it) {
-        if (!required)
-            return IC_OK;
-        ic_error_set_path(err, "%s", path);
-        return ic_error_set(err, IC_ERR_INVALID, 0, "missing key \"%s\"", key);
-    }
-    snprintf(sub, sizeof sub, "%s.%s", path, key);
-    return ic_json_numbers(out, 3, it, sub, p->consts, p->nconsts, err);
+    if (count == 1)
+        return ic_json_number(out, it, sub, p->consts, p->nconsts, err);
+    return ic_json_numbers(out, count, it, sub, p->consts, p->nconsts, err);
 }
 
 static ic_status read_primitive(ic_problem *p, ic_surface **s, const cJSON *js,
@@ -253,26 +250,26 @@ static ic_status read_primitive(ic_problem *p, ic_surface **s, const cJSON *js,
         else if (!(cJSON_IsString(jform) && strcmp(jform->valuestring, "implicit") == 0))
             return invalid(err, sub, "expected \"implicit\" or \"parametric\"");
     }
-    if ((st = prim_vector(p, prim.center, js, "center", path, 0, err)) != IC_OK)
+    if ((st = prim_field(p, prim.center, 3, js, "center", path, 0, err)) != IC_OK)
         return st;
     switch (kind) {
     case IC_PRIM_PLANE:
-        st = prim_vector(p, prim.normal, js, "normal", path, 1, err);
+        st = prim_field(p, prim.normal, 3, js, "normal", path, 1, err);
         break;
     case IC_PRIM_SPHERE:
     case IC_PRIM_CYLINDER:
-        st = prim_number(p, &prim.radius, js, "radius", path, 1, err);
+        st = prim_field(p, &prim.radius, 1, js, "radius", path, 1, err);
         break;
     case IC_PRIM_CONE:
-        st = prim_number(p, &prim.half_angle, js, "half_angle", path, 1, err);
+        st = prim_field(p, &prim.half_angle, 1, js, "half_angle", path, 1, err);
         break;
     case IC_PRIM_TORUS:
-        st = prim_number(p, &prim.major_radius, js, "major_radius", path, 1, err);
+        st = prim_field(p, &prim.major_radius, 1, js, "major_radius", path, 1, err);
         if (st == IC_OK)
-            st = prim_number(p, &prim.radius, js, "minor_radius", path, 1, err);
+            st = prim_field(p, &prim.radius, 1, js, "minor_radius", path, 1, err);
         break;
     case IC_PRIM_ELLIPSOID:
-        st = prim_vector(p, prim.axes, js, "axes", path, 1, err);
+        st = prim_field(p, prim.axes, 3, js, "axes", path, 1, err);
         break;
     }
     if (st != IC_OK)
@@ -282,37 +279,11 @@ static ic_status read_primitive(ic_problem *p, ic_surface **s, const cJSON *js,
         ic_error_set_path(err, "%s", path);
         return st;
     }
-    if (cJSON_GetObjectItemCaseSensitive(js, "domain") ||
-        cJSON_GetObjectItemCaseSensitive(js, "periodic")) {
-        if (form != IC_PARAMETRIC)
-            return invalid(err, path, "\"domain\" and \"periodic\" need \"form\": \"parametric\"");
-        double domain[2][2];
-        int periodic[2];
-        ic_surface_get_domain(*s, domain, periodic);
-        const cJSON *jd = cJSON_GetObjectItemCaseSensitive(js, "domain");
-        for (int i = 0; jd && i < 2; i++) {
-            snprintf(sub, sizeof sub, "%s.domain[%d]", path, i);
-            if (!cJSON_IsArray(jd) || cJSON_GetArraySize(jd) != 2)
-                return invalid(err, sub, "expected [[u0, u1], [v0, v1]]");
-            st = ic_json_numbers(domain[i], 2, cJSON_GetArrayItem(jd, i), sub, p->consts,
-                                 p->nconsts, err);
-            if (st != IC_OK)
-                return st;
-        }
-        const cJSON *jper = cJSON_GetObjectItemCaseSensitive(js, "periodic");
-        for (int i = 0; jper && i < 2; i++) {
-            if (!cJSON_IsArray(jper) || cJSON_GetArraySize(jper) != 2 ||
-                !cJSON_IsBool(cJSON_GetArrayItem(jper, i))) {
-                snprintf(sub, sizeof sub, "%s.periodic", path);
-                return invalid(err, sub, "expected two booleans");
-            }
-            periodic[i] = cJSON_IsTrue(cJSON_GetArrayItem(jper, i));
-        }
-        st = ic_surface_set_domain(*s, (const double(*)[2])domain, periodic, err);
-        if (st != IC_OK)
-            ic_error_set_path(err, "%s.domain", path);
-    }
-    return st;
+    const int wants_domain = cJSON_GetObjectItemCaseSensitive(js, "domain") ||
+                             cJSON_GetObjectItemCaseSensitive(js, "periodic");
+    if (wants_domain && form != IC_PARAMETRIC)
+        return invalid(err, path, "\"domain\" and \"periodic\" need \"form\": \"parametric\"");
+    return read_domain(p, *s, js, path, err);
 }
 
 static ic_status read_surface(ic_problem *p, int i, const cJSON *js, ic_error *err)

@@ -10,6 +10,7 @@
 #include "intercurve/jet.h"
 #include "intercurve/expr.h"
 #include "intercurve/surface.h"
+#include "intercurve/local.h"
 #include "intercurve/problem.h"
 
 #define IC_VERSION "0.1.0"

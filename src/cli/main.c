@@ -11,12 +11,14 @@ static const char USAGE[] =
     "commands:\n"
     "  eval    point, normal, fundamental forms, principal curvatures and the\n"
     "          derivative tensor of one surface of a problem at a point\n"
-    "  point   (not yet available) the intersection's Frenet apparatus at a point\n"
+    "  point   the intersection at a point: its type, the Frenet apparatus and the\n"
+    "          derivatives of any order with respect to arc length\n"
     "  trace   (not yet available) trace the whole intersection\n"
     "  plot    (not yet available) draw surfaces, curves and frames\n"
     "\n"
     "example:\n"
     "  intercurve eval examples/viviani.json --surface sphere --at 0.3,0.4\n"
+    "  intercurve point examples/viviani.json --at 1.5,0.8660254037844386,1\n"
     "\n"
     "'intercurve COMMAND --help' describes a command. Exit status: 0 success,\n"
     "1 wrong input (the message says what and where), 2 the computation cannot be done.\n";
@@ -34,7 +36,9 @@ int main(int argc, char **argv)
     }
     if (strcmp(argv[1], "eval") == 0)
         return ic_cmd_eval(argc - 1, argv + 1);
-    if (strcmp(argv[1], "point") == 0 || strcmp(argv[1], "trace") == 0 ||
+    if (strcmp(argv[1], "point") == 0)
+        return ic_cmd_point(argc - 1, argv + 1);
+    if (strcmp(argv[1], "trace") == 0 ||
         strcmp(argv[1], "plot") == 0) {
         fprintf(stderr, "intercurve: '%s' is not available in this version yet\n", argv[1]);
         return EXIT_INPUT;

@@ -1,0 +1,183 @@
+/**
+ * @file local.h
+ * The differential geometry of an intersection at one point (DESIGN.md 2.1).
+ *
+ * A pair is two surfaces A and B (any mix of parametric and implicit), or one
+ * parametric surface with itself (a self-intersection: A and B are the two
+ * sheets R(u, v) and R(p, q) through the point). A point of the intersection
+ * is located from coordinates or parameters and refined onto both surfaces;
+ * at a transversal point the curve through it is oriented by
+ * t = N_A x N_B / |N_A x N_B| and its Frenet apparatus and arc-length
+ * derivatives c^(1..K) are computed by
+ *  - the jet method (any order K <= IC_LOCAL_MAX_ORDER; seed 004): order by
+ *    order, three linear equations with the same matrix [t; N_A; N_B];
+ *  - the closed-form method (orders <= 3): the papers' formulas, one function
+ *    per paper and case (src/local/closed_*.c cite the equations).
+ * Tangential points (normals parallel within the angle option) are reported
+ * as such; their analysis is the tangential issue's.
+ */
+#ifndef INTERCURVE_LOCAL_H
+#define INTERCURVE_LOCAL_H
+
+#include "intercurve/common.h"
+#include "intercurve/surface.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Highest derivative order of the local apparatus. */
+#define IC_LOCAL_MAX_ORDER 16
+/** Highest order of the closed-form method (the papers stop at c'''). */
+#define IC_CLOSED_FORM_MAX_ORDER 3
+
+/** Kinds of intersection points (DESIGN.md 2.2 names them). */
+typedef enum {
+    IC_POINT_TRANSVERSAL,
+    IC_POINT_BRANCH,
+    IC_POINT_TANGENTIAL_CURVE,
+    IC_POINT_ISOLATED_CONTACT,
+    IC_POINT_CUSP,
+    IC_POINT_TACNODE,
+    IC_POINT_HIGHER_ORDER_CONTACT,
+    IC_POINT_TANGENTIAL /**< tangential, not yet classified */
+} ic_point_type;
+
+/** "transversal", "branch-point", ... (DESIGN.md names). */
+const char *ic_point_type_name(ic_point_type type);
+
+typedef enum {
+    IC_METHOD_AUTO,        /**< jet */
+    IC_METHOD_JET,
+    IC_METHOD_CLOSED_FORM,
+    IC_METHOD_PERTURBATION /**< the tangential issue's */
+} ic_method;
+
+/** "auto", "jet", "closed-form", "perturbation"; and back (-1 if unknown). */
+const char *ic_method_name(ic_method method);
+int ic_method_from_name(const char *name);
+
+/** Tolerances of the local computations, with their units. */
+typedef struct {
+    /** length: a given point farther than this from either surface is an
+     *  error that says how far (default 1e-6) */
+    double point_tol;
+    /** dimensionless: refinement stops when the residual is below
+     *  newton_tol * (1 + |point|) (default 1e-15) */
+    double newton_tol;
+    /** iterations of each Newton solve (default 60) */
+    int max_newton;
+    /** grid cells per parameter for the closest-point search (default 24) */
+    int grid;
+    /** radians: normals closer than this to parallel make the point
+     *  tangential (default 1e-6; docs/local.md discusses the choice) */
+    double tangential_angle;
+    /** parameter distance: two preimages of a self-intersection closer
+     *  than this are the same sheet (default 1e-6) */
+    double distinct_params;
+    /** 1/length: a curvature at or below this is zero: n, b, tau are then
+     *  undefined (default 1e-12) */
+    double kappa_zero;
+} ic_local_options;
+
+/** Fills the defaults above. */
+void ic_local_defaults(ic_local_options *opt);
+
+typedef struct ic_pair ic_pair;
+
+/** A pair of surfaces (not owned; they must outlive the pair). B = NULL
+ *  makes a self-intersection pair of A, which must be parametric. */
+IC_NODISCARD ic_status ic_pair_new(ic_pair **pair, ic_surface *A, ic_surface *B, ic_error *err);
+/** Frees a pair; NULL is allowed. */
+void ic_pair_free(ic_pair *pair);
+/** 1 for a self-intersection pair. */
+int ic_pair_is_self(const ic_pair *pair);
+/** Surface 0 (A) or 1 (B; A again for a self-intersection). */
+ic_surface *ic_pair_surface(const ic_pair *pair, int which);
+
+/** A point of the intersection: coordinates and the parameters on each
+ *  parametric sheet (unused entries of implicit surfaces are 0). */
+typedef struct {
+    double xyz[3];
+    double params[2][2];
+    double residual; /**< length: largest distance to either surface */
+} ic_local_point;
+
+/**
+ * Locates the point of the intersection nearest to xyz: parameters of the
+ * parametric surfaces by a closest-point search (a grid, then Newton), two
+ * distinct preimages for a self-intersection, then a Newton refinement onto
+ * both surfaces in the plane through the point normal to the curve.
+ * IC_ERR_UNABLE with the distance in the message when xyz is farther than
+ * opt->point_tol from either surface (or from the intersection).
+ */
+IC_NODISCARD ic_status ic_local_locate(ic_pair *pair, ic_local_point *pt, const double xyz[3],
+                                       const ic_local_options *opt, ic_error *err);
+
+/**
+ * The same from parameters: params lists the parameters of the parametric
+ * surfaces in problem order (u, v for A if parametric, then those of B; for a
+ * self-intersection u, v, p, q). nparams must match (IC_ERR_INVALID).
+ */
+IC_NODISCARD ic_status ic_local_locate_params(ic_pair *pair, ic_local_point *pt,
+                                              const double *params, int nparams,
+                                              const ic_local_options *opt, ic_error *err);
+
+/** Darboux quantities of the curve on one surface (DESIGN.md 2.1). */
+typedef struct {
+    double kappa_n; /**< normal curvature c'' . N */
+    double kappa_g; /**< geodesic curvature c'' . (N x t) */
+    double tau_g;   /**< geodesic torsion -N' . (N x t) = II(t, N x t) */
+} ic_darboux;
+
+/** The apparatus of one branch through the point. */
+typedef struct {
+    int order;                  /**< K: derivatives c^(1..K) are filled */
+    double t[3], n[3], b[3];
+    double kappa, tau;
+    double kappa_prime;         /**< d kappa / ds (needs K >= 3) */
+    double tau_prime;           /**< d tau / ds (needs K >= 4) */
+    int frame_defined;          /**< 0 where kappa = 0: n, b, tau, tau' undefined */
+    int tau_defined;            /**< needs the frame and K >= 3 */
+    int kappa_prime_defined, tau_prime_defined;
+    double derivs[IC_LOCAL_MAX_ORDER][3];        /**< derivs[k-1] = c^(k) */
+    /** derivatives of the parameter curves on each parametric sheet:
+     *  param_derivs[s][k-1] = (u^(k), v^(k)) */
+    double param_derivs[2][IC_LOCAL_MAX_ORDER][2];
+    ic_darboux surface[2];
+} ic_branch;
+
+#define IC_LOCAL_MAX_BRANCHES 4
+
+/** Everything known at one point. */
+typedef struct {
+    ic_local_point point;
+    double normals[2][3];
+    double angle;         /**< radians in [0, pi/2]: between the normal lines */
+    ic_point_type type;
+    ic_method method;     /**< the method that produced the branches */
+    int nbranches;
+    ic_branch branches[IC_LOCAL_MAX_BRANCHES];
+} ic_local_result;
+
+/**
+ * The apparatus at a located point, to order K (1..IC_LOCAL_MAX_ORDER; the
+ * closed-form method to IC_CLOSED_FORM_MAX_ORDER). A tangential point
+ * (angle below opt->tangential_angle) returns IC_ERR_UNABLE with
+ * res->type = IC_POINT_TANGENTIAL and the angle filled: the tangential
+ * analysis is not available yet. IC_ERR_INVALID for an order out of range.
+ */
+IC_NODISCARD ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res,
+                                          const ic_local_point *pt, int order, ic_method method,
+                                          const ic_local_options *opt, ic_error *err);
+
+/** Local straight-line and plane-curve conditions (seed 001 corollaries
+ *  3.1, 3.2) at a branch: kappa <= tol (1/length), and tau = 0 within tol
+ *  (1/length); a branch with undefined torsion is no plane curve witness. */
+int ic_branch_is_line(const ic_branch *br, double tol);
+int ic_branch_is_planar(const ic_branch *br, double tol);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,63 @@
+/* The apparatus at a located point: sheets, classification by the angle
+ * between the normals, the chosen method, the Frenet frame. */
+#include "local_internal.h"
+#include "common/vec3.h"
+
+#include <math.h>
+#include <string.h>
+
+ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res, const ic_local_point *pt,
+                             int order, ic_method method, const ic_local_options *opt,
+                             ic_error *err)
+{
+    memset(res, 0, sizeof *res);
+    res->point = *pt;
+    res->method = method == IC_METHOD_AUTO ? IC_METHOD_JET : method;
+    if (order < 1 || order > IC_LOCAL_MAX_ORDER)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "order %d outside 1..%d", order,
+                            IC_LOCAL_MAX_ORDER);
+    if (res->method == IC_METHOD_CLOSED_FORM && order > IC_CLOSED_FORM_MAX_ORDER)
+        return ic_error_set(err, IC_ERR_INVALID, 0,
+                            "the closed-form method gives derivatives up to order %d (the "
+                            "papers stop at c'''); use the jet method for order %d",
+                            IC_CLOSED_FORM_MAX_ORDER, order);
+    if (res->method == IC_METHOD_PERTURBATION)
+        return ic_error_set(err, IC_ERR_INVALID, 0,
+                            "the perturbation method is for tangential points and is not "
+                            "available yet; use jet or closed-form");
+    ic_sheet sh[2];
+    static const char *const NAMES[2] = {"A", "B"};
+    for (int s = 0; s < 2; s++) {
+        ic_status st = ic_sheet_at(pair, &sh[s], s, pt, err);
+        if (st != IC_OK) {
+            if (st == IC_ERR_DOMAIN && err) {
+                char msg[IC_ERROR_MESSAGE_LEN];
+                memcpy(msg, err->message, sizeof msg);
+                ic_error_set(err, st, 0, "surface %s is singular at the point: %.200s",
+                             NAMES[s], msg);
+            }
+            return st;
+        }
+        memcpy(res->normals[s], sh[s].geo.normal, sizeof sh[s].geo.normal);
+    }
+    double cr[3];
+    ic_cross3(cr, sh[0].geo.normal, sh[1].geo.normal);
+    res->angle = atan2(ic_norm3(cr), fabs(ic_dot3(sh[0].geo.normal, sh[1].geo.normal)));
+    if (res->angle < opt->tangential_angle) {
+        res->type = IC_POINT_TANGENTIAL;
+        return ic_error_set(err, IC_ERR_UNABLE, 0,
+                            "tangential point: the normals are %.3g rad from parallel (below "
+                            "%g); the tangential analysis is not available yet",
+                            res->angle, opt->tangential_angle);
+    }
+    res->type = IC_POINT_TRANSVERSAL;
+    res->nbranches = 1;
+    ic_branch *br = &res->branches[0];
+    ic_status st = res->method == IC_METHOD_CLOSED_FORM
+                       ? ic_closed_form_method(br, sh, order, err)
+                       : ic_jet_method(pair, br, sh, order, err);
+    if (st != IC_OK)
+        return st;
+    ic_branch_finish(br, sh, opt);
+    return IC_OK;
+}

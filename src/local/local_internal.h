@@ -1,0 +1,50 @@
+/* Internal pieces of the local layer. */
+#ifndef IC_LOCAL_INTERNAL_H
+#define IC_LOCAL_INTERNAL_H
+
+#include "intercurve/jet.h"
+#include "intercurve/local.h"
+
+struct ic_pair {
+    ic_surface *s[2];      /* A, B (B = A for a self-intersection) */
+    int self;
+    /* one-variable spaces of order 0..IC_LOCAL_MAX_ORDER (curve jets) and the
+     * spaces of order 3 for the sheets' derivative tensors */
+    ic_jet_space *curve[IC_LOCAL_MAX_ORDER + 1];
+    ic_jet_space *tensor[2]; /* [0]: 2 variables, [1]: 3 variables */
+};
+
+/* One sheet of the pair at the point: its geometry and derivatives to
+ * order 3 (parametric: 3 jets of 10 coefficients over (u, v); implicit: one
+ * jet of 20 over (x, y, z)). */
+typedef struct {
+    ic_surface *s;
+    int parametric;
+    double at[3];          /* (u, v) or (x, y, z) */
+    ic_surface_geometry geo;
+    double taylor[30];
+} ic_sheet;
+
+/* Fills sheet `which` (0 = A, 1 = B) at the point. */
+ic_status ic_sheet_at(ic_pair *pair, ic_sheet *sh, int which, const ic_local_point *pt,
+                      ic_error *err);
+
+/* Partial derivative of a parametric sheet: d^(i+j) R / du^i dv^j (i+j <= 3). */
+void ic_sheet_partial(const ic_sheet *sh, int i, int j, double *out);
+/* Partial derivative of an implicit sheet: d^alpha f for alpha in N^3, |alpha| <= 3. */
+double ic_sheet_fpartial(const ic_sheet *sh, int ax, int ay, int az);
+
+/* Methods: fill the branch derivatives c^(1..K) (and parameter curves) at
+ * a transversal point of the two sheets. */
+ic_status ic_jet_method(ic_pair *pair, ic_branch *br, const ic_sheet sh[2], int order,
+                        ic_error *err);
+ic_status ic_closed_form_method(ic_branch *br, const ic_sheet sh[2], int order, ic_error *err);
+
+/* From c^(1..K) in br->derivs: t, n, b, kappa, tau, kappa', tau' and the
+ * Darboux quantities on both sheets. */
+void ic_branch_finish(ic_branch *br, const ic_sheet sh[2], const ic_local_options *opt);
+
+/* Orientation map (DESIGN.md 2): reverses a branch (c^(k) -> (-1)^k c^(k)). */
+void ic_branch_reverse(ic_branch *br);
+
+#endif

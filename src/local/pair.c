@@ -1,0 +1,130 @@
+/* Pairs of surfaces, options, names, and the sheets at a point. */
+#include "local_internal.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+const char *ic_point_type_name(ic_point_type type)
+{
+    switch (type) {
+    case IC_POINT_TRANSVERSAL: return "transversal";
+    case IC_POINT_BRANCH: return "branch-point";
+    case IC_POINT_TANGENTIAL_CURVE: return "tangential-curve";
+    case IC_POINT_ISOLATED_CONTACT: return "isolated-contact";
+    case IC_POINT_CUSP: return "cusp";
+    case IC_POINT_TACNODE: return "tacnode";
+    case IC_POINT_HIGHER_ORDER_CONTACT: return "higher-order-contact";
+    case IC_POINT_TANGENTIAL: return "tangential";
+    }
+    return "unknown";
+}
+
+static const char *const METHOD_NAMES[] = {"auto", "jet", "closed-form", "perturbation"};
+
+const char *ic_method_name(ic_method method)
+{
+    return method >= IC_METHOD_AUTO && method <= IC_METHOD_PERTURBATION ? METHOD_NAMES[method]
+                                                                         : "unknown";
+}
+
+int ic_method_from_name(const char *name)
+{
+    for (int i = 0; i < 4; i++)
+        if (strcmp(name, METHOD_NAMES[i]) == 0)
+            return i;
+    return -1;
+}
+
+void ic_local_defaults(ic_local_options *opt)
+{
+    opt->point_tol = 1e-6;
+    opt->newton_tol = 1e-15;
+    opt->max_newton = 60;
+    opt->grid = 24;
+    opt->tangential_angle = 1e-6;
+    opt->distinct_params = 1e-6;
+    opt->kappa_zero = 1e-12;
+}
+
+ic_status ic_pair_new(ic_pair **out, ic_surface *A, ic_surface *B, ic_error *err)
+{
+    *out = NULL;
+    if (!A)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "a pair needs a surface A");
+    if (!B && ic_surface_get_kind(A) != IC_PARAMETRIC)
+        return ic_error_set(err, IC_ERR_INVALID, 0,
+                            "a self-intersection needs a parametric surface");
+    ic_pair *p = calloc(1, sizeof *p);
+    if (!p)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory creating a pair");
+    p->s[0] = A;
+    p->s[1] = B ? B : A;
+    p->self = B == NULL;
+    ic_status st = IC_OK;
+    for (int k = 0; k <= IC_LOCAL_MAX_ORDER && st == IC_OK; k++)
+        st = ic_jet_space_new(&p->curve[k], 1, k, err);
+    if (st == IC_OK)
+        st = ic_jet_space_new(&p->tensor[0], 2, 3, err);
+    if (st == IC_OK)
+        st = ic_jet_space_new(&p->tensor[1], 3, 3, err);
+    if (st != IC_OK) {
+        ic_pair_free(p);
+        return st;
+    }
+    *out = p;
+    return IC_OK;
+}
+
+void ic_pair_free(ic_pair *p)
+{
+    if (!p)
+        return;
+    for (int k = 0; k <= IC_LOCAL_MAX_ORDER; k++)
+        ic_jet_space_free(p->curve[k]);
+    ic_jet_space_free(p->tensor[0]);
+    ic_jet_space_free(p->tensor[1]);
+    free(p);
+}
+
+int ic_pair_is_self(const ic_pair *p) { return p->self; }
+ic_surface *ic_pair_surface(const ic_pair *p, int which) { return p->s[which ? 1 : 0]; }
+
+ic_status ic_sheet_at(ic_pair *pair, ic_sheet *sh, int which, const ic_local_point *pt,
+                      ic_error *err)
+{
+    memset(sh, 0, sizeof *sh);
+    sh->s = pair->s[which];
+    sh->parametric = ic_surface_get_kind(sh->s) == IC_PARAMETRIC;
+    if (sh->parametric) {
+        sh->at[0] = pt->params[which][0];
+        sh->at[1] = pt->params[which][1];
+    } else {
+        memcpy(sh->at, pt->xyz, sizeof pt->xyz);
+    }
+    ic_status st = ic_surface_geometry_at(sh->s, &sh->geo, sh->at, err);
+    if (st != IC_OK)
+        return st;
+    return ic_surface_taylor(sh->s, sh->taylor, sh->at, pair->tensor[sh->parametric ? 0 : 1],
+                             err);
+}
+
+static const double FACT[4] = {1, 1, 2, 6};
+
+void ic_sheet_partial(const ic_sheet *sh, int i, int j, double *out)
+{
+    static const int start[5] = {0, 1, 3, 6, 10};
+    const int idx = start[i + j] + j; /* degree i+j, v-exponent j */
+    for (int k = 0; k < 3; k++)
+        out[k] = sh->taylor[10 * k + idx] * FACT[i] * FACT[j];
+}
+
+double ic_sheet_fpartial(const ic_sheet *sh, int a, int b, int c)
+{
+    static const int start[5] = {0, 1, 4, 10, 20};
+    const int d = a + b + c;
+    int pos = 0;
+    for (int a2 = a + 1; a2 <= d; a2++)
+        pos += d - a2 + 1; /* monomials of degree d with a larger x-exponent */
+    pos += d - a - b;
+    return sh->taylor[start[d] + pos] * FACT[a] * FACT[b] * FACT[c];
+}

@@ -224,6 +224,15 @@ static void test_against_truth(const truth_case *cases, int ncases)
             check_truth(what, &res, &cases[c]);
             check_identities(what, &res);
             tested++;
+            /* the closed-form method (the pairing's paper) to order 3 */
+            char cwhat[200];
+            snprintf(cwhat, sizeof cwhat, "%s (closed-form)", what);
+            st = ic_local_apparatus(pair, &res, &pt, 3, IC_METHOD_CLOSED_FORM, &opt, &err);
+            CHECK(st == IC_OK, "%s: %s", cwhat, err.message);
+            if (st == IC_OK) {
+                check_truth(cwhat, &res, &cases[c]);
+                check_identities(cwhat, &res);
+            }
         }
         ic_pair_free(pair);
         ic_surface_free(A);
@@ -235,11 +244,153 @@ static void test_against_truth(const truth_case *cases, int ncases)
            tested, worst_low, worst_high, worst_identity);
 }
 
+/* Locating by parameters lands on the same point as by coordinates. */
+static void test_locate_params(void)
+{
+    const surface_def cyl = {{"1 + cos(v)", "sin(v)", "u"}, {0}, NULL};
+    const surface_def sph = {{"2*cos(u)*cos(v)", "2*sin(u)*cos(v)", "2*sin(v)"}, {0}, NULL};
+    ic_surface *A = make_surface(&cyl, NULL), *B = make_surface(&sph, NULL);
+    ic_pair *pair = NULL;
+    if (!A || !B || ic_pair_new(&pair, A, B, NULL) != IC_OK)
+        return;
+    ic_local_options opt;
+    ic_local_defaults(&opt);
+    /* theta = 0.7 on Viviani: cylinder (u, v) = (2 sin 0.35, 0.7); sphere
+     * (atan2(sin 0.7, 1 + cos 0.7), asin(sin 0.35)) */
+    const double th = 0.7;
+    const double params[4] = {2 * sin(th / 2), th, atan2(sin(th), 1 + cos(th)), th / 2};
+    ic_local_point pt;
+    ic_error err;
+    CHECK(ic_local_locate_params(pair, &pt, params, 4, &opt, &err) == IC_OK, "params: %s",
+          err.message);
+    const double want[3] = {1 + cos(th), sin(th), 2 * sin(th / 2)};
+    CHECK(vdist(pt.xyz, want) <= 1e-14, "located by parameters: %g", vdist(pt.xyz, want));
+    CHECK(ic_local_locate_params(pair, &pt, params, 2, &opt, &err) == IC_ERR_INVALID &&
+              strstr(err.message, "expected 4 parameters"),
+          "wrong parameter count: %s", err.message);
+    const double apart[4] = {0.1, 0.2, 1.0, 0.3};
+    CHECK(ic_local_locate_params(pair, &pt, apart, 4, &opt, &err) == IC_ERR_UNABLE &&
+              strstr(err.message, "apart"),
+          "parameters of two different points: %s", err.message);
+    ic_pair_free(pair);
+    ic_surface_free(A);
+    ic_surface_free(B);
+}
+
+static void test_errors(void)
+{
+    const surface_def cyl = {{0}, {0}, "(x - 1)^2 + y^2 - 1"};
+    const surface_def sph = {{"2*cos(u)*cos(v)", "2*sin(u)*cos(v)", "2*sin(v)"}, {0}, NULL};
+    ic_surface *A = make_surface(&cyl, NULL), *B = make_surface(&sph, NULL);
+    ic_pair *pair = NULL;
+    if (!A || !B || ic_pair_new(&pair, A, B, NULL) != IC_OK)
+        return;
+    ic_local_options opt;
+    ic_local_defaults(&opt);
+    ic_local_point pt;
+    ic_local_result res;
+    ic_error err;
+    /* off the surfaces: an error that says how far */
+    const double off[3] = {1.5, 0.8660254037844386, 1.2};
+    CHECK(ic_local_locate(pair, &pt, off, &opt, &err) == IC_ERR_UNABLE &&
+              strstr(err.message, "0.107 away from surface B"),
+          "off the surfaces: %s", err.message);
+    /* the sphere's pole is on Viviani's curve (theta = pi): singular sheet */
+    const double pole[3] = {0, 0, 2};
+    ic_status st = ic_local_locate(pair, &pt, pole, &opt, &err);
+    if (st == IC_OK)
+        st = ic_local_apparatus(pair, &res, &pt, 3, IC_METHOD_JET, &opt, &err);
+    CHECK(st == IC_ERR_DOMAIN && strstr(err.message, "singular"), "pole: %d %s", st, err.message);
+    /* the branch point (2, 0, 0) is tangential: a clear error for now */
+    const double branch[3] = {2, 0, 0};
+    CHECK(ic_local_locate(pair, &pt, branch, &opt, &err) == IC_OK, "branch point located");
+    st = ic_local_apparatus(pair, &res, &pt, 3, IC_METHOD_JET, &opt, &err);
+    CHECK(st == IC_ERR_UNABLE && res.type == IC_POINT_TANGENTIAL && strstr(err.message, "tangential"),
+          "branch point: %d %s", st, err.message);
+    /* orders out of range */
+    const double ok[3] = {1.5, 0.8660254037844386, 1.0};
+    CHECK(ic_local_locate(pair, &pt, ok, &opt, &err) == IC_OK, "located");
+    CHECK(ic_local_apparatus(pair, &res, &pt, IC_LOCAL_MAX_ORDER + 1, IC_METHOD_JET, &opt,
+                             &err) == IC_ERR_INVALID,
+          "order above the maximum");
+    CHECK(ic_local_apparatus(pair, &res, &pt, 4, IC_METHOD_CLOSED_FORM, &opt, &err) ==
+                  IC_ERR_INVALID && strstr(err.message, "up to order 3"),
+          "closed form above order 3: %s", err.message);
+    CHECK(ic_local_apparatus(pair, &res, &pt, 0, IC_METHOD_JET, &opt, &err) == IC_ERR_INVALID,
+          "order 0");
+    ic_pair_free(pair);
+    ic_surface_free(A);
+    ic_surface_free(B);
+    /* a point of the Enneper surface that is not on its double curve */
+    const surface_def enn = {{"u - u^3/3 + u*v^2", "-v - u^2*v + v^3/3", "u^2 - v^2"}, {0}, NULL};
+    A = make_surface(&enn, ENNEPER_DOMAIN);
+    if (A && ic_pair_new(&pair, A, NULL, NULL) == IC_OK) {
+        const double uv[2] = {0.3, 0.4};
+        double X[3];
+        CHECK(ic_surface_eval(A, X, uv, NULL) == IC_OK, "eval");
+        CHECK(ic_local_locate(pair, &pt, X, &opt, &err) == IC_ERR_UNABLE &&
+                  strstr(err.message, "no second preimage"),
+              "not a self-intersection: %s", err.message);
+        const double same[4] = {0.3, 0.4, 0.3, 0.4};
+        CHECK(ic_local_locate_params(pair, &pt, same, 4, &opt, &err) == IC_ERR_INVALID &&
+                  strstr(err.message, "same point"),
+              "one preimage twice: %s", err.message);
+    }
+    ic_pair_free(pair);
+    ic_surface_free(A);
+}
+
+/* Two planes meet in a line: kappa = 0 and n, b, tau undefined (seed 001
+ * corollary 3.1); an ellipse of seed 001 Ex 5.1 is planar (corollary 3.2). */
+static void test_line_and_plane_curve(void)
+{
+    const surface_def p1 = {{0}, {0}, "x + 2*y - z - 1"};
+    const surface_def p2 = {{"u", "v", "0.5 + 0.3*u"}, {0}, NULL};
+    ic_surface *A = make_surface(&p1, NULL), *B = make_surface(&p2, NULL);
+    ic_pair *pair = NULL;
+    if (!A || !B || ic_pair_new(&pair, A, B, NULL) != IC_OK)
+        return;
+    ic_local_options opt;
+    ic_local_defaults(&opt);
+    ic_local_point pt;
+    ic_local_result res;
+    ic_error err;
+    /* x + 2y - (0.5 + 0.3x) = 1 at x = 1: y = 0.4, z = 0.8 */
+    const double X[3] = {1.0, 0.4, 0.8};
+    CHECK(ic_local_locate(pair, &pt, X, &opt, &err) == IC_OK, "line: %s", err.message);
+    CHECK(ic_local_apparatus(pair, &res, &pt, 5, IC_METHOD_JET, &opt, &err) == IC_OK, "line");
+    const ic_branch *br = &res.branches[0];
+    CHECK(br->kappa <= 1e-15 && !br->frame_defined && !br->tau_defined, "kappa = 0: %g", br->kappa);
+    CHECK(ic_branch_is_line(br, 1e-12), "straight line");
+    for (int k = 1; k < 5; k++)
+        CHECK(vnorm(br->derivs[k]) <= 1e-15, "c^(%d) = 0 on a line", k + 1);
+    ic_pair_free(pair);
+    ic_surface_free(A);
+    ic_surface_free(B);
+    const surface_def e1 = {{0}, {0}, "x^2/0.36 + y^2/0.64 + z^2 - 1"};
+    const surface_def e2 = {{0}, {0}, "x^2/0.2025 + y^2/0.64 + z^2/1.5625 - 1"};
+    A = make_surface(&e1, NULL), B = make_surface(&e2, NULL);
+    if (!A || !B || ic_pair_new(&pair, A, B, NULL) != IC_OK)
+        return;
+    /* the paper's point (27/160, 2 sqrt3/5, 5 sqrt7/32) */
+    const double P[3] = {27.0 / 160, 2 * sqrt(3.0) / 5, 5 * sqrt(7.0) / 32};
+    CHECK(ic_local_locate(pair, &pt, P, &opt, &err) == IC_OK, "Ex 5.1: %s", err.message);
+    CHECK(ic_local_apparatus(pair, &res, &pt, 4, IC_METHOD_JET, &opt, &err) == IC_OK, "Ex 5.1");
+    CHECK(ic_branch_is_planar(&res.branches[0], 1e-12) && !ic_branch_is_line(&res.branches[0], 1e-12),
+          "Ex 5.1 is a plane curve: tau = %g", res.branches[0].tau);
+    ic_pair_free(pair);
+    ic_surface_free(A);
+    ic_surface_free(B);
+}
+
 int main(int argc, char **argv)
 {
     static truth_case cases[64];
     const int n = read_truth(argc > 1 ? argv[1] : "tests/truth/transversal_truth.txt", cases, 64);
     CHECK(n > 0, "truth file read: %d cases", n);
     test_against_truth(cases, n);
+    test_locate_params();
+    test_errors();
+    test_line_and_plane_curve();
     return harness_finish("test_local");
 }

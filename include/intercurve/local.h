@@ -144,6 +144,7 @@ typedef struct {
     /** derivatives of the parameter curves on each parametric sheet:
      *  param_derivs[s][k-1] = (u^(k), v^(k)) */
     double param_derivs[2][IC_LOCAL_MAX_ORDER][2];
+    int param_order;            /**< orders of param_derivs filled (closed forms: 2) */
     ic_darboux surface[2];
 } ic_branch;
 

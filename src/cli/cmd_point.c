@@ -63,7 +63,7 @@ static cJSON *branch_json(const ic_branch *br, const ic_pair *pair)
         }
         if (ic_surface_get_kind(ic_pair_surface(pair, s)) == IC_PARAMETRIC) {
             cJSON *pd = cJSON_CreateArray();
-            for (int k = 0; k < br->order; k++)
+            for (int k = 0; k < br->param_order && k < br->order; k++)
                 cJSON_AddItemToArray(pd, ic_json_vector(br->param_derivs[s][k], 2));
             cJSON_AddItemToObject(so, "parameter_derivatives", pd);
         }

@@ -26,18 +26,10 @@ ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res, const ic_local
                             "the perturbation method is for tangential points and is not "
                             "available yet; use jet or closed-form");
     ic_sheet sh[2];
-    static const char *const NAMES[2] = {"A", "B"};
     for (int s = 0; s < 2; s++) {
         ic_status st = ic_sheet_at(pair, &sh[s], s, pt, err);
-        if (st != IC_OK) {
-            if (st == IC_ERR_DOMAIN && err) {
-                char msg[IC_ERROR_MESSAGE_LEN];
-                memcpy(msg, err->message, sizeof msg);
-                ic_error_set(err, st, 0, "surface %s is singular at the point: %.200s",
-                             NAMES[s], msg);
-            }
-            return st;
-        }
+        if (st != IC_OK)
+            return ic_sheet_singular(err, st, s);
         memcpy(res->normals[s], sh[s].geo.normal, sizeof sh[s].geo.normal);
     }
     double cr[3];

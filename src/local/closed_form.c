@@ -1,8 +1,46 @@
-/* The closed-form method: dispatch to the papers' formulas by pairing. */
+/* The closed-form method: the papers' formulas, dispatched by pairing
+ * (docs/local.md): seed 000 for parametric/parametric and
+ * self-intersections, seed 001 for implicit/implicit, seeds 002 and 003
+ * (which work for any mix) for parametric/implicit. */
 #include "local_internal.h"
+#include "common/vec3.h"
+
+void ic_solve_frame(double *x, const double *t, const double *NA, const double *NB,
+                    const double *r)
+{
+    double ab[3], bt[3], ta[3];
+    ic_cross3(ab, NA, NB);
+    ic_cross3(bt, NB, t);
+    ic_cross3(ta, t, NA);
+    const double det = ic_dot3(t, ab);
+    for (int c = 0; c < 3; c++)
+        x[c] = (r[0] * ab[c] + r[1] * bt[c] + r[2] * ta[c]) / det;
+}
+
+void ic_orient_closed(ic_branch *br, const double *NA, const double *NB)
+{
+    double w[3];
+    ic_cross3(w, NA, NB);
+    if (ic_dot3(w, br->derivs[0]) >= 0.0)
+        return;
+    ic_scale3(br->derivs[0], br->derivs[0], -1.0);
+    ic_scale3(br->derivs[2], br->derivs[2], -1.0);
+    for (int s = 0; s < 2; s++)
+        for (int v = 0; v < 2; v++) {
+            br->param_derivs[s][0][v] = -br->param_derivs[s][0][v];
+            br->param_derivs[s][2][v] = -br->param_derivs[s][2][v];
+        }
+}
 
 ic_status ic_closed_form_method(ic_branch *br, const ic_sheet sh[2], int order, ic_error *err)
 {
-    (void)br, (void)sh, (void)order;
-    return ic_error_set(err, IC_ERR_INVALID, 0, "the closed-form method is not built yet");
+    ic_status st;
+    if (sh[0].parametric && sh[1].parametric)
+        st = ic_closed_seed000(br, sh, NULL, err);
+    else if (!sh[0].parametric && !sh[1].parametric)
+        st = ic_closed_seed001(br, sh, NULL, err);
+    else
+        st = ic_closed_seed003(br, sh, NULL, err);
+    br->order = order; /* the closed forms give 3 orders; keep what was asked */
+    return st;
 }

@@ -12,8 +12,7 @@
  *                   curve's alpha_k solves R_u alpha_k^u + R_v alpha_k^v
  *                   = a_k - [R(alpha(s))]_k.
  * The matrix M = [t; N_A; N_B] is the same at every order; its inverse is
- * written with cross products: M^-1 r = (r_0 N_A x N_B + r_1 N_B x t
- * + r_2 t x N_A) / det M.
+ * written with cross products (ic_solve_frame).
  */
 #include "local_internal.h"
 #include "common/vec3.h"
@@ -69,13 +68,9 @@ ic_status ic_jet_method(ic_pair *pair, ic_branch *br, const ic_sheet sh[2], int 
     curve_jet cj;
     memset(&cj, 0, sizeof cj);
     const double *NA = sh[0].geo.normal, *NB = sh[1].geo.normal;
-    double t[3], c_ab[3], c_bt[3], c_ta[3];
+    double t[3];
     ic_cross3(t, NA, NB);
     ic_normalize3(t);
-    ic_cross3(c_ab, NA, NB);
-    ic_cross3(c_bt, NB, t);
-    ic_cross3(c_ta, t, NA);
-    const double det = ic_dot3(t, c_ab);
     /* order 0 and 1 */
     const ic_sheet *first = sh[0].parametric ? &sh[0] : &sh[1];
     for (int c = 0; c < 3; c++)
@@ -96,8 +91,7 @@ ic_status ic_jet_method(ic_pair *pair, ic_branch *br, const ic_sheet sh[2], int 
             if (st != IC_OK)
                 return st;
         }
-        for (int c = 0; c < 3; c++)
-            cj.a[k][c] = (r[0] * c_ab[c] + r[1] * c_bt[c] + r[2] * c_ta[c]) / det;
+        ic_solve_frame(cj.a[k], t, NA, NB, r);
         for (int s = 0; s < 2; s++)
             if (sh[s].parametric) {
                 double w[3];
@@ -108,6 +102,7 @@ ic_status ic_jet_method(ic_pair *pair, ic_branch *br, const ic_sheet sh[2], int 
     /* c^(k) = k! a_k */
     double fact = 1.0;
     br->order = order;
+    br->param_order = order;
     for (int k = 1; k <= order; k++) {
         fact *= k;
         ic_scale3(br->derivs[k - 1], cj.a[k], fact);

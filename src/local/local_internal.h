@@ -29,6 +29,10 @@ typedef struct {
 ic_status ic_sheet_at(ic_pair *pair, ic_sheet *sh, int which, const ic_local_point *pt,
                       ic_error *err);
 
+/* Rewrites a domain error of sheet `which` as "surface A/B is singular at
+ * the point: ..."; returns st. */
+ic_status ic_sheet_singular(ic_error *err, ic_status st, int which);
+
 /* Partial derivative of a parametric sheet: d^(i+j) R / du^i dv^j (i+j <= 3). */
 void ic_sheet_partial(const ic_sheet *sh, int i, int j, double *out);
 /* Partial derivative of an implicit sheet: d^alpha f for alpha in N^3, |alpha| <= 3. */
@@ -39,6 +43,27 @@ double ic_sheet_fpartial(const ic_sheet *sh, int ax, int ay, int az);
 ic_status ic_jet_method(ic_pair *pair, ic_branch *br, const ic_sheet sh[2], int order,
                         ic_error *err);
 ic_status ic_closed_form_method(ic_branch *br, const ic_sheet sh[2], int order, ic_error *err);
+
+/* The closed forms, one per paper (src/local/closed_*.c). Each fills
+ * c', c'', c''' (br->derivs[0..2], br->order = 3) oriented by
+ * t = N_A x N_B, and, where the paper gives them separately, its own
+ * curvature and torsion formulas in `paper` (NULL allowed). */
+typedef struct {
+    double kappa, tau;
+} ic_paper_values;
+ic_status ic_closed_seed000(ic_branch *br, const ic_sheet sh[2], ic_paper_values *paper,
+                            ic_error *err);
+ic_status ic_closed_seed001(ic_branch *br, const ic_sheet sh[2], ic_paper_values *paper,
+                            ic_error *err);
+ic_status ic_closed_seed003(ic_branch *br, const ic_sheet sh[2], ic_paper_values *paper,
+                            ic_error *err);
+
+/* x with t . x = r[0], N_A . x = r[1], N_B . x = r[2] (unit t normal to
+ * both): x = (r0 N_A x N_B + r1 N_B x t + r2 t x N_A) / det[t; N_A; N_B]. */
+void ic_solve_frame(double *x, const double *t, const double *NA, const double *NB,
+                    const double *r);
+/* Flips c', c'', c''' to the orientation t = N_A x N_B if needed. */
+void ic_orient_closed(ic_branch *br, const double *NA, const double *NB);
 
 /* From c^(1..K) in br->derivs: t, n, b, kappa, tau, kappa', tau' and the
  * Darboux quantities on both sheets. */

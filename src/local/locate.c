@@ -420,7 +420,7 @@ static ic_status sheet_normal(ic_pair *pair, const ic_local_point *pt, int which
     ic_surface_geometry g;
     ic_status st = ic_surface_geometry_at(s, &g, par ? pt->params[which] : pt->xyz, err);
     if (st != IC_OK)
-        return st;
+        return ic_sheet_singular(err, st, which);
     memcpy(N, g.normal, sizeof g.normal);
     return IC_OK;
 }

@@ -108,6 +108,16 @@ ic_status ic_sheet_at(ic_pair *pair, ic_sheet *sh, int which, const ic_local_poi
                              err);
 }
 
+ic_status ic_sheet_singular(ic_error *err, ic_status st, int which)
+{
+    if (st == IC_ERR_DOMAIN && err) {
+        char msg[IC_ERROR_MESSAGE_LEN];
+        memcpy(msg, err->message, sizeof msg);
+        ic_error_set(err, st, 0, "surface %c is singular at the point: %.200s", 'A' + which, msg);
+    }
+    return st;
+}
+
 static const double FACT[4] = {1, 1, 2, 6};
 
 void ic_sheet_partial(const ic_sheet *sh, int i, int j, double *out)

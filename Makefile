@@ -39,9 +39,11 @@ sanitize:
 
 demo: all
 	./$(BUILD)/intercurve eval examples/viviani.json --surface sphere --at 0.3,0.4 --order 3
+	./$(BUILD)/intercurve point examples/viviani.json --at 1.5,0.8660254037844386,1 --order 4 --format text
 
 bench: all
 	./$(BUILD)/bench/bench_surface
+	./$(BUILD)/bench/bench_local
 
 install: all
 	cmake --install $(BUILD) --prefix $(PREFIX)

@@ -65,6 +65,37 @@ expect_error 1 "eval $src/examples/viviani.json" "needs PROBLEM.json and --at"
 expect_error 1 "frobnicate" "unknown command"
 expect_error 2 "eval $src/examples/viviani-implicit.json --surface sphere --at 0,0,1e300" "surfaces[1] (\"sphere\")" "column 14" "overflows"
 
+# intercurve point
+"$bin" point "$src/examples/viviani.json" --at 1.5,0.8660254037844386,1 --order 3 >"$out" 2>"$errf"
+check "point on Viviani exits 0 ($(cat "$errf"))" $?
+grep -q '"type":.*"transversal"' "$out"
+check "point: type transversal" $?
+grep -q '"kappa":.*0.58154313668469' "$out"
+check "point: Viviani curvature sqrt(14.5)/3.5^1.5" $?
+grep -q '"derivatives":' "$out" && grep -q '"kappa_g":' "$out" && grep -q '"parameter_derivatives":' "$out"
+check "point: derivatives, Darboux quantities and parameter derivatives" $?
+"$bin" point "$src/examples/viviani.json" --at 1.5,0.8660254037844386,1 --order 3 --method closed-form >"$out" 2>"$errf"
+check "point --method closed-form exits 0" $?
+grep -q '"method":.*"closed-form"' "$out"
+check "point: closed-form named in the output" $?
+"$bin" point "$src/examples/enneper-self.json" --params 'sqrt(2),3,sqrt(2),-3' --order 3 --format text >"$out" 2>"$errf"
+check "point: Enneper self-intersection by parameters ($(cat "$errf"))" $?
+grep -q 'tau          0$' "$out"
+check "point: the Enneper double curve is planar (tau 0)" $?
+"$bin" point "$src/examples/seed001-ex54.json" --at 'sqrt(11/2),sqrt(5/2),-2' --format text >"$out" 2>"$errf"
+grep -q 'tau          -0.51528286240' "$out"
+check "point: seed 001 Ex 5.4 torsion -27395 sqrt(55)/394282" $?
+expect_error 2 "point $src/examples/viviani.json --at 2,0,0" "tangential point"
+expect_error 2 "point $src/examples/viviani.json --at 1.5,0.8660254037844386,1.2" "0.107 away from surface B" "tolerance 1e-06"
+expect_error 1 "point $src/examples/ellipsoids.json --params 1,2" "both surfaces are implicit"
+expect_error 1 "point $src/examples/viviani.json --at 1.5,0.8660254037844386,1 --method closed-form --order 4" "up to order 3"
+expect_error 1 "point $src/examples/viviani.json --at 1,2,3 --method guess" "--method expects"
+expect_error 1 "point $src/examples/viviani.json --at 1,2" "--at needs three coordinates"
+expect_error 1 "point $src/examples/viviani.json --at 1,2,3 --params 1,2,3,4" "one of --at or --params"
+expect_error 1 "point $src/examples/viviani.json --at 1,2,3 --order 17" "--order expects a whole number from 1 to 16"
+"$bin" point --help | grep -q "example:"
+check "point --help has an example" $?
+
 # a degenerate point: printed with nulls and the reason
 "$bin" eval "$src/examples/viviani.json" --surface sphere --at 0.3,pi/2 >"$out" 2>"$errf"
 check "sphere pole exits 0" $?

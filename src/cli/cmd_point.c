@@ -103,7 +103,7 @@ static cJSON *result_json(const ic_local_result *res, const ic_pair *pair, int o
 static void print_vec(const char *name, const double *v, int defined)
 {
     if (defined)
-        printf("  %-12s (% .15g, % .15g, % .15g)\n", name, v[0], v[1], v[2]);
+        printf("  %-12s (% .15g, % .15g, % .15g)\n", name, v[0] + 0.0, v[1] + 0.0, v[2] + 0.0);
     else
         printf("  %-12s undefined\n", name);
 }
@@ -123,7 +123,7 @@ static void print_text(const ic_local_result *res, int order)
         if (order >= 2)
             printf("  %-12s %.15g\n", "kappa", br->kappa);
         if (br->tau_defined)
-            printf("  %-12s %.15g\n", "tau", br->tau);
+            printf("  %-12s %.15g\n", "tau", br->tau + 0.0);
         if (br->kappa_prime_defined)
             printf("  %-12s %.15g\n", "kappa'", br->kappa_prime);
         if (br->tau_prime_defined)

@@ -6,7 +6,7 @@
 
 cJSON *ic_json_number_or_null(double x)
 {
-    return isfinite(x) ? cJSON_CreateNumber(x) : cJSON_CreateNull();
+    return isfinite(x) ? cJSON_CreateNumber(x + 0.0) : cJSON_CreateNull(); /* -0 -> 0 */
 }
 
 cJSON *ic_json_vector(const double *v, int n)

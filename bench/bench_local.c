@@ -1,0 +1,161 @@
+/* Benchmarks of the local apparatus at a transversal point (make bench):
+ * ns per point for each pairing at K = 3 and K = 8, jet and closed-form
+ * methods, beside the cost of the two surfaces' own order-K derivative
+ * tensors at the same point. The point is located once beforehand. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+
+#include "intercurve.h"
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+typedef struct {
+    ic_pair *pair;
+    ic_local_point pt;
+    int order;
+    ic_method method;
+    ic_local_options opt;
+    ic_jet_space *sp[2];
+} job;
+
+static int run_apparatus(job *j)
+{
+    ic_local_result res;
+    return ic_local_apparatus(j->pair, &res, &j->pt, j->order, j->method, &j->opt, NULL);
+}
+
+static int run_surfaces(job *j)
+{
+    double out[3 * 220];
+    for (int s = 0; s < 2; s++) {
+        ic_surface *srf = ic_pair_surface(j->pair, s);
+        const int par = ic_surface_get_kind(srf) == IC_PARAMETRIC;
+        if (ic_surface_taylor(srf, out, par ? j->pt.params[s] : j->pt.xyz, j->sp[!par], NULL))
+            return 1;
+    }
+    return 0;
+}
+
+static double ns_per_call(int (*fn)(job *), job *j)
+{
+    double best = 1e30;
+    long reps = 16;
+    for (int batch = 0; batch < 5; batch++) {
+        double t0, t1;
+        for (;;) {
+            t0 = now();
+            for (long r = 0; r < reps; r++)
+                if (fn(j) != IC_OK)
+                    return NAN;
+            t1 = now();
+            if (t1 - t0 > 0.02)
+                break;
+            reps *= 4;
+        }
+        const double ns = (t1 - t0) * 1e9 / reps;
+        if (ns < best)
+            best = ns;
+    }
+    return best;
+}
+
+typedef struct {
+    const char *name;
+    ic_surface *A, *B; /* B NULL: self-intersection */
+    double at[3];
+} bench_case;
+
+int main(void)
+{
+    ic_primitive cyl = {.kind = IC_PRIM_CYLINDER, .center = {1, 0, 0}, .radius = 1};
+    ic_primitive sph = {.kind = IC_PRIM_SPHERE, .radius = 2};
+    ic_primitive torus = {.kind = IC_PRIM_TORUS, .major_radius = 2, .radius = 0.5};
+    ic_primitive ell1 = {.kind = IC_PRIM_ELLIPSOID, .axes = {0.6, 0.8, 1}};
+    ic_primitive ell2 = {.kind = IC_PRIM_ELLIPSOID, .axes = {0.45, 0.8, 1.25}};
+    ic_primitive plane = {.kind = IC_PRIM_PLANE, .center = {0, 0, 0.3}, .normal = {0.2, 0, 1}};
+    const char *enneper[3] = {"u - u^3/3 + u*v^2", "-v - u^2*v + v^3/3", "u^2 - v^2"};
+    const double th = 0.7;
+    bench_case cases[8];
+    int n = 0;
+    ic_surface *s[12] = {NULL};
+    int ns = 0;
+#define PRIM(p, form) (ic_surface_new_primitive(&s[ns], &(p), (form), NULL) == IC_OK ? s[ns++] : NULL)
+    cases[n++] = (bench_case){"Viviani param/param (primitives)", PRIM(cyl, IC_PARAMETRIC),
+                              PRIM(sph, IC_PARAMETRIC),
+                              {1 + cos(th), sin(th), 2 * sin(th / 2)}};
+    cases[n++] = (bench_case){"Viviani param/implicit", PRIM(cyl, IC_PARAMETRIC),
+                              PRIM(sph, IC_IMPLICIT), {1 + cos(th), sin(th), 2 * sin(th / 2)}};
+    cases[n++] = (bench_case){"Viviani implicit/implicit", PRIM(cyl, IC_IMPLICIT),
+                              PRIM(sph, IC_IMPLICIT), {1 + cos(th), sin(th), 2 * sin(th / 2)}};
+    cases[n++] = (bench_case){"ellipsoids implicit/implicit", PRIM(ell1, IC_IMPLICIT),
+                              PRIM(ell2, IC_IMPLICIT),
+                              {27.0 / 160, 2 * sqrt(3.0) / 5, 5 * sqrt(7.0) / 32}};
+    /* torus and plane z = 0.3 - 0.2 x: a point on both */
+    cases[n++] = (bench_case){"torus/plane param/implicit", PRIM(torus, IC_PARAMETRIC),
+                              PRIM(plane, IC_IMPLICIT), {0, 0, 0}};
+    ic_surface *enn = NULL;
+    if (ic_surface_new_parametric(&enn, enneper, NULL, NULL, 0, NULL, NULL) == IC_OK)
+        s[ns++] = enn;
+    const double dom[2][2] = {{-5, 5}, {-5, 5}};
+    if (!enn || ic_surface_set_domain(enn, dom, NULL, NULL) != IC_OK)
+        return 1;
+    cases[n++] = (bench_case){"Enneper self-intersection", enn, NULL,
+                              {28 * sqrt(2.0) / 3, 0, -7}};
+    /* the torus/plane point: on the torus' circle v = 0.5, where the plane
+     * cuts it (solve 0.2 x + z = 0.3 along u by bisection) */
+    {
+        double lo = 0.0, hi = 3.14159;
+        for (int it = 0; it < 200; it++) {
+            const double u = 0.5 * (lo + hi), w = 2 + 0.5 * cos(0.5);
+            const double g = 0.2 * w * cos(u) + 0.5 * sin(0.5) - 0.3;
+            if (g > 0)
+                lo = u;
+            else
+                hi = u;
+        }
+        const double u = 0.5 * (lo + hi), w = 2 + 0.5 * cos(0.5);
+        cases[4].at[0] = w * cos(u), cases[4].at[1] = w * sin(u), cases[4].at[2] = 0.5 * sin(0.5);
+    }
+    printf("%-36s %9s %9s %9s %9s %9s %9s\n", "pairing (ns per point)", "jet K=3", "closed 3",
+           "surf K=3", "jet K=8", "surf K=8", "jet/surf8");
+    for (int i = 0; i < n; i++) {
+        job j;
+        memset(&j, 0, sizeof j);
+        ic_local_defaults(&j.opt);
+        ic_error err;
+        if (ic_pair_new(&j.pair, cases[i].A, cases[i].B, &err) != IC_OK ||
+            ic_local_locate(j.pair, &j.pt, cases[i].at, &j.opt, &err) != IC_OK) {
+            fprintf(stderr, "%s: %s\n", cases[i].name, err.message);
+            return 1;
+        }
+        double r[6];
+        for (int k = 0; k < 2; k++) {
+            const int K = k ? 8 : 3;
+            if (ic_jet_space_new(&j.sp[0], 2, K, NULL) || ic_jet_space_new(&j.sp[1], 3, K, NULL))
+                return 1;
+            j.order = K;
+            j.method = IC_METHOD_JET;
+            r[k ? 3 : 0] = ns_per_call(run_apparatus, &j);
+            if (!k) {
+                j.method = IC_METHOD_CLOSED_FORM;
+                r[1] = ns_per_call(run_apparatus, &j);
+            }
+            r[k ? 4 : 2] = ns_per_call(run_surfaces, &j);
+            ic_jet_space_free(j.sp[0]);
+            ic_jet_space_free(j.sp[1]);
+        }
+        printf("%-36s %9.0f %9.0f %9.0f %9.0f %9.0f %9.1f\n", cases[i].name, r[0], r[1], r[2],
+               r[3], r[4], r[3] / r[4]);
+        ic_pair_free(j.pair);
+    }
+    for (int i = 0; i < ns; i++)
+        ic_surface_free(s[i]);
+    return 0;
+}

@@ -5,16 +5,9 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include <time.h>
 
+#include "bench_timer.h"
 #include "intercurve.h"
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
 
 typedef struct {
     ic_pair *pair;
@@ -25,14 +18,16 @@ typedef struct {
     ic_jet_space *sp[2];
 } job;
 
-static int run_apparatus(job *j)
+static int run_apparatus(void *ctx)
 {
+    job *j = ctx;
     ic_local_result res;
     return ic_local_apparatus(j->pair, &res, &j->pt, j->order, j->method, &j->opt, NULL);
 }
 
-static int run_surfaces(job *j)
+static int run_surfaces(void *ctx)
 {
+    job *j = ctx;
     double out[3 * 220];
     for (int s = 0; s < 2; s++) {
         ic_surface *srf = ic_pair_surface(j->pair, s);
@@ -41,29 +36,6 @@ static int run_surfaces(job *j)
             return 1;
     }
     return 0;
-}
-
-static double ns_per_call(int (*fn)(job *), job *j)
-{
-    double best = 1e30;
-    long reps = 16;
-    for (int batch = 0; batch < 5; batch++) {
-        double t0, t1;
-        for (;;) {
-            t0 = now();
-            for (long r = 0; r < reps; r++)
-                if (fn(j) != IC_OK)
-                    return NAN;
-            t1 = now();
-            if (t1 - t0 > 0.02)
-                break;
-            reps *= 4;
-        }
-        const double ns = (t1 - t0) * 1e9 / reps;
-        if (ns < best)
-            best = ns;
-    }
-    return best;
 }
 
 typedef struct {
@@ -142,12 +114,12 @@ int main(void)
                 return 1;
             j.order = K;
             j.method = IC_METHOD_JET;
-            r[k ? 3 : 0] = ns_per_call(run_apparatus, &j);
+            r[k ? 3 : 0] = bench_ns_per_call(run_apparatus, &j);
             if (!k) {
                 j.method = IC_METHOD_CLOSED_FORM;
-                r[1] = ns_per_call(run_apparatus, &j);
+                r[1] = bench_ns_per_call(run_apparatus, &j);
             }
-            r[k ? 4 : 2] = ns_per_call(run_surfaces, &j);
+            r[k ? 4 : 2] = bench_ns_per_call(run_surfaces, &j);
             ic_jet_space_free(j.sp[0]);
             ic_jet_space_free(j.sp[1]);
         }

@@ -1,20 +1,13 @@
 /* Benchmarks of surface evaluation (make bench): ns per point evaluation,
  * per order-2 and order-4 derivative tensor, and per composition with a
  * univariate jet (a curve on the surface) at K = 4, 8, 16. Each figure is
- * the best of 5 batches of about 0.1 s. */
+ * the best of 5 batches (bench_timer.h). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
+#include "bench_timer.h"
 #include "intercurve.h"
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
 
 typedef struct {
     ic_surface *s;
@@ -24,38 +17,22 @@ typedef struct {
     const double *const *in;
 } job;
 
-typedef int (*job_fn)(job *j);
-
-static int run_eval(job *j) { return ic_surface_eval(j->s, j->out, j->at, NULL); }
-static int run_taylor(job *j) { return ic_surface_taylor(j->s, j->out, j->at, j->sp, NULL); }
-static int run_compose(job *j) { return ic_surface_compose(j->s, j->out, j->in, j->sp, NULL); }
-
-static volatile double sink;
-
-static double ns_per_call(job_fn fn, job *j)
+static int run_eval(void *ctx)
 {
-    double best = 1e30;
-    long reps = 64;
-    for (int batch = 0; batch < 5; batch++) {
-        double t0, t1;
-        for (;;) {
-            t0 = now();
-            for (long r = 0; r < reps; r++) {
-                j->at[0] += 1e-12; /* defeat caching of identical inputs */
-                if (fn(j) != IC_OK)
-                    return -1.0;
-            }
-            t1 = now();
-            if (t1 - t0 > 0.02)
-                break;
-            reps *= 4;
-        }
-        sink += j->out[0];
-        const double ns = (t1 - t0) * 1e9 / reps;
-        if (ns < best)
-            best = ns;
-    }
-    return best;
+    job *j = ctx;
+    j->at[0] += 1e-12; /* defeat caching of identical inputs */
+    return ic_surface_eval(j->s, j->out, j->at, NULL);
+}
+static int run_taylor(void *ctx)
+{
+    job *j = ctx;
+    j->at[0] += 1e-12;
+    return ic_surface_taylor(j->s, j->out, j->at, j->sp, NULL);
+}
+static int run_compose(void *ctx)
+{
+    job *j = ctx;
+    return ic_surface_compose(j->s, j->out, j->in, j->sp, NULL);
 }
 
 typedef struct {
@@ -111,11 +88,11 @@ int main(void)
         job j = {.s = cases[i].s, .out = out};
         double r[6];
         memcpy(j.at, cases[i].at, sizeof j.at);
-        r[0] = ns_per_call(run_eval, &j);
+        r[0] = bench_ns_per_call(run_eval, &j);
         j.sp = d2[imp];
-        r[1] = ns_per_call(run_taylor, &j);
+        r[1] = bench_ns_per_call(run_taylor, &j);
         j.sp = d4[imp];
-        r[2] = ns_per_call(run_taylor, &j);
+        r[2] = bench_ns_per_call(run_taylor, &j);
         for (int k = 0; k < 3; k++) {
             /* a curve through the point: at + s (0.6, -0.8, 0.3) + s^2 (0.1, 0.2, -0.1) */
             const double dir[3] = {0.6, -0.8, 0.3}, acc[3] = {0.1, 0.2, -0.1};
@@ -128,7 +105,7 @@ int main(void)
             const double *in[3] = {curve[0], curve[1], curve[2]};
             j.in = in;
             j.sp = c[k];
-            r[3 + k] = ns_per_call(run_compose, &j);
+            r[3 + k] = bench_ns_per_call(run_compose, &j);
         }
         printf("%-32s %10.0f %10.0f %10.0f %10.0f %10.0f %10.0f\n", cases[i].name, r[0], r[1],
                r[2], r[3], r[4], r[5]);

@@ -66,6 +66,28 @@ static ic_surface *make_surface(const surface_def *d, const double (*domain)[2])
     return s;
 }
 
+/* A pair of test surfaces (B absent for a self-intersection). */
+typedef struct {
+    ic_surface *A, *B;
+    ic_pair *pair;
+} test_pair;
+
+static int open_pair(test_pair *tp, const surface_def *a, const surface_def *b,
+                     const double (*domain)[2])
+{
+    tp->A = make_surface(a, domain);
+    tp->B = b ? make_surface(b, NULL) : NULL;
+    tp->pair = NULL;
+    return tp->A && (!b || tp->B) && ic_pair_new(&tp->pair, tp->A, tp->B, NULL) == IC_OK;
+}
+
+static void close_pair(test_pair *tp)
+{
+    ic_pair_free(tp->pair);
+    ic_surface_free(tp->A);
+    ic_surface_free(tp->B);
+}
+
 static double vdist(const double *a, const double *b)
 {
     return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
@@ -197,13 +219,13 @@ static void test_against_truth(const truth_case *cases, int ncases)
     int tested = 0;
     for (size_t pi = 0; pi < sizeof PAIRINGS / sizeof PAIRINGS[0]; pi++) {
         const pairing *pr = &PAIRINGS[pi];
-        ic_surface *A = make_surface(&pr->A, pr->domain);
-        ic_surface *B = pr->self ? NULL : make_surface(&pr->B, NULL);
-        ic_pair *pair = NULL;
-        if (!A || (!pr->self && !B) || ic_pair_new(&pair, A, B, NULL) != IC_OK) {
+        test_pair tp;
+        if (!open_pair(&tp, &pr->A, pr->self ? NULL : &pr->B, pr->domain)) {
             CHECK(0, "%s: setup", pr->label);
+            close_pair(&tp);
             continue;
         }
+        ic_pair *pair = tp.pair;
         for (int c = 0; c < ncases; c++) {
             if (strcmp(cases[c].name, pr->truth) != 0)
                 continue;
@@ -234,9 +256,7 @@ static void test_against_truth(const truth_case *cases, int ncases)
                 check_identities(cwhat, &res);
             }
         }
-        ic_pair_free(pair);
-        ic_surface_free(A);
-        ic_surface_free(B);
+        close_pair(&tp);
     }
     CHECK(tested >= 30, "points tested against truth: %d", tested);
     printf("truth: %d points; worst relative error c^(1..4) %.2g, c^(5..8) %.2g; frame "
@@ -249,10 +269,12 @@ static void test_locate_params(void)
 {
     const surface_def cyl = {{"1 + cos(v)", "sin(v)", "u"}, {0}, NULL};
     const surface_def sph = {{"2*cos(u)*cos(v)", "2*sin(u)*cos(v)", "2*sin(v)"}, {0}, NULL};
-    ic_surface *A = make_surface(&cyl, NULL), *B = make_surface(&sph, NULL);
-    ic_pair *pair = NULL;
-    if (!A || !B || ic_pair_new(&pair, A, B, NULL) != IC_OK)
+    test_pair tp;
+    if (!open_pair(&tp, &cyl, &sph, NULL)) {
+        close_pair(&tp);
         return;
+    }
+    ic_pair *pair = tp.pair;
     ic_local_options opt;
     ic_local_defaults(&opt);
     /* theta = 0.7 on Viviani: cylinder (u, v) = (2 sin 0.35, 0.7); sphere
@@ -272,19 +294,19 @@ static void test_locate_params(void)
     CHECK(ic_local_locate_params(pair, &pt, apart, 4, &opt, &err) == IC_ERR_UNABLE &&
               strstr(err.message, "apart"),
           "parameters of two different points: %s", err.message);
-    ic_pair_free(pair);
-    ic_surface_free(A);
-    ic_surface_free(B);
+    close_pair(&tp);
 }
 
 static void test_errors(void)
 {
     const surface_def cyl = {{0}, {0}, "(x - 1)^2 + y^2 - 1"};
     const surface_def sph = {{"2*cos(u)*cos(v)", "2*sin(u)*cos(v)", "2*sin(v)"}, {0}, NULL};
-    ic_surface *A = make_surface(&cyl, NULL), *B = make_surface(&sph, NULL);
-    ic_pair *pair = NULL;
-    if (!A || !B || ic_pair_new(&pair, A, B, NULL) != IC_OK)
+    test_pair tp;
+    if (!open_pair(&tp, &cyl, &sph, NULL)) {
+        close_pair(&tp);
         return;
+    }
+    ic_pair *pair = tp.pair;
     ic_local_options opt;
     ic_local_defaults(&opt);
     ic_local_point pt;
@@ -318,13 +340,12 @@ static void test_errors(void)
           "closed form above order 3: %s", err.message);
     CHECK(ic_local_apparatus(pair, &res, &pt, 0, IC_METHOD_JET, &opt, &err) == IC_ERR_INVALID,
           "order 0");
-    ic_pair_free(pair);
-    ic_surface_free(A);
-    ic_surface_free(B);
+    close_pair(&tp);
     /* a point of the Enneper surface that is not on its double curve */
     const surface_def enn = {{"u - u^3/3 + u*v^2", "-v - u^2*v + v^3/3", "u^2 - v^2"}, {0}, NULL};
-    A = make_surface(&enn, ENNEPER_DOMAIN);
-    if (A && ic_pair_new(&pair, A, NULL, NULL) == IC_OK) {
+    if (open_pair(&tp, &enn, NULL, ENNEPER_DOMAIN)) {
+        pair = tp.pair;
+        ic_surface *A = tp.A;
         const double uv[2] = {0.3, 0.4};
         double X[3];
         CHECK(ic_surface_eval(A, X, uv, NULL) == IC_OK, "eval");
@@ -336,8 +357,7 @@ static void test_errors(void)
                   strstr(err.message, "same point"),
               "one preimage twice: %s", err.message);
     }
-    ic_pair_free(pair);
-    ic_surface_free(A);
+    close_pair(&tp);
 }
 
 /* Two planes meet in a line: kappa = 0 and n, b, tau undefined (seed 001
@@ -346,10 +366,12 @@ static void test_line_and_plane_curve(void)
 {
     const surface_def p1 = {{0}, {0}, "x + 2*y - z - 1"};
     const surface_def p2 = {{"u", "v", "0.5 + 0.3*u"}, {0}, NULL};
-    ic_surface *A = make_surface(&p1, NULL), *B = make_surface(&p2, NULL);
-    ic_pair *pair = NULL;
-    if (!A || !B || ic_pair_new(&pair, A, B, NULL) != IC_OK)
+    test_pair tp;
+    if (!open_pair(&tp, &p1, &p2, NULL)) {
+        close_pair(&tp);
         return;
+    }
+    ic_pair *pair = tp.pair;
     ic_local_options opt;
     ic_local_defaults(&opt);
     ic_local_point pt;
@@ -364,23 +386,21 @@ static void test_line_and_plane_curve(void)
     CHECK(ic_branch_is_line(br, 1e-12), "straight line");
     for (int k = 1; k < 5; k++)
         CHECK(vnorm(br->derivs[k]) <= 1e-15, "c^(%d) = 0 on a line", k + 1);
-    ic_pair_free(pair);
-    ic_surface_free(A);
-    ic_surface_free(B);
+    close_pair(&tp);
     const surface_def e1 = {{0}, {0}, "x^2/0.36 + y^2/0.64 + z^2 - 1"};
     const surface_def e2 = {{0}, {0}, "x^2/0.2025 + y^2/0.64 + z^2/1.5625 - 1"};
-    A = make_surface(&e1, NULL), B = make_surface(&e2, NULL);
-    if (!A || !B || ic_pair_new(&pair, A, B, NULL) != IC_OK)
+    if (!open_pair(&tp, &e1, &e2, NULL)) {
+        close_pair(&tp);
         return;
+    }
+    pair = tp.pair;
     /* the paper's point (27/160, 2 sqrt3/5, 5 sqrt7/32) */
     const double P[3] = {27.0 / 160, 2 * sqrt(3.0) / 5, 5 * sqrt(7.0) / 32};
     CHECK(ic_local_locate(pair, &pt, P, &opt, &err) == IC_OK, "Ex 5.1: %s", err.message);
     CHECK(ic_local_apparatus(pair, &res, &pt, 4, IC_METHOD_JET, &opt, &err) == IC_OK, "Ex 5.1");
     CHECK(ic_branch_is_planar(&res.branches[0], 1e-12) && !ic_branch_is_line(&res.branches[0], 1e-12),
           "Ex 5.1 is a plane curve: tau = %g", res.branches[0].tau);
-    ic_pair_free(pair);
-    ic_surface_free(A);
-    ic_surface_free(B);
+    close_pair(&tp);
 }
 
 int main(int argc, char **argv)

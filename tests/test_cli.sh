@@ -85,7 +85,18 @@ check "point: the Enneper double curve is planar (tau 0)" $?
 "$bin" point "$src/examples/seed001-ex54.json" --at 'sqrt(11/2),sqrt(5/2),-2' --format text >"$out" 2>"$errf"
 grep -q 'tau          -0.51528286240' "$out"
 check "point: seed 001 Ex 5.4 torsion -27395 sqrt(55)/394282" $?
-expect_error 2 "point $src/examples/viviani.json --at 2,0,0" "tangential point"
+"$bin" point "$src/examples/viviani.json" --at 2,0,0 --order 3 >"$out" 2>"$errf"
+check "point at Viviani's branch point exits 0 ($(cat "$errf"))" $?
+grep -q '"type":.*"branch-point"' "$out" && grep -q '"discriminant":.*0.0625' "$out"
+check "point: branch point with Delta = 1/16" $?
+[ "$(grep -c '"kappa_prime"' "$out")" -eq 2 ]
+check "point: two branches at the branch point" $?
+"$bin" point "$src/examples/sphere-plane-contact.json" --at 0,1,0 >"$out" 2>"$errf"
+grep -q '"type":.*"isolated-contact"' "$out" && grep -q '"branches":.*\[\]' "$out"
+check "point: isolated contact, no branch" $?
+"$bin" point "$src/examples/seed002-cusp.json" --at 0,0,0 >"$out" 2>"$errf"
+grep -q '"type":.*"cusp"' "$out" && grep -q '"regular":.*false' "$out"
+check "point: cusp with one-sided half-branches" $?
 expect_error 2 "point $src/examples/viviani.json --at 1.5,0.8660254037844386,1.2" "0.107 away from surface B" "tolerance 1e-06"
 expect_error 1 "point $src/examples/ellipsoids.json --params 1,2" "both surfaces are implicit"
 expect_error 1 "point $src/examples/viviani.json --at 1.5,0.8660254037844386,1 --method closed-form --order 4" "up to order 3"

@@ -5,41 +5,7 @@
 
 #include "harness.h"
 #include "intercurve/local.h"
-
-typedef struct {
-    double point[3];
-    double d[8][3];
-    double kappa, tau, kappa_p, tau_p;
-    char name[32], extra[96];
-} truth_case;
-
-static int read_truth(const char *path, truth_case *cases, int max)
-{
-    FILE *f = fopen(path, "r");
-    if (!f)
-        return -1;
-    char line[2048];
-    int n = -1;
-    while (fgets(line, sizeof line, f)) {
-        if (strncmp(line, "case ", 5) == 0 && n + 1 < max) {
-            n++;
-            memset(&cases[n], 0, sizeof cases[n]);
-            sscanf(line + 5, "%31s %95[^\n]", cases[n].name, cases[n].extra);
-        } else if (n >= 0 && strncmp(line, "point ", 6) == 0) {
-            sscanf(line + 6, "%lf %lf %lf", &cases[n].point[0], &cases[n].point[1],
-                   &cases[n].point[2]);
-        } else if (n >= 0 && line[0] == 'd' && line[1] >= '1' && line[1] <= '8') {
-            const int k = line[1] - '1';
-            sscanf(line + 3, "%lf %lf %lf", &cases[n].d[k][0], &cases[n].d[k][1],
-                   &cases[n].d[k][2]);
-        } else if (n >= 0 && strncmp(line, "frenet ", 7) == 0) {
-            sscanf(line + 7, "%lf %lf %lf %lf", &cases[n].kappa, &cases[n].tau,
-                   &cases[n].kappa_p, &cases[n].tau_p);
-        }
-    }
-    fclose(f);
-    return n + 1;
-}
+#include "truth_file.h"
 
 /* A surface of a test problem: parametric (xyz, params) or implicit (f). */
 typedef struct {
@@ -323,12 +289,16 @@ static void test_errors(void)
     if (st == IC_OK)
         st = ic_local_apparatus(pair, &res, &pt, 3, IC_METHOD_JET, &opt, &err);
     CHECK(st == IC_ERR_DOMAIN && strstr(err.message, "singular"), "pole: %d %s", st, err.message);
-    /* the branch point (2, 0, 0) is tangential: a clear error for now */
+    /* the branch point (2, 0, 0) is tangential: classified (tests/test_tangential.c
+     * checks its branches); the transversal-only method is refused there */
     const double branch[3] = {2, 0, 0};
     CHECK(ic_local_locate(pair, &pt, branch, &opt, &err) == IC_OK, "branch point located");
-    st = ic_local_apparatus(pair, &res, &pt, 3, IC_METHOD_JET, &opt, &err);
-    CHECK(st == IC_ERR_UNABLE && res.type == IC_POINT_TANGENTIAL && strstr(err.message, "tangential"),
-          "branch point: %d %s", st, err.message);
+    st = ic_local_apparatus(pair, &res, &pt, 3, IC_METHOD_AUTO, &opt, &err);
+    CHECK(st == IC_OK && res.type == IC_POINT_BRANCH && res.nbranches == 2,
+          "branch point: %d %s", st, st ? err.message : "");
+    CHECK(ic_local_apparatus(pair, &res, &pt, 3, IC_METHOD_CLOSED_FORM, &opt, &err) ==
+                  IC_ERR_INVALID && strstr(err.message, "tangential point"),
+          "closed form at a tangential point: %s", err.message);
     /* orders out of range */
     const double ok[3] = {1.5, 0.8660254037844386, 1.0};
     CHECK(ic_local_locate(pair, &pt, ok, &opt, &err) == IC_OK, "located");

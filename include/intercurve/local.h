@@ -47,13 +47,15 @@ typedef enum {
 const char *ic_point_type_name(ic_point_type type);
 
 typedef enum {
-    IC_METHOD_AUTO,        /**< jet */
+    IC_METHOD_AUTO,        /**< jet at transversal points, height-difference at tangential ones */
     IC_METHOD_JET,
     IC_METHOD_CLOSED_FORM,
-    IC_METHOD_PERTURBATION /**< the tangential issue's */
+    IC_METHOD_PERTURBATION,
+    IC_METHOD_HEIGHT_DIFFERENCE /**< tangential points, any order (docs/tangential.md) */
 } ic_method;
 
-/** "auto", "jet", "closed-form", "perturbation"; and back (-1 if unknown). */
+/** "auto", "jet", "closed-form", "perturbation", "height-difference"; and
+ *  back (-1 if unknown). */
 const char *ic_method_name(ic_method method);
 int ic_method_from_name(const char *name);
 
@@ -78,6 +80,10 @@ typedef struct {
     /** 1/length: a curvature at or below this is zero: n, b, tau are then
      *  undefined (default 1e-12) */
     double kappa_zero;
+    /** dimensionless: at a tangential point, a coefficient of the height
+     *  difference counts as zero when it is below contact_tol times the
+     *  scale of its degree (default 1e-8; docs/tangential.md) */
+    double contact_tol;
 } ic_local_options;
 
 /** Fills the defaults above. */
@@ -137,6 +143,7 @@ typedef struct {
     double kappa, tau;
     double kappa_prime;         /**< d kappa / ds (needs K >= 3) */
     double tau_prime;           /**< d tau / ds (needs K >= 4) */
+    int regular;                /**< 0 at a cusp: t, n, b are one-sided limits, kappa infinite */
     int frame_defined;          /**< 0 where kappa = 0: n, b, tau, tau' undefined */
     int tau_defined;            /**< needs the frame and K >= 3 */
     int kappa_prime_defined, tau_prime_defined;
@@ -148,7 +155,7 @@ typedef struct {
     ic_darboux surface[2];
 } ic_branch;
 
-#define IC_LOCAL_MAX_BRANCHES 4
+#define IC_LOCAL_MAX_BRANCHES 8
 
 /** Everything known at one point. */
 typedef struct {
@@ -157,16 +164,25 @@ typedef struct {
     double angle;         /**< radians in [0, pi/2]: between the normal lines */
     ic_point_type type;
     ic_method method;     /**< the method that produced the branches */
+    /** tangential points: the discriminant Delta = (g_xy/2)^2 - g_xx g_yy / 4 of
+     *  the quadratic part of the height difference (> 0 branch point, < 0
+     *  isolated contact, 0 degenerate), in 1/length^2; NaN when transversal */
+    double discriminant;
+    /** tangential points: the order of contact along the kernel (cusp,
+     *  tacnode) or of the leading form (higher-order contact); 0 otherwise */
+    int contact_order;
     int nbranches;
     ic_branch branches[IC_LOCAL_MAX_BRANCHES];
 } ic_local_result;
 
 /**
  * The apparatus at a located point, to order K (1..IC_LOCAL_MAX_ORDER; the
- * closed-form method to IC_CLOSED_FORM_MAX_ORDER). A tangential point
- * (angle below opt->tangential_angle) returns IC_ERR_UNABLE with
- * res->type = IC_POINT_TANGENTIAL and the angle filled: the tangential
- * analysis is not available yet. IC_ERR_INVALID for an order out of range.
+ * closed-form method to IC_CLOSED_FORM_MAX_ORDER). At a tangential point
+ * (angle below opt->tangential_angle) the point is classified and every
+ * branch through it computed by the height-difference method (auto, jet or
+ * height-difference; the other methods at tangential points are not
+ * available yet: IC_ERR_INVALID). IC_ERR_INVALID for an order out of range;
+ * IC_ERR_UNABLE where the classification cannot decide (it says why).
  */
 IC_NODISCARD ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res,
                                           const ic_local_point *pt, int order, ic_method method,

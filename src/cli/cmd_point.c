@@ -1,6 +1,7 @@
 /* intercurve point: the intersection's Frenet apparatus at one point. */
 #include "cli.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -19,14 +20,17 @@ static const char POINT_HELP[] =
     "  --params LIST   the parameters of the parametric surfaces in problem order;\n"
     "                  for a self-intersection both preimages U,V,P,Q\n"
     "  --order K       highest derivative (default 4; jet: up to 16, closed-form: 3)\n"
-    "  --method M      auto (= jet), jet (any order), closed-form (the papers' formulas)\n"
+    "  --method M      auto, jet (transversal, any order), closed-form (the papers'\n"
+    "                  formulas, order <= 3), height-difference (tangential points)\n"
     "  --format F      json (default) or text\n"
     "  --point-tol T   largest distance of the given point from either surface\n"
     "                  (default 1e-6); farther is an error saying how far\n"
     "\n"
-    "The curve is oriented by t = N_A x N_B. Undefined values (n, b, torsion where the\n"
-    "curvature is 0) are null. Exit status 2 when the point is not on the\n"
-    "intersection or is tangential (not analysed yet).\n"
+    "The curve is oriented by t = N_A x N_B. At a tangential point (normals parallel)\n"
+    "the point is classified (branch-point, tangential-curve, isolated-contact, cusp,\n"
+    "tacnode, higher-order-contact) and every branch through it is given. Undefined\n"
+    "values (n, b, torsion where the curvature is 0) are null. Exit status 2 when the\n"
+    "point is not on the intersection.\n"
     "\n"
     "example:\n"
     "  intercurve point examples/viviani.json --at 1.5,0.8660254037844386,1 --order 3\n";
@@ -35,6 +39,8 @@ static cJSON *branch_json(const ic_branch *br, const ic_pair *pair)
 {
     cJSON *o = cJSON_CreateObject();
     cJSON_AddItemToObject(o, "t", ic_json_vector(br->t, 3));
+    if (!br->regular)
+        cJSON_AddFalseToObject(o, "regular");
     cJSON_AddItemToObject(o, "n", br->frame_defined ? ic_json_vector(br->n, 3) : cJSON_CreateNull());
     cJSON_AddItemToObject(o, "b", br->frame_defined ? ic_json_vector(br->b, 3) : cJSON_CreateNull());
     cJSON_AddItemToObject(o, "kappa", br->order >= 2 ? ic_json_number_or_null(br->kappa)
@@ -47,7 +53,10 @@ static cJSON *branch_json(const ic_branch *br, const ic_pair *pair)
     cJSON_AddItemToObject(o, "tau_prime", br->tau_prime_defined
                                               ? ic_json_number_or_null(br->tau_prime)
                                               : cJSON_CreateNull());
-    if (!br->frame_defined && br->order >= 2)
+    if (!br->regular)
+        cJSON_AddStringToObject(o, "undefined", "a cusp: t, n, b are one-sided limits along "
+                                                "this half-branch; the curvature is infinite");
+    else if (!br->frame_defined && br->order >= 2)
         cJSON_AddStringToObject(o, "undefined", "the curvature is 0: n, b and the torsion are undefined");
     cJSON *d = cJSON_CreateArray();
     for (int k = 0; k < br->order; k++)
@@ -90,7 +99,9 @@ static cJSON *result_json(const ic_local_result *res, const ic_pair *pair, int o
     cJSON_AddItemToObject(doc, "normals", normals);
     cJSON_AddItemToObject(doc, "angle", ic_json_number_or_null(res->angle));
     cJSON_AddStringToObject(doc, "type", ic_point_type_name(res->type));
-    cJSON_AddNullToObject(doc, "discriminant");
+    cJSON_AddItemToObject(doc, "discriminant", ic_json_number_or_null(res->discriminant));
+    if (res->contact_order)
+        cJSON_AddNumberToObject(doc, "contact_order", res->contact_order);
     cJSON_AddStringToObject(doc, "method", ic_method_name(res->method));
     cJSON_AddNumberToObject(doc, "order", order);
     cJSON *branches = cJSON_CreateArray();
@@ -108,20 +119,25 @@ static void print_vec(const char *name, const double *v, int defined)
         printf("  %-12s undefined\n", name);
 }
 
-static void print_text(const ic_local_result *res, int order)
+static void print_text(const ic_local_result *res)
 {
     printf("point        (%.15g, %.15g, %.15g)  residual %.3g\n", res->point.xyz[0],
            res->point.xyz[1], res->point.xyz[2], res->point.residual);
     printf("type         %s (angle between the normals %.6g rad), method %s\n",
            ic_point_type_name(res->type), res->angle, ic_method_name(res->method));
+    if (!isnan(res->discriminant))
+        printf("discriminant %.15g%s\n", res->discriminant,
+               res->nbranches ? "" : "  (no branch: an isolated point)");
     for (int i = 0; i < res->nbranches; i++) {
         const ic_branch *br = &res->branches[i];
-        printf("branch %d\n", i + 1);
+        printf("branch %d%s\n", i + 1, br->regular ? "" : " (cusp half-branch: one-sided limits)");
         print_vec("t", br->t, 1);
         print_vec("n", br->n, br->frame_defined);
         print_vec("b", br->b, br->frame_defined);
-        if (order >= 2)
+        if (br->order >= 2)
             printf("  %-12s %.15g\n", "kappa", br->kappa);
+        else if (!br->regular)
+            printf("  %-12s infinite (a cusp)\n", "kappa");
         if (br->tau_defined)
             printf("  %-12s %.15g\n", "tau", br->tau + 0.0);
         if (br->kappa_prime_defined)
@@ -133,7 +149,7 @@ static void print_text(const ic_local_result *res, int order)
             snprintf(name, sizeof name, "c^(%d)", k + 1);
             print_vec(name, br->derivs[k], 1);
         }
-        for (int s = 0; s < 2 && order >= 2; s++)
+        for (int s = 0; s < 2 && br->order >= 2; s++)
             printf("  surface %c    kappa_n %.15g  kappa_g %.15g  tau_g %.15g\n", 'A' + s,
                    br->surface[s].kappa_n, br->surface[s].kappa_g, br->surface[s].tau_g);
     }
@@ -235,7 +251,7 @@ int ic_cmd_point(int argc, char **argv)
         goto cleanup;
     }
     if (strcmp(format, "text") == 0) {
-        print_text(&res, order);
+        print_text(&res);
         rc = fflush(stdout) == 0 ? 0 : EXIT_COMPUTE;
     } else {
         rc = ic_json_print(result_json(&res, pair, order)) == 0 ? 0 : EXIT_COMPUTE;

@@ -1,6 +1,6 @@
 /* The apparatus at a located point: sheets, classification by the angle
  * between the normals, the chosen method, the Frenet frame. */
-#include "local_internal.h"
+#include "tangential.h"
 #include "common/vec3.h"
 
 #include <math.h>
@@ -12,6 +12,7 @@ ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res, const ic_local
 {
     memset(res, 0, sizeof *res);
     res->point = *pt;
+    res->discriminant = NAN;
     res->method = method == IC_METHOD_AUTO ? IC_METHOD_JET : method;
     if (order < 1 || order > IC_LOCAL_MAX_ORDER)
         return ic_error_set(err, IC_ERR_INVALID, 0, "order %d outside 1..%d", order,
@@ -23,8 +24,8 @@ ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res, const ic_local
                             IC_CLOSED_FORM_MAX_ORDER, order);
     if (res->method == IC_METHOD_PERTURBATION)
         return ic_error_set(err, IC_ERR_INVALID, 0,
-                            "the perturbation method is for tangential points and is not "
-                            "available yet; use jet or closed-form");
+                            "the perturbation method is not available yet; use jet, "
+                            "closed-form or height-difference");
     ic_sheet sh[2];
     for (int s = 0; s < 2; s++) {
         ic_status st = ic_sheet_at(pair, &sh[s], s, pt, err);
@@ -37,19 +38,36 @@ ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res, const ic_local
     res->angle = atan2(ic_norm3(cr), fabs(ic_dot3(sh[0].geo.normal, sh[1].geo.normal)));
     if (res->angle < opt->tangential_angle) {
         res->type = IC_POINT_TANGENTIAL;
-        return ic_error_set(err, IC_ERR_UNABLE, 0,
-                            "tangential point: the normals are %.3g rad from parallel (below "
-                            "%g); the tangential analysis is not available yet",
-                            res->angle, opt->tangential_angle);
+        if (res->method == IC_METHOD_CLOSED_FORM)
+            return ic_error_set(err, IC_ERR_INVALID, 0,
+                                "tangential point (normals %.3g rad from parallel): the "
+                                "closed-form method there is not available yet; use "
+                                "height-difference",
+                                res->angle);
+        res->method = IC_METHOD_HEIGHT_DIFFERENCE;
+        ic_status st = ic_height_difference(res, sh, order, opt, err);
+        if (st != IC_OK)
+            return st;
+        for (int i = 0; i < res->nbranches; i++)
+            if (res->branches[i].regular)
+                ic_branch_finish(&res->branches[i], sh, opt);
+        return IC_OK;
     }
+    if (res->method == IC_METHOD_HEIGHT_DIFFERENCE)
+        return ic_error_set(err, IC_ERR_INVALID, 0,
+                            "the height-difference method is for tangential points; this one "
+                            "is transversal (normals %.3g rad apart)",
+                            res->angle);
     res->type = IC_POINT_TRANSVERSAL;
     res->nbranches = 1;
     ic_branch *br = &res->branches[0];
+    br->regular = 1;
     ic_status st = res->method == IC_METHOD_CLOSED_FORM
                        ? ic_closed_form_method(br, sh, order, err)
                        : ic_jet_method(pair, br, sh, order, err);
     if (st != IC_OK)
         return st;
+    br->regular = 1;
     ic_branch_finish(br, sh, opt);
     return IC_OK;
 }

@@ -19,17 +19,19 @@ const char *ic_point_type_name(ic_point_type type)
     return "unknown";
 }
 
-static const char *const METHOD_NAMES[] = {"auto", "jet", "closed-form", "perturbation"};
+static const char *const METHOD_NAMES[] = {"auto", "jet", "closed-form", "perturbation",
+                                           "height-difference"};
 
 const char *ic_method_name(ic_method method)
 {
-    return method >= IC_METHOD_AUTO && method <= IC_METHOD_PERTURBATION ? METHOD_NAMES[method]
-                                                                         : "unknown";
+    return method >= IC_METHOD_AUTO && method <= IC_METHOD_HEIGHT_DIFFERENCE
+               ? METHOD_NAMES[method]
+               : "unknown";
 }
 
 int ic_method_from_name(const char *name)
 {
-    for (int i = 0; i < 4; i++)
+    for (int i = 0; i < 5; i++)
         if (strcmp(name, METHOD_NAMES[i]) == 0)
             return i;
     return -1;
@@ -44,6 +46,7 @@ void ic_local_defaults(ic_local_options *opt)
     opt->tangential_angle = 1e-6;
     opt->distinct_params = 1e-6;
     opt->kappa_zero = 1e-12;
+    opt->contact_tol = 1e-8;
 }
 
 ic_status ic_pair_new(ic_pair **out, ic_surface *A, ic_surface *B, ic_error *err)

@@ -185,6 +185,33 @@ def main():
         q = sp.sqrt(3 * (1 + p0**2))
         emit_closed(lines, "enneper", double, p0, "u=%s v=%s" % (sp.N(p0, 25), sp.N(q, 25)))
 
+    # Tangential points (the branches through them, each a smooth closed-form curve):
+    # Viviani's branch point (2, 0, 0) at p = 0 and p = 2 pi; the seed 002 Ex. 1 curve
+    # (sphere of radius 1, cylinder of radius 1/2) at (1, 0, 0); the two ellipses of
+    # seed 001 Ex. 5.1 (planes z = +-k x) through (0, 0.8, 0); the tangential circles of
+    # seed 001 Ex. 5.2 and seed 002 Ex. 3; the tacnode branches y = +-x^2 of
+    # z = y^2 - x^4 and z = 0.
+    for p0 in [sp.Integer(0), 2 * sp.pi]:
+        emit_closed(lines, "tangent-viviani", viviani, p0, "p=%s" % sp.N(p0, 20))
+    viviani_half = [(1 + sp.cos(p)) / 2, sp.sin(p) / 2, sp.sin(p / 2)]
+    check_on(viviani_half, [(x - sp.Rational(1, 2)) ** 2 + y**2 - sp.Rational(1, 4),
+                            x**2 + y**2 + z**2 - 1], sp.Rational(7, 10))
+    for p0 in [sp.Integer(0), 2 * sp.pi]:
+        emit_closed(lines, "tangent-seed002", viviani_half, p0, "p=%s" % sp.N(p0, 20))
+    ellipse_minus = [a * sp.cos(p), sp.Rational(4, 5) * sp.sin(p), -k * a * sp.cos(p)]
+    check_on(ellipse_minus, [f51, h51], sp.Rational(1, 2))
+    emit_closed(lines, "tangent-ellipse51", ellipse, sp.pi / 2, "plane=+")
+    emit_closed(lines, "tangent-ellipse51", ellipse_minus, sp.pi / 2, "plane=-")
+    circle52 = [sp.cos(p), sp.sin(p), sp.Integer(0)]
+    emit_closed(lines, "tangent-circle52", circle52, sp.atan2(4, 3), "p=atan2(4,3)")
+    circle002 = [-sp.Rational(1, 5) + 2 * sp.cos(p), 2 * sp.sin(p), sp.Integer(0)]
+    p002 = sp.atan2(-sp.sqrt(21) / 5, -sp.Rational(2, 5))
+    check_on(circle002, [z], p002)
+    emit_closed(lines, "tangent-circle002", circle002, p002, "p=atan2(-sqrt21/5,-2/5)")
+    for sgn in (1, -1):
+        emit_closed(lines, "tacnode", [p, sgn * p**2, sp.Integer(0)], sp.Integer(0),
+                    "branch=%+d" % sgn)
+
     f54 = x**2 - y**2 + z - 1
     h54 = x**2 + y**2 + z**3
     x0, y0, z0 = sp.sqrt(sp.Rational(11, 2)), sp.sqrt(sp.Rational(5, 2)), sp.Integer(-2)

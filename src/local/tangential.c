@@ -1,0 +1,411 @@
+/*
+ * The height-difference method at a tangential point (DESIGN.md 2.2,
+ * docs/tangential.md). With g = psi_A - psi_B the height difference over the
+ * common tangent plane, the intersection near P is the zero set of g, a
+ * plane curve singular at 0. In coordinates (r, w) along a unit direction d
+ * and its normal d_perp, each smooth branch is w = phi(r) + r^p omega(r),
+ * where omega solves G(r, omega) = g(r, w) / r^q = 0 by the implicit
+ * function theorem, degree by degree:
+ *   branch point (Delta > 0):   d a root of g2, p = 1, q = 2;
+ *   higher-order contact:       d a simple root of the leading form g_m, p = 1, q = m;
+ *   tangential curve (Delta = 0, g = 0 along dg/dw = 0): w = phi(r);
+ *   tacnode (Delta = 0, h = g(r, phi) ~ h_m r^m, m even, -h_m/lambda > 0):
+ *                               p = m/2, q = m, omega(0) = +-sqrt(-h_m/lambda).
+ * Each branch is lifted to c(r) = P + x e1 + y e2 + psi_A(x, y) N and
+ * reparametrised by arc length (series reversion).
+ */
+#include "tangential.h"
+#include "common/mathconst.h"
+#include "common/vec3.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct {
+    const ic_heights *h;
+    const ic_jet_space *sp2; /* (x, y) or (r, w), order H */
+    ic_jet_space *sp1;       /* univariate, order H */
+    int H;
+    double *s2, *s1;         /* scratch of sp2 and sp1 */
+    const ic_local_options *opt;
+} tctx;
+
+static int idx2(const ic_jet_space *sp, int i, int j)
+{
+    const int a[2] = {i, j};
+    return ic_jet_index(sp, a);
+}
+
+/* out(r, w) = a(r d + w dp) */
+static void rotate(const tctx *cx, double *out, const double *a, const double *d,
+                   const double *dp)
+{
+    const int n = ic_jet_space_len(cx->sp2);
+    double *X = malloc(2 * (size_t)n * sizeof *X);
+    if (!X)
+        return;
+    double *Y = X + n;
+    ic_jet_zero(X, cx->sp2);
+    ic_jet_zero(Y, cx->sp2);
+    X[1] = d[0], X[2] = dp[0];
+    Y[1] = d[1], Y[2] = dp[1];
+    const double *in[2] = {X, Y};
+    ic_jet_compose(out, a, cx->sp2, in, cx->sp2, cx->s2);
+    free(X);
+}
+
+/* out = d a / dw (the second variable) */
+static void deriv_w(const ic_jet_space *sp, double *out, const double *a)
+{
+    const int n = ic_jet_space_len(sp);
+    ic_jet_zero(out, sp);
+    for (int i = 0; i < n; i++) {
+        int e[2];
+        ic_jet_exponents(sp, i, e);
+        if (e[1] >= 1) {
+            const int j = idx2(sp, e[0], e[1] - 1);
+            if (j >= 0)
+                out[j] += e[1] * a[i];
+        }
+    }
+}
+
+/* out(r) = a(r, w(r)) for a univariate w with w(0) = 0 */
+static void along(const tctx *cx, double *out, const double *a, const double *w)
+{
+    const int n1 = ic_jet_space_len(cx->sp1);
+    double r[IC_JET_MAX_ORDER + 1];
+    ic_jet_set_var(r, 0.0, 0, cx->sp1);
+    (void)n1;
+    const double *in[2] = {r, w};
+    ic_jet_compose(out, a, cx->sp2, in, cx->sp1, cx->s1);
+}
+
+/* w(r) = base(r) + r^p omega(r), omega(0) = omega0, from G = a(r, w)/r^q = 0
+ * with dG/domega(0) = dG. Returns the number of valid orders of w. */
+static int solve_branch(const tctx *cx, double *w, const double *a, const double *base, int p,
+                        int q, double omega0, double dG)
+{
+    const int H = cx->H;
+    double omega[IC_JET_MAX_ORDER + 1] = {0}, S[IC_JET_MAX_ORDER + 1];
+    omega[0] = omega0;
+    for (int k = 1; k + q <= H; k++) {
+        for (int i = 0; i <= H; i++)
+            w[i] = (base ? base[i] : 0.0) + (i >= p ? omega[i - p] : 0.0);
+        along(cx, S, a, w);
+        omega[k] = -S[k + q] / dG;
+    }
+    for (int i = 0; i <= H; i++)
+        w[i] = (base ? base[i] : 0.0) + (i >= p ? omega[i - p] : 0.0);
+    return p + H - q;
+}
+
+/* The branch w(r) in direction d, lifted to 3-D and reparametrised by arc
+ * length: br->derivs[0 .. order-1]. */
+static ic_status lift_branch(const tctx *cx, ic_branch *br, const double *w, const double *d,
+                             const double *dp, int valid, int order, ic_error *err)
+{
+    if (valid < order)
+        return ic_error_set(err, IC_ERR_UNABLE, 0,
+                            "the contact is of too high an order for derivatives to order %d "
+                            "(jets of order %d)",
+                            order, cx->H);
+    const ic_heights *h = cx->h;
+    const ic_jet_space *sp1 = cx->sp1;
+    const int H = cx->H;
+    double x[IC_JET_MAX_ORDER + 1], y[IC_JET_MAX_ORDER + 1], r[IC_JET_MAX_ORDER + 1];
+    double psi[IC_JET_MAX_ORDER + 1], c[3][IC_JET_MAX_ORDER + 1];
+    ic_jet_set_var(r, 0.0, 0, sp1);
+    for (int i = 0; i <= H; i++) {
+        x[i] = r[i] * d[0] + w[i] * dp[0];
+        y[i] = r[i] * d[1] + w[i] * dp[1];
+    }
+    const double *in[2] = {x, y};
+    ic_jet_compose(psi, h->psi[0], cx->sp2, in, sp1, cx->s1);
+    psi[0] = 0.0; /* measured from P along N */
+    for (int k = 0; k < 3; k++)
+        for (int i = 0; i <= H; i++)
+            c[k][i] = (i == 0 ? h->P[k] : 0.0) + x[i] * h->e1[k] + y[i] * h->e2[k] +
+                      psi[i] * h->N[k];
+    /* speed sigma = |c'(r)|, arc length s(r) = int sigma, r(s) by reversion */
+    double dc[3][IC_JET_MAX_ORDER + 1], sq[IC_JET_MAX_ORDER + 1], tmp[IC_JET_MAX_ORDER + 1];
+    double sigma[IC_JET_MAX_ORDER + 1], s[IC_JET_MAX_ORDER + 1], rs[IC_JET_MAX_ORDER + 1];
+    for (int k = 0; k < 3; k++) {
+        for (int i = 0; i < H; i++)
+            dc[k][i] = (i + 1) * c[k][i + 1];
+        dc[k][H] = 0.0;
+    }
+    ic_jet_zero(sq, sp1);
+    for (int k = 0; k < 3; k++) {
+        ic_jet_mul(tmp, dc[k], dc[k], sp1);
+        ic_jet_add(sq, sq, tmp, sp1);
+    }
+    ic_status st = ic_jet_sqrt(sigma, sq, sp1, err);
+    if (st != IC_OK)
+        return st;
+    s[0] = 0.0;
+    for (int i = 1; i <= H; i++)
+        s[i] = sigma[i - 1] / i;
+    st = ic_jet_revert(rs, s, sp1, cx->s1, err);
+    if (st != IC_OK)
+        return st;
+    const double *rin[1] = {rs};
+    memset(br, 0, sizeof *br);
+    br->order = order;
+    br->regular = 1;
+    double fact = 1.0;
+    double cs[3][IC_JET_MAX_ORDER + 1];
+    for (int k = 0; k < 3; k++)
+        ic_jet_compose(cs[k], c[k], sp1, rin, sp1, cx->s1);
+    for (int i = 1; i <= order; i++) {
+        fact *= i;
+        for (int k = 0; k < 3; k++)
+            br->derivs[i - 1][k] = fact * cs[k][i];
+    }
+    /* orientation: the first clearly nonzero coordinate of t is positive */
+    for (int k = 0; k < 3; k++)
+        if (fabs(br->derivs[0][k]) > 1e-9) {
+            if (br->derivs[0][k] < 0)
+                for (int i = 1; i <= order; i++)
+                    if (i % 2)
+                        ic_scale3(br->derivs[i - 1], br->derivs[i - 1], -1.0);
+            break;
+        }
+    return IC_OK;
+}
+
+/* Largest coefficient magnitude of degree j of a 2-variable jet. */
+static double degree_max(const ic_jet_space *sp, const double *a, int j)
+{
+    double m = 0.0;
+    for (int i = ic_jet_degree_start(sp, j); i < ic_jet_degree_start(sp, j + 1); i++)
+        m = fmax(m, fabs(a[i]));
+    return m;
+}
+
+/* Simple real roots phi in [0, pi) of the leading form g_m(cos phi, sin phi). */
+static int form_roots(const tctx *cx, const double *g, int m, double *roots, int max)
+{
+    const ic_jet_space *sp = cx->sp2;
+    const int M = 1440;
+    int count = 0;
+    double prev = 0.0;
+    for (int k = 0; k <= M; k++) {
+        const double phi = IC_PI * k / M;
+        double val = 0.0;
+        for (int i = 0; i <= m; i++)
+            val += g[idx2(sp, i, m - i)] * pow(cos(phi), i) * pow(sin(phi), m - i);
+        if (k > 0 && ((prev < 0 && val >= 0) || (prev > 0 && val <= 0)) && count < max) {
+            double lo = IC_PI * (k - 1) / M, hi = phi, flo = prev;
+            for (int it = 0; it < 80; it++) {
+                const double mid = 0.5 * (lo + hi);
+                double fm = 0.0;
+                for (int i = 0; i <= m; i++)
+                    fm += g[idx2(sp, i, m - i)] * pow(cos(mid), i) * pow(sin(mid), m - i);
+                if ((fm < 0) == (flo < 0))
+                    lo = mid, flo = fm;
+                else
+                    hi = mid;
+            }
+            const double root = 0.5 * (lo + hi);
+            if (root < IC_PI - 1e-12) /* phi and phi + pi are one direction */
+                roots[count++] = root;
+        }
+        prev = val;
+    }
+    return count;
+}
+
+static ic_status smooth_branch(const tctx *cx, ic_local_result *res, const double *g,
+                               double phi, int q, int order, ic_error *err)
+{
+    const int n = ic_jet_space_len(cx->sp2);
+    const double d[2] = {cos(phi), sin(phi)}, dp[2] = {-sin(phi), cos(phi)};
+    double *gr = malloc((size_t)n * sizeof *gr);
+    if (!gr)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
+    rotate(cx, gr, g, d, dp);
+    const double dG = gr[idx2(cx->sp2, q - 1, 1)];
+    double w[IC_JET_MAX_ORDER + 1];
+    ic_status st;
+    if (!(fabs(dG) > 0.0))
+        st = ic_error_set(err, IC_ERR_UNABLE, 0, "a branch direction is a multiple root");
+    else if (res->nbranches >= IC_LOCAL_MAX_BRANCHES)
+        st = ic_error_set(err, IC_ERR_UNABLE, 0, "more than %d branches", IC_LOCAL_MAX_BRANCHES);
+    else {
+        const int valid = solve_branch(cx, w, gr, NULL, 1, q, 0.0, dG);
+        st = lift_branch(cx, &res->branches[res->nbranches], w, d, dp, valid, order, err);
+        if (st == IC_OK)
+            res->nbranches++;
+    }
+    free(gr);
+    return st;
+}
+
+/* Delta = 0 with a nonzero quadratic part: follow dg/dw = 0 across the kernel. */
+static ic_status degenerate(const tctx *cx, ic_local_result *res, const double *g, double a,
+                            double b, double c, int order, ic_error *err)
+{
+    const ic_jet_space *sp2 = cx->sp2;
+    const int n = ic_jet_space_len(sp2), H = cx->H;
+    /* kernel direction of [[a, b/2], [b/2, c]] and lambda = a + c */
+    double d[2];
+    if (fabs(a) >= fabs(c))
+        d[0] = -b / 2, d[1] = a;
+    else
+        d[0] = c, d[1] = -b / 2;
+    const double len = hypot(d[0], d[1]);
+    d[0] /= len, d[1] /= len;
+    const double dp[2] = {-d[1], d[0]};
+    double *gr = malloc(2 * (size_t)n * sizeof *gr);
+    if (!gr)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
+    double *dw = gr + n;
+    rotate(cx, gr, g, d, dp);
+    const double lambda = gr[idx2(sp2, 0, 2)];
+    deriv_w(sp2, dw, gr);
+    double phi[IC_JET_MAX_ORDER + 1], h[IC_JET_MAX_ORDER + 1], hA[IC_JET_MAX_ORDER + 1];
+    double hB[IC_JET_MAX_ORDER + 1];
+    solve_branch(cx, phi, dw, NULL, 0, 0, 0.0, 2 * lambda);
+    /* h(r) = g(r, phi(r)), and each height along the same curve for the scale */
+    double *rot = malloc((size_t)n * sizeof *rot);
+    ic_status st = IC_OK;
+    if (!rot) {
+        free(gr);
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
+    }
+    along(cx, h, gr, phi);
+    rotate(cx, rot, cx->h->psi[0], d, dp);
+    along(cx, hA, rot, phi);
+    rotate(cx, rot, cx->h->psi[1], d, dp);
+    along(cx, hB, rot, phi);
+    free(rot);
+    int m = 0;
+    for (int j = 3; j <= H && !m; j++)
+        if (fabs(h[j]) > cx->opt->contact_tol * fmax(fabs(hA[j]), fabs(hB[j])) &&
+            fabs(h[j]) > DBL_EPSILON * fmax(fabs(lambda), 1e-300))
+            m = j;
+    res->contact_order = m;
+    if (m == 0) { /* g vanishes along the curve to order H: a tangential curve */
+        res->type = IC_POINT_TANGENTIAL_CURVE;
+        st = lift_branch(cx, &res->branches[0], phi, d, dp, H, order, err);
+        if (st == IC_OK)
+            res->nbranches = 1;
+    } else if (m % 2 == 1) { /* a cusp: two half-branches on the side -h_m r^m / lambda > 0 */
+        res->type = IC_POINT_CUSP;
+        const double side = -h[m] / lambda > 0 ? 1.0 : -1.0;
+        for (int k = 0; k < 2; k++) {
+            ic_branch *br = &res->branches[k];
+            memset(br, 0, sizeof *br);
+            br->order = 1;
+            br->regular = 0;
+            for (int i = 0; i < 3; i++)
+                br->derivs[0][i] = side * (d[0] * cx->h->e1[i] + d[1] * cx->h->e2[i]);
+            memcpy(br->t, br->derivs[0], sizeof br->t);
+            if (m == 3) { /* w - phi ~ +-r^(3/2): n -> +-d_perp */
+                const double sg = k == 0 ? 1.0 : -1.0;
+                for (int i = 0; i < 3; i++)
+                    br->n[i] = sg * (dp[0] * cx->h->e1[i] + dp[1] * cx->h->e2[i]);
+                ic_cross3(br->b, br->t, br->n);
+                br->frame_defined = 1;
+            }
+        }
+        res->nbranches = 2;
+    } else if (-h[m] / lambda < 0) {
+        res->type = IC_POINT_ISOLATED_CONTACT;
+    } else { /* a tacnode: w = phi +- r^(m/2) sqrt(-h_m/lambda) + ... */
+        res->type = IC_POINT_TACNODE;
+        const double w0 = sqrt(-h[m] / lambda);
+        for (int k = 0; k < 2 && st == IC_OK; k++) {
+            double w[IC_JET_MAX_ORDER + 1];
+            const double om = k == 0 ? w0 : -w0;
+            const int valid = solve_branch(cx, w, gr, phi, m / 2, m, om, 2 * lambda * om);
+            st = lift_branch(cx, &res->branches[k], w, d, dp, valid, order, err);
+            if (st == IC_OK)
+                res->nbranches++;
+        }
+    }
+    free(gr);
+    return st;
+}
+
+ic_status ic_height_difference(ic_local_result *res, const ic_sheet sh[2], int order,
+                               const ic_local_options *opt, ic_error *err)
+{
+    const int H = order + 8 < IC_JET_MAX_ORDER ? order + 8 : IC_JET_MAX_ORDER;
+    ic_jet_space *sp2 = NULL, *sp1 = NULL;
+    ic_heights h;
+    memset(&h, 0, sizeof h);
+    double *s2 = NULL, *s1 = NULL, *g = NULL;
+    ic_status st = ic_jet_space_new(&sp2, 2, H, err);
+    if (st == IC_OK)
+        st = ic_jet_space_new(&sp1, 1, H, err);
+    if (st != IC_OK)
+        goto cleanup;
+    s2 = malloc(ic_jet_scratch_len(sp2) * sizeof *s2);
+    s1 = malloc(ic_jet_scratch_len(sp1) * sizeof *s1);
+    if (!s2 || !s1) {
+        st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory at a tangential point");
+        goto cleanup;
+    }
+    st = ic_heights_compute(&h, sh, sp2, err);
+    if (st != IC_OK)
+        goto cleanup;
+    const tctx cx = {&h, sp2, sp1, H, s2, s1, opt};
+    g = h.g;
+    /* the constant and linear parts measure how far P is from an exact
+     * tangential point (the residual); the analysis uses the rest */
+    g[0] = g[1] = g[2] = 0.0;
+    const double a = g[3], b = g[4], c = g[5];
+    const double scale2 = fmax(degree_max(sp2, h.psi[0], 2), degree_max(sp2, h.psi[1], 2));
+    const double q2 = fmax(fmax(fabs(a), fabs(c)), fabs(b) / 2);
+    res->discriminant = b * b / 4 - a * c;
+    res->nbranches = 0;
+    if (q2 > opt->contact_tol * scale2) {
+        const double D = res->discriminant;
+        if (fabs(D) <= opt->contact_tol * q2 * q2) {
+            res->discriminant = 0.0;
+            st = degenerate(&cx, res, g, a, b, c, order, err);
+        } else if (D < 0) {
+            res->type = IC_POINT_ISOLATED_CONTACT;
+        } else {
+            /* g2(cos phi, sin phi) = A0 + B0 cos 2phi + C0 sin 2phi = 0 */
+            res->type = IC_POINT_BRANCH;
+            const double A0 = (a + c) / 2, B0 = (a - c) / 2, C0 = b / 2;
+            const double R = hypot(B0, C0), alpha = atan2(C0, B0), beta = acos(-A0 / R);
+            for (int k = 0; k < 2 && st == IC_OK; k++)
+                st = smooth_branch(&cx, res, g, 0.5 * (alpha + (k ? -beta : beta)), 2, order,
+                                   err);
+        }
+    } else {
+        /* the quadratic parts agree: the leading form decides */
+        int m = 0;
+        for (int j = 3; j <= H && !m; j++) {
+            const double sj = fmax(degree_max(sp2, h.psi[0], j), degree_max(sp2, h.psi[1], j));
+            if (degree_max(sp2, g, j) > opt->contact_tol * sj)
+                m = j;
+        }
+        if (m == 0) {
+            st = ic_error_set(err, IC_ERR_UNABLE, 0,
+                              "the surfaces agree to order %d at the point: they coincide "
+                              "near it",
+                              H);
+            goto cleanup;
+        }
+        res->type = IC_POINT_HIGHER_ORDER_CONTACT;
+        res->contact_order = m;
+        double roots[IC_LOCAL_MAX_BRANCHES];
+        const int nr = form_roots(&cx, g, m, roots, IC_LOCAL_MAX_BRANCHES);
+        for (int k = 0; k < nr && st == IC_OK; k++)
+            st = smooth_branch(&cx, res, g, roots[k], m, order, err);
+    }
+cleanup:
+    ic_heights_free(&h);
+    free(s1);
+    free(s2);
+    ic_jet_space_free(sp1);
+    ic_jet_space_free(sp2);
+    return st;
+}

@@ -1,0 +1,24 @@
+/* Tangential points: heights over the tangent plane and the
+ * height-difference method (src/local/height.c, src/local/tangential.c). */
+#ifndef IC_TANGENTIAL_H
+#define IC_TANGENTIAL_H
+
+#include "local_internal.h"
+
+typedef struct {
+    double P[3], e1[3], e2[3], N[3]; /* the point and the frame of the tangent plane */
+    const ic_jet_space *sp;          /* two variables (x, y) */
+    double *psi[2];                  /* heights of A and B along N */
+    double *g;                       /* psi_A - psi_B */
+} ic_heights;
+
+ic_status ic_heights_compute(ic_heights *h, const ic_sheet sh[2], const ic_jet_space *sp,
+                             ic_error *err);
+void ic_heights_free(ic_heights *h);
+
+/* Classifies a tangential point and computes every branch through it to
+ * `order` (res->type, discriminant, contact_order, branches). */
+ic_status ic_height_difference(ic_local_result *res, const ic_sheet sh[2], int order,
+                               const ic_local_options *opt, ic_error *err);
+
+#endif

@@ -1,0 +1,215 @@
+/* Tangential points by the height-difference method: classification and
+ * every branch, against independent truth (the branches of known curves in
+ * tests/truth/transversal_truth.txt), in several pairings. */
+#include <string.h>
+
+#include "harness.h"
+#include "intercurve/local.h"
+#include "truth_file.h"
+
+typedef struct {
+    const char *xyz[3];
+    const char *f;
+    const char *par[2];  /* parameter names */
+    double domain[2][2]; /* all zero: unbounded */
+} surf;
+
+#define IMP(f) {{0}, f, {0}, {{0}}}
+#define PAR(x, y, z, p, q) {{x, y, z}, NULL, {p, q}, {{0}}}
+
+typedef struct {
+    const char *label;
+    surf A, B;
+    double point[3];
+    ic_point_type type;
+    int nbranches;
+    const char *truth; /* name of the truth cases of the branches, or NULL */
+} tcase;
+
+#define CYL_P PAR("1 + cos(v)", "sin(v)", "u", "u", "v")
+#define CYL_I IMP("(x - 1)^2 + y^2 - 1")
+#define SPH_P PAR("2*cos(u)*cos(v)", "2*sin(u)*cos(v)", "2*sin(v)", "u", "v")
+#define SPH_I IMP("x^2 + y^2 + z^2 - 4")
+
+static const tcase CASES[] = {
+    {"Viviani branch point, param/param", CYL_P, SPH_P, {2, 0, 0}, IC_POINT_BRANCH, 2, "tangent-viviani"},
+    {"Viviani branch point, param/implicit", CYL_P, SPH_I, {2, 0, 0}, IC_POINT_BRANCH, 2, "tangent-viviani"},
+    {"Viviani branch point, implicit/param", CYL_I, SPH_P, {2, 0, 0}, IC_POINT_BRANCH, 2, "tangent-viviani"},
+    {"Viviani branch point, implicit/implicit", CYL_I, SPH_I, {2, 0, 0}, IC_POINT_BRANCH, 2, "tangent-viviani"},
+    {"seed 002 Ex 1 branch point", PAR("cos(u)*cos(v)", "sin(u)*cos(v)", "sin(v)", "u", "v"),
+     PAR("0.5*cos(s) + 0.5", "0.5*sin(s)", "t", "s", "t"), {1, 0, 0}, IC_POINT_BRANCH, 2,
+     "tangent-seed002"},
+    {"seed 001 Ex 5.1 branch point", IMP("x^2/0.36 + y^2/0.64 + z^2 - 1"),
+     IMP("x^2/0.2025 + y^2/0.64 + z^2/1.5625 - 1"), {0, 0.8, 0}, IC_POINT_BRANCH, 2,
+     "tangent-ellipse51"},
+    {"seed 001 Ex 5.2 tangential circle", IMP("(x^2 + y^2 + z^2 + 3)^2 - 16*(x^2 + y^2)"),
+     IMP("x^2 + y^2 + z^2 - 1"), {0.6, 0.8, 0}, IC_POINT_TANGENTIAL_CURVE, 1, "tangent-circle52"},
+    {"seed 001 Ex 5.3 isolated contact", IMP("x^2 + y^2 + z^2 - 1"), IMP("y - 1"), {0, 1, 0},
+     IC_POINT_ISOLATED_CONTACT, 0, NULL},
+    {"seed 002 Ex 3 tangential circle", PAR("8*u - 1", "15*v - 15/2", "0", "u", "v"),
+     {{"cos(2*pi*s)*(2 + cos(2*pi*t)) - 1/5", "sin(2*pi*s)*(2 + cos(2*pi*t))", "1 + sin(2*pi*t)"},
+      NULL, {"s", "t"}, {{0, 1}, {0, 1}}},
+     {-1, -1.8330302779823358, 0}, IC_POINT_TANGENTIAL_CURVE, 1, "tangent-circle002"},
+    {"tacnode z = y^2 - x^4 and z = 0", IMP("z - y^2 + x^4"), IMP("z"), {0, 0, 0},
+     IC_POINT_TACNODE, 2, "tacnode"},
+    {"seed 002 Ex 2 cusp", PAR("u", "v", "u^3 - v^2", "u", "v"), PAR("s", "t", "0", "s", "t"),
+     {0, 0, 0}, IC_POINT_CUSP, 2, NULL},
+    {"monkey saddle and its tangent plane", PAR("u", "v", "u^3 - 3*u*v^2", "u", "v"), IMP("z"),
+     {0, 0, 0}, IC_POINT_HIGHER_ORDER_CONTACT, 3, NULL},
+};
+
+static ic_surface *build(const surf *d)
+{
+    ic_surface *s = NULL;
+    ic_status st = d->f ? ic_surface_new_implicit(&s, d->f, NULL, 0, NULL)
+                        : ic_surface_new_parametric(&s, d->xyz, d->par, NULL, 0, NULL, NULL);
+    if (st == IC_OK && d->domain[0][1] > d->domain[0][0]) {
+        const int periodic[2] = {1, 1};
+        st = ic_surface_set_domain(s, d->domain, periodic, NULL);
+    }
+    if (st != IC_OK) {
+        ic_surface_free(s);
+        return NULL;
+    }
+    return s;
+}
+
+static double dot(const double *a, const double *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static double worst_low, worst_high;
+
+/* Every truth branch of `name` matches one computed branch (t parallel). */
+static void match_truth(const char *label, const ic_local_result *res, const truth_case *tc,
+                        int ntc, const char *name, int order)
+{
+    int matched = 0;
+    for (int c = 0; c < ntc; c++) {
+        if (strcmp(tc[c].name, name) != 0)
+            continue;
+        const double *tt = tc[c].d[0], *kk = tc[c].d[1];
+        const ic_branch *br = NULL;
+        double best = INFINITY;
+        for (int b = 0; b < res->nbranches; b++) {
+            const ic_branch *cand = &res->branches[b];
+            if (fabs(dot(cand->t, tt)) < 1 - 1e-9)
+                continue;
+            /* tangent branches (a tacnode) differ in c'' */
+            const double dk = (cand->derivs[1][0] - kk[0]) * (cand->derivs[1][0] - kk[0]) +
+                              (cand->derivs[1][1] - kk[1]) * (cand->derivs[1][1] - kk[1]) +
+                              (cand->derivs[1][2] - kk[2]) * (cand->derivs[1][2] - kk[2]);
+            if (dk < best)
+                best = dk, br = cand;
+        }
+        CHECK(br != NULL, "%s: no branch along the truth tangent of %s %s", label, name,
+              tc[c].extra);
+        if (!br)
+            continue;
+        matched++;
+        const double sign = dot(br->t, tt) < 0 ? -1.0 : 1.0;
+        double s = 1.0;
+        for (int k = 0; k < order && k < 8; k++) {
+            s *= sign;
+            const double want[3] = {s * tc[c].d[k][0], s * tc[c].d[k][1], s * tc[c].d[k][2]};
+            const double *got = br->derivs[k];
+            const double e = sqrt((got[0] - want[0]) * (got[0] - want[0]) +
+                                  (got[1] - want[1]) * (got[1] - want[1]) +
+                                  (got[2] - want[2]) * (got[2] - want[2])) /
+                             fmax(1.0, sqrt(dot(want, want)));
+            if (k < 4)
+                worst_low = fmax(worst_low, e);
+            else
+                worst_high = fmax(worst_high, e);
+            /* 1e-10 to order 4, 1e-7 to order 8: the branch series passes
+             * through a reversion and two compositions of order up to 16 */
+            CHECK(e <= (k < 4 ? 1e-10 : 1e-7), "%s: branch %s, c^(%d) off by %g", label,
+                  tc[c].extra, k + 1, e);
+        }
+        if (br->frame_defined) {
+            CHECK(fabs(br->kappa - tc[c].kappa) <= 1e-10 * fmax(1, tc[c].kappa),
+                  "%s: kappa %.17g vs %.17g", label, br->kappa, tc[c].kappa);
+            CHECK(fabs(br->tau - tc[c].tau) <= 1e-10 * fmax(1, fabs(tc[c].tau)),
+                  "%s: tau %.17g vs %.17g", label, br->tau, tc[c].tau);
+        }
+    }
+    CHECK(matched == res->nbranches, "%s: %d truth branches for %d computed", label, matched,
+          res->nbranches);
+}
+
+int main(int argc, char **argv)
+{
+    static truth_case truth[64];
+    const int ntc = read_truth(argc > 1 ? argv[1] : "tests/truth/transversal_truth.txt", truth, 64);
+    CHECK(ntc > 0, "truth read");
+    ic_local_options opt;
+    ic_local_defaults(&opt);
+    const int order = 8;
+    for (size_t i = 0; i < sizeof CASES / sizeof CASES[0]; i++) {
+        const tcase *tc = &CASES[i];
+        ic_surface *A = build(&tc->A), *B = build(&tc->B);
+        ic_pair *pair = NULL;
+        if (!A || !B || ic_pair_new(&pair, A, B, NULL) != IC_OK) {
+            CHECK(0, "%s: setup", tc->label);
+            goto next;
+        }
+        ic_local_point pt;
+        ic_local_result res;
+        ic_error err;
+        ic_status st = ic_local_locate(pair, &pt, tc->point, &opt, &err);
+        CHECK(st == IC_OK, "%s: locate: %s", tc->label, err.message);
+        if (st != IC_OK)
+            goto next;
+        st = ic_local_apparatus(pair, &res, &pt, order, IC_METHOD_AUTO, &opt, &err);
+        CHECK(st == IC_OK, "%s: %s", tc->label, err.message);
+        if (st != IC_OK)
+            goto next;
+        CHECK(res.type == tc->type, "%s: type %s", tc->label, ic_point_type_name(res.type));
+        CHECK(res.nbranches == tc->nbranches, "%s: %d branches", tc->label, res.nbranches);
+        CHECK(res.method == IC_METHOD_HEIGHT_DIFFERENCE, "%s: method", tc->label);
+        if (tc->truth)
+            match_truth(tc->label, &res, truth, ntc, tc->truth, order);
+        if (tc->type == IC_POINT_BRANCH)
+            CHECK(res.discriminant > 0, "%s: Delta > 0", tc->label);
+        if (strstr(tc->label, "Viviani")) /* psi = -y^2/2 and -(y^2 + z^2)/4: Delta = 1/16 */
+            CHECK(fabs(res.discriminant - 0.0625) <= 1e-15, "%s: Delta %.17g", tc->label,
+                  res.discriminant);
+        if (tc->type == IC_POINT_ISOLATED_CONTACT) /* g2 = -(x^2 + z^2)/2: Delta = -1/4 */
+            CHECK(fabs(res.discriminant + 0.25) <= 1e-15, "%s: Delta %.17g", tc->label,
+                  res.discriminant);
+        if (tc->type == IC_POINT_CUSP) {
+            /* u^3 = v^2: half-branches (t^2, +-t^3) leave along +x; n -> (0, +-1, 0)
+             * (ERRATA rows 13-14) */
+            CHECK(res.contact_order == 3, "cusp of order 3");
+            for (int b = 0; b < 2; b++) {
+                const ic_branch *br = &res.branches[b];
+                CHECK(!br->regular && fabs(br->t[0] - 1) <= 1e-14 && br->frame_defined &&
+                          fabs(fabs(br->n[1]) - 1) <= 1e-14,
+                      "cusp half-branch %d: t (%g %g %g) n (%g %g %g)", b, br->t[0], br->t[1],
+                      br->t[2], br->n[0], br->n[1], br->n[2]);
+            }
+            CHECK(res.branches[0].n[1] * res.branches[1].n[1] < 0, "opposite normals");
+        }
+        if (tc->type == IC_POINT_HIGHER_ORDER_CONTACT) {
+            /* x^3 - 3 x y^2 = x (x^2 - 3 y^2): the lines at 90, 30 and 150 degrees */
+            CHECK(res.contact_order == 3, "leading form of degree 3");
+            for (int b = 0; b < res.nbranches; b++) {
+                const ic_branch *br = &res.branches[b];
+                const double ang = atan2(br->t[1], br->t[0]) * 180 / 3.141592653589793;
+                const double a = fmod(ang + 360.0, 180.0);
+                CHECK(fabs(a - 90) < 1e-9 || fabs(a - 30) < 1e-9 || fabs(a - 150) < 1e-9,
+                      "line at %g degrees", a);
+                CHECK(br->kappa <= 1e-13 && !br->frame_defined, "a straight branch: kappa %g",
+                      br->kappa);
+            }
+        }
+    next:
+        ic_pair_free(pair);
+        ic_surface_free(A);
+        ic_surface_free(B);
+    }
+    printf("tangential branches against truth: worst c^(1..4) %.2g, c^(5..8) %.2g\n", worst_low,
+           worst_high);
+    return harness_finish("test_tangential");
+}

@@ -138,6 +138,60 @@ static void match_truth(const char *label, const ic_local_result *res, const tru
           res->nbranches);
 }
 
+/* Transversal answers near the branch point (2, 0, 0) of Viviani's curve
+ * c(theta) = (1 + cos theta, sin theta, 2 sin(theta/2)), against its closed
+ * forms kappa = sqrt(13 + 3 cos theta)/(3 + cos theta)^(3/2) and
+ * tau = 6 cos(theta/2)/(13 + 3 cos theta): they converge to the branch values
+ * 1/2 and 3/8, and their error grows like eps/angle^2 as the normals close;
+ * below the tangential threshold the point is analysed as tangential. */
+static void test_near_tangential(void)
+{
+    ic_surface *A = NULL, *B = NULL;
+    ic_pair *pair = NULL;
+    if (ic_surface_new_implicit(&A, "(x - 1)^2 + y^2 - 1", NULL, 0, NULL) ||
+        ic_surface_new_implicit(&B, "x^2 + y^2 + z^2 - 4", NULL, 0, NULL) ||
+        ic_pair_new(&pair, A, B, NULL))
+        return;
+    ic_local_options opt;
+    ic_local_defaults(&opt);
+    printf("near the branch point: theta, angle, |kappa - exact|, |tau - exact|, "
+           "|kappa - 1/2|\n");
+    for (int e = 2; e <= 8; e++) {
+        const double th = pow(10.0, -e);
+        const double X[3] = {1 + cos(th), sin(th), 2 * sin(th / 2)};
+        ic_local_point pt;
+        ic_local_result res;
+        ic_error err;
+        if (ic_local_locate(pair, &pt, X, &opt, &err) != IC_OK ||
+            ic_local_apparatus(pair, &res, &pt, 3, IC_METHOD_AUTO, &opt, &err) != IC_OK) {
+            CHECK(0, "theta 1e-%d: %s", e, err.message);
+            continue;
+        }
+        if (res.type != IC_POINT_TRANSVERSAL) {
+            /* below the threshold: the branch values, O(theta) from the exact ones */
+            CHECK(res.angle < opt.tangential_angle && res.type == IC_POINT_BRANCH,
+                  "theta 1e-%d: angle %g classified %s", e, res.angle,
+                  ic_point_type_name(res.type));
+            printf("  1e-%d  %.2e  tangential: branch values\n", e, res.angle);
+            continue;
+        }
+        const double kx = sqrt(13 + 3 * cos(th)) / pow(3 + cos(th), 1.5);
+        const double tx = 6 * cos(th / 2) / (13 + 3 * cos(th));
+        const double ek = fabs(res.branches[0].kappa - kx);
+        const double et = fabs(fabs(res.branches[0].tau) - tx);
+        printf("  1e-%d  %.2e  %.2e  %.2e  %.2e\n", e, res.angle, ek, et,
+               fabs(res.branches[0].kappa - 0.5));
+        /* the order-2 and order-3 systems have determinant sin(angle):
+         * errors of a few eps / angle^2 (measured: below 4 eps / angle^2) */
+        const double bound = 64 * DBL_EPSILON / (res.angle * res.angle);
+        CHECK(ek <= bound && et <= bound, "theta 1e-%d: errors %g %g above %g", e, ek, et,
+              bound);
+    }
+    ic_pair_free(pair);
+    ic_surface_free(A);
+    ic_surface_free(B);
+}
+
 int main(int argc, char **argv)
 {
     static truth_case truth[64];
@@ -209,6 +263,7 @@ int main(int argc, char **argv)
         ic_surface_free(A);
         ic_surface_free(B);
     }
+    test_near_tangential();
     printf("tangential branches against truth: worst c^(1..4) %.2g, c^(5..8) %.2g\n", worst_low,
            worst_high);
     return harness_finish("test_tangential");

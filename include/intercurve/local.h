@@ -72,7 +72,9 @@ typedef struct {
     /** grid cells per parameter for the closest-point search (default 24) */
     int grid;
     /** radians: normals closer than this to parallel make the point
-     *  tangential (default 1e-6; docs/local.md discusses the choice) */
+     *  tangential (default 1e-5, about eps^(1/3), where the transversal
+     *  errors eps/angle^2 meet the O(angle) distance to the tangential
+     *  values; docs/tangential.md measures it) */
     double tangential_angle;
     /** parameter distance: two preimages of a self-intersection closer
      *  than this are the same sheet (default 1e-6) */

@@ -43,7 +43,7 @@ void ic_local_defaults(ic_local_options *opt)
     opt->newton_tol = 1e-15;
     opt->max_newton = 60;
     opt->grid = 24;
-    opt->tangential_angle = 1e-6;
+    opt->tangential_angle = 1e-5; /* about eps^(1/3): docs/tangential.md */
     opt->distinct_params = 1e-6;
     opt->kappa_zero = 1e-12;
     opt->contact_tol = 1e-8;

@@ -173,6 +173,9 @@ typedef struct {
     /** tangential points: the order of contact along the kernel (cusp,
      *  tacnode) or of the leading form (higher-order contact); 0 otherwise */
     int contact_order;
+    /** perturbation method: the change of the extrapolated t, n, kappa
+     *  between the last two Richardson levels (an error estimate); 0 otherwise */
+    double error_estimate;
     int nbranches;
     ic_branch branches[IC_LOCAL_MAX_BRANCHES];
 } ic_local_result;

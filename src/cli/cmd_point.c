@@ -21,7 +21,9 @@ static const char POINT_HELP[] =
     "                  for a self-intersection both preimages U,V,P,Q\n"
     "  --order K       highest derivative (default 4; jet: up to 16, closed-form: 3)\n"
     "  --method M      auto, jet (transversal, any order), closed-form (the papers'\n"
-    "                  formulas, order <= 3), height-difference (tangential points)\n"
+    "                  formulas, order <= 3), height-difference (tangential points,\n"
+    "                  any order), perturbation (tangential points: t, n, kappa as\n"
+    "                  limits of nearby transversal values, with an error estimate)\n"
     "  --format F      json (default) or text\n"
     "  --point-tol T   largest distance of the given point from either surface\n"
     "                  (default 1e-6); farther is an error saying how far\n"
@@ -103,6 +105,8 @@ static cJSON *result_json(const ic_local_result *res, const ic_pair *pair, int o
     if (res->contact_order)
         cJSON_AddNumberToObject(doc, "contact_order", res->contact_order);
     cJSON_AddStringToObject(doc, "method", ic_method_name(res->method));
+    if (res->method == IC_METHOD_PERTURBATION)
+        cJSON_AddItemToObject(doc, "error_estimate", ic_json_number_or_null(res->error_estimate));
     cJSON_AddNumberToObject(doc, "order", order);
     cJSON *branches = cJSON_CreateArray();
     for (int i = 0; i < res->nbranches; i++)

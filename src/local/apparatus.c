@@ -22,10 +22,6 @@ ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res, const ic_local
                             "the closed-form method gives derivatives up to order %d (the "
                             "papers stop at c'''); use the jet method for order %d",
                             IC_CLOSED_FORM_MAX_ORDER, order);
-    if (res->method == IC_METHOD_PERTURBATION)
-        return ic_error_set(err, IC_ERR_INVALID, 0,
-                            "the perturbation method is not available yet; use jet, "
-                            "closed-form or height-difference");
     ic_sheet sh[2];
     for (int s = 0; s < 2; s++) {
         ic_status st = ic_sheet_at(pair, &sh[s], s, pt, err);
@@ -44,15 +40,25 @@ ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res, const ic_local
                                 "closed-form method there is not available yet; use "
                                 "height-difference",
                                 res->angle);
-        res->method = IC_METHOD_HEIGHT_DIFFERENCE;
-        ic_status st = ic_height_difference(res, sh, order, opt, err);
+        const int perturb = res->method == IC_METHOD_PERTURBATION;
+        if (!perturb)
+            res->method = IC_METHOD_HEIGHT_DIFFERENCE;
+        /* the classification is the height-difference method's */
+        ic_status st = ic_height_difference(res, sh, perturb ? 2 : order, opt, err);
         if (st != IC_OK)
             return st;
+        if (perturb)
+            return ic_perturbation(pair, res, sh, opt, err);
         for (int i = 0; i < res->nbranches; i++)
             if (res->branches[i].regular)
                 ic_branch_finish(&res->branches[i], sh, opt);
         return IC_OK;
     }
+    if (res->method == IC_METHOD_PERTURBATION)
+        return ic_error_set(err, IC_ERR_INVALID, 0,
+                            "the perturbation method is for tangential points; this one is "
+                            "transversal (normals %.3g rad apart)",
+                            res->angle);
     if (res->method == IC_METHOD_HEIGHT_DIFFERENCE)
         return ic_error_set(err, IC_ERR_INVALID, 0,
                             "the height-difference method is for tangential points; this one "

@@ -12,8 +12,7 @@
 
 #include <string.h>
 
-/* II(X, Y) of a sheet for tangent vectors X, Y in space. */
-static double second_form(const ic_sheet *sh, const double *X, const double *Y)
+double ic_sheet_second_form(const ic_sheet *sh, const double *X, const double *Y)
 {
     const double E = sh->geo.first[0], F = sh->geo.first[1], G = sh->geo.first[2];
     const double det = E * G - F * F;
@@ -50,7 +49,7 @@ void ic_branch_finish(ic_branch *br, const ic_sheet sh[2], const ic_local_option
             ic_cross3(Nt, N, br->t);
             br->surface[s].kappa_n = ic_dot3(c2, N);
             br->surface[s].kappa_g = ic_dot3(c2, Nt);
-            br->surface[s].tau_g = second_form(&sh[s], br->t, Nt);
+            br->surface[s].tau_g = ic_sheet_second_form(&sh[s], br->t, Nt);
         }
     }
     if (K >= 3 && br->frame_defined) {

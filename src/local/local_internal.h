@@ -33,6 +33,10 @@ ic_status ic_sheet_at(ic_pair *pair, ic_sheet *sh, int which, const ic_local_poi
  * the point: ..."; returns st. */
 ic_status ic_sheet_singular(ic_error *err, ic_status st, int which);
 
+/* II(X, Y) of a sheet for tangent vectors X, Y in space (relative to the
+ * sheet's own normal). */
+double ic_sheet_second_form(const ic_sheet *sh, const double *X, const double *Y);
+
 /* Partial derivative of a parametric sheet: d^(i+j) R / du^i dv^j (i+j <= 3). */
 void ic_sheet_partial(const ic_sheet *sh, int i, int j, double *out);
 /* Partial derivative of an implicit sheet: d^alpha f for alpha in N^3, |alpha| <= 3. */

@@ -21,4 +21,11 @@ void ic_heights_free(ic_heights *h);
 ic_status ic_height_difference(ic_local_result *res, const ic_sheet sh[2], int order,
                                const ic_local_options *opt, ic_error *err);
 
+/* The perturbation method (seed 002 section 3) for the branches of a point
+ * already classified in res (branch point, higher-order contact, tacnode:
+ * nearby points on small circles; tangential curve: B shifted along N by
+ * epsilon); Richardson-extrapolated, with res->error_estimate. */
+ic_status ic_perturbation(ic_pair *pair, ic_local_result *res, const ic_sheet sh[2],
+                          const ic_local_options *opt, ic_error *err);
+
 #endif

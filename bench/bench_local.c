@@ -56,7 +56,7 @@ int main(void)
     const double th = 0.7;
     bench_case cases[8];
     int n = 0;
-    ic_surface *s[12] = {NULL};
+    ic_surface *s[24] = {NULL};
     int ns = 0;
 #define PRIM(p, form) (ic_surface_new_primitive(&s[ns], &(p), (form), NULL) == IC_OK ? s[ns++] : NULL)
     cases[n++] = (bench_case){"Viviani param/param (primitives)", PRIM(cyl, IC_PARAMETRIC),
@@ -125,6 +125,46 @@ int main(void)
         }
         printf("%-36s %9.0f %9.0f %9.0f %9.0f %9.0f %9.1f\n", cases[i].name, r[0], r[1], r[2],
                r[3], r[4], r[3] / r[4]);
+        ic_pair_free(j.pair);
+    }
+    /* tangential points: classification (order 1), the full apparatus by the
+     * height-difference method at K = 3 and 8, and the perturbation method */
+    ic_primitive tor = {.kind = IC_PRIM_TORUS, .major_radius = 2, .radius = 1};
+    ic_primitive unit = {.kind = IC_PRIM_SPHERE, .radius = 1};
+    ic_primitive touch = {.kind = IC_PRIM_PLANE, .center = {0, 1, 0}, .normal = {0, 1, 0}};
+    bench_case tang[4];
+    int nt = 0;
+    tang[nt++] = (bench_case){"Viviani branch point impl/impl", PRIM(cyl, IC_IMPLICIT),
+                              PRIM(sph, IC_IMPLICIT), {2, 0, 0}};
+    tang[nt++] = (bench_case){"Viviani branch point param/param", PRIM(cyl, IC_PARAMETRIC),
+                              PRIM(sph, IC_PARAMETRIC), {2, 0, 0}};
+    tang[nt++] = (bench_case){"torus/sphere tangential circle", PRIM(tor, IC_IMPLICIT),
+                              PRIM(unit, IC_IMPLICIT), {0.6, 0.8, 0}};
+    tang[nt++] = (bench_case){"sphere/plane isolated contact", PRIM(unit, IC_IMPLICIT),
+                              PRIM(touch, IC_IMPLICIT), {0, 1, 0}};
+    printf("\n%-36s %10s %10s %10s %12s\n", "tangential point (ns per point)", "classify",
+           "height K=3", "height K=8", "perturbation");
+    for (int i = 0; i < nt; i++) {
+        job j;
+        memset(&j, 0, sizeof j);
+        ic_local_defaults(&j.opt);
+        ic_error err;
+        if (!tang[i].A || !tang[i].B || ic_pair_new(&j.pair, tang[i].A, tang[i].B, &err) != IC_OK ||
+            ic_local_locate(j.pair, &j.pt, tang[i].at, &j.opt, &err) != IC_OK) {
+            fprintf(stderr, "%s: %s\n", tang[i].name, err.message);
+            return 1;
+        }
+        double r[4];
+        const int orders[3] = {1, 3, 8};
+        j.method = IC_METHOD_HEIGHT_DIFFERENCE;
+        for (int k = 0; k < 3; k++) {
+            j.order = orders[k];
+            r[k] = bench_ns_per_call(run_apparatus, &j);
+        }
+        j.method = IC_METHOD_PERTURBATION;
+        j.order = 2;
+        r[3] = bench_ns_per_call(run_apparatus, &j);
+        printf("%-36s %10.0f %10.0f %10.0f %12.0f\n", tang[i].name, r[0], r[1], r[2], r[3]);
         ic_pair_free(j.pair);
     }
     for (int i = 0; i < ns; i++)

@@ -173,6 +173,11 @@ typedef struct {
     /** tangential points: the order of contact along the kernel (cusp,
      *  tacnode) or of the leading form (higher-order contact); 0 otherwise */
     int contact_order;
+    /** closed-form method at tangential points: the paper's coefficients
+     *  (seed 000 (4.8): a11, a12, a22) and its discriminant a12^2 - a11 a22 */
+    int npaper;
+    const char *paper_names[4];
+    double paper_values[4];
     /** perturbation method: the change of the extrapolated t, n, kappa
      *  between the last two Richardson levels (an error estimate); 0 otherwise */
     double error_estimate;

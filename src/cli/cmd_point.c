@@ -105,6 +105,12 @@ static cJSON *result_json(const ic_local_result *res, const ic_pair *pair, int o
     if (res->contact_order)
         cJSON_AddNumberToObject(doc, "contact_order", res->contact_order);
     cJSON_AddStringToObject(doc, "method", ic_method_name(res->method));
+    if (res->npaper) {
+        cJSON *pc = cJSON_CreateObject();
+        for (int i = 0; i < res->npaper; i++)
+            cJSON_AddItemToObject(pc, res->paper_names[i], ic_json_number_or_null(res->paper_values[i]));
+        cJSON_AddItemToObject(doc, "paper_coefficients", pc);
+    }
     if (res->method == IC_METHOD_PERTURBATION)
         cJSON_AddItemToObject(doc, "error_estimate", ic_json_number_or_null(res->error_estimate));
     cJSON_AddNumberToObject(doc, "order", order);

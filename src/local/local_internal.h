@@ -8,21 +8,23 @@
 struct ic_pair {
     ic_surface *s[2];      /* A, B (B = A for a self-intersection) */
     int self;
-    /* one-variable spaces of order 0..IC_LOCAL_MAX_ORDER (curve jets) and the
-     * spaces of order 3 for the sheets' derivative tensors */
+    /* one-variable spaces of order 0..IC_LOCAL_MAX_ORDER (curve jets), the
+     * spaces of order 4 for the sheets' derivative tensors (the tangential
+     * closed forms need fourth derivatives) and of order 2 for locating */
     ic_jet_space *curve[IC_LOCAL_MAX_ORDER + 1];
     ic_jet_space *tensor[2]; /* [0]: 2 variables, [1]: 3 variables */
+    ic_jet_space *near[2];
 };
 
 /* One sheet of the pair at the point: its geometry and derivatives to
- * order 3 (parametric: 3 jets of 10 coefficients over (u, v); implicit: one
- * jet of 20 over (x, y, z)). */
+ * order 4 (parametric: 3 jets of 15 coefficients over (u, v); implicit: one
+ * jet of 35 over (x, y, z)). */
 typedef struct {
     ic_surface *s;
     int parametric;
     double at[3];          /* (u, v) or (x, y, z) */
     ic_surface_geometry geo;
-    double taylor[30];
+    double taylor[45];
 } ic_sheet;
 
 /* Fills sheet `which` (0 = A, 1 = B) at the point. */
@@ -37,9 +39,9 @@ ic_status ic_sheet_singular(ic_error *err, ic_status st, int which);
  * sheet's own normal). */
 double ic_sheet_second_form(const ic_sheet *sh, const double *X, const double *Y);
 
-/* Partial derivative of a parametric sheet: d^(i+j) R / du^i dv^j (i+j <= 3). */
+/* Partial derivative of a parametric sheet: d^(i+j) R / du^i dv^j (i+j <= 4). */
 void ic_sheet_partial(const ic_sheet *sh, int i, int j, double *out);
-/* Partial derivative of an implicit sheet: d^alpha f for alpha in N^3, |alpha| <= 3. */
+/* Partial derivative of an implicit sheet: d^alpha f for alpha in N^3, |alpha| <= 4. */
 double ic_sheet_fpartial(const ic_sheet *sh, int ax, int ay, int az);
 
 /* Methods: fill the branch derivatives c^(1..K) (and parameter curves) at

@@ -31,17 +31,17 @@ static ic_status param_eval2(ic_pair *pair, ic_surface *s, const double *uv, dou
                              double Ru[3], double Rv[3], double Ruu[3], double Ruv[3],
                              double Rvv[3], ic_error *err)
 {
-    double t[30];
-    ic_status st = ic_surface_taylor(s, t, uv, pair->tensor[0], err);
+    double t[18]; /* order 2: 1, u, v, u^2, uv, v^2 per component */
+    ic_status st = ic_surface_taylor(s, t, uv, pair->near[0], err);
     if (st != IC_OK)
         return st;
     for (int k = 0; k < 3; k++) {
-        R[k] = t[10 * k];
-        Ru[k] = t[10 * k + 1];
-        Rv[k] = t[10 * k + 2];
-        Ruu[k] = 2 * t[10 * k + 3];
-        Ruv[k] = t[10 * k + 4];
-        Rvv[k] = 2 * t[10 * k + 5];
+        R[k] = t[6 * k];
+        Ru[k] = t[6 * k + 1];
+        Rv[k] = t[6 * k + 2];
+        Ruu[k] = 2 * t[6 * k + 3];
+        Ruv[k] = t[6 * k + 4];
+        Rvv[k] = 2 * t[6 * k + 5];
     }
     return IC_OK;
 }
@@ -50,8 +50,8 @@ static ic_status param_eval2(ic_pair *pair, ic_surface *s, const double *uv, dou
 static ic_status implicit_eval1(ic_pair *pair, ic_surface *s, const double *x, double *f,
                                 double grad[3], ic_error *err)
 {
-    double t[20];
-    ic_status st = ic_surface_taylor(s, t, x, pair->tensor[1], err);
+    double t[10];
+    ic_status st = ic_surface_taylor(s, t, x, pair->near[1], err);
     if (st != IC_OK)
         return st;
     *f = t[0];

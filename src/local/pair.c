@@ -66,10 +66,11 @@ ic_status ic_pair_new(ic_pair **out, ic_surface *A, ic_surface *B, ic_error *err
     ic_status st = IC_OK;
     for (int k = 0; k <= IC_LOCAL_MAX_ORDER && st == IC_OK; k++)
         st = ic_jet_space_new(&p->curve[k], 1, k, err);
-    if (st == IC_OK)
-        st = ic_jet_space_new(&p->tensor[0], 2, 3, err);
-    if (st == IC_OK)
-        st = ic_jet_space_new(&p->tensor[1], 3, 3, err);
+    for (int k = 0; k < 2 && st == IC_OK; k++) {
+        st = ic_jet_space_new(&p->tensor[k], 2 + k, 4, err);
+        if (st == IC_OK)
+            st = ic_jet_space_new(&p->near[k], 2 + k, 2, err);
+    }
     if (st != IC_OK) {
         ic_pair_free(p);
         return st;
@@ -84,8 +85,10 @@ void ic_pair_free(ic_pair *p)
         return;
     for (int k = 0; k <= IC_LOCAL_MAX_ORDER; k++)
         ic_jet_space_free(p->curve[k]);
-    ic_jet_space_free(p->tensor[0]);
-    ic_jet_space_free(p->tensor[1]);
+    for (int k = 0; k < 2; k++) {
+        ic_jet_space_free(p->tensor[k]);
+        ic_jet_space_free(p->near[k]);
+    }
     free(p);
 }
 
@@ -121,14 +124,14 @@ ic_status ic_sheet_singular(ic_error *err, ic_status st, int which)
     return st;
 }
 
-static const double FACT[4] = {1, 1, 2, 6};
+static const double FACT[5] = {1, 1, 2, 6, 24};
 
 void ic_sheet_partial(const ic_sheet *sh, int i, int j, double *out)
 {
     static const int start[5] = {0, 1, 3, 6, 10};
     const int idx = start[i + j] + j; /* degree i+j, v-exponent j */
     for (int k = 0; k < 3; k++)
-        out[k] = sh->taylor[10 * k + idx] * FACT[i] * FACT[j];
+        out[k] = sh->taylor[15 * k + idx] * FACT[i] * FACT[j];
 }
 
 double ic_sheet_fpartial(const ic_sheet *sh, int a, int b, int c)

@@ -28,4 +28,10 @@ ic_status ic_height_difference(ic_local_result *res, const ic_sheet sh[2], int o
 ic_status ic_perturbation(ic_pair *pair, ic_local_result *res, const ic_sheet sh[2],
                           const ic_local_options *opt, ic_error *err);
 
+/* Seed 000 section 4 at a tangential point of two parametric sheets already
+ * classified in res (branch point or tangential curve): the paper's
+ * coefficients and c', c'', c''' on each branch. */
+ic_status ic_closed_seed000_tangential(ic_local_result *res, const ic_sheet sh[2],
+                                       const ic_local_options *opt, ic_error *err);
+
 #endif

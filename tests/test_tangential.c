@@ -285,6 +285,90 @@ static void test_closed_form_random(void)
            "%.2g\n", tested, worst);
 }
 
+/* The corrected seed 001 section 4 against the height-difference method at
+ * random branch points of rotated implicit pairs with A = |grad f|/|grad h| != 1. */
+static void test_closed_form_implicit_random(void)
+{
+    harness_rng rng = {0xbb67ae8584caa73bull};
+    ic_local_options opt;
+    ic_local_defaults(&opt);
+    int tested = 0;
+    double worst = 0.0;
+    for (int trial = 0; trial < 120 * harness_multiplier() && tested < 40; trial++) {
+        /* a random rotation: Gram-Schmidt on random vectors */
+        double R[3][3];
+        for (int i = 0; i < 3; i++) {
+            for (int k = 0; k < 3; k++)
+                R[i][k] = harness_uniform(&rng, -1, 1);
+            for (int j = 0; j < i; j++) {
+                const double d = dot(R[i], R[j]);
+                for (int k = 0; k < 3; k++)
+                    R[i][k] -= d * R[j][k];
+            }
+            const double n = sqrt(dot(R[i], R[i]));
+            for (int k = 0; k < 3; k++)
+                R[i][k] /= n;
+        }
+        char X[3][120];
+        for (int i = 0; i < 3; i++)
+            snprintf(X[i], sizeof X[i], "(%.17g*x + %.17g*y + %.17g*z)", R[i][0], R[i][1], R[i][2]);
+        double p[7], q[7];
+        for (int i = 0; i < 7; i++)
+            p[i] = harness_uniform(&rng, -1, 1), q[i] = harness_uniform(&rng, -1, 1);
+        const double alpha = harness_uniform(&rng, 0.5, 2), beta = harness_uniform(&rng, -2, -0.5);
+        const double gam = harness_uniform(&rng, -1, 1);
+        char F[1600], H[1600];
+        snprintf(F, sizeof F,
+                 "%.17g*(%s - (%.17g*%s^2 + %.17g*%s*%s + %.17g*%s^2 + %.17g*%s^3 + %.17g*%s^2*%s + "
+                 "%.17g*%s*%s^2 + %.17g*%s^4)) + %.17g*%s^2",
+                 alpha, X[2], p[0], X[0], p[1], X[0], X[1], p[2], X[1], p[3], X[0], p[4], X[0],
+                 X[1], p[5], X[0], X[1], p[6], X[1], gam, X[2]);
+        snprintf(H, sizeof H,
+                 "%.17g*(%s - (%.17g*%s^2 + %.17g*%s*%s + %.17g*%s^2 + %.17g*%s^3 + %.17g*%s^2*%s + "
+                 "%.17g*%s*%s^2 + %.17g*%s^4)) + %.17g*%s*%s",
+                 beta, X[2], q[0], X[0], q[1], X[0], X[1], q[2], X[1], q[3], X[0], q[4], X[0],
+                 X[1], q[5], X[0], X[1], q[6], X[1], gam, X[2], X[0]);
+        const surf SA = IMP(F), SB = IMP(H);
+        ic_surface *A = build(&SA), *B = build(&SB);
+        ic_pair *pair = NULL;
+        ic_local_point pt;
+        ic_local_result hd, cf;
+        ic_error err;
+        const double origin[3] = {0, 0, 0};
+        if (A && B && ic_pair_new(&pair, A, B, NULL) == IC_OK &&
+            ic_local_locate(pair, &pt, origin, &opt, &err) == IC_OK &&
+            ic_local_apparatus(pair, &hd, &pt, 3, IC_METHOD_HEIGHT_DIFFERENCE, &opt, &err) == IC_OK &&
+            hd.type == IC_POINT_BRANCH && hd.discriminant > 0.02) {
+            const ic_status st =
+                ic_local_apparatus(pair, &cf, &pt, 3, IC_METHOD_CLOSED_FORM, &opt, &err);
+            CHECK(st == IC_OK && cf.nbranches == 2, "random implicit branch point %d: %s", trial,
+                  st ? err.message : "");
+            for (int k = 0; st == IC_OK && k < 2; k++) {
+                const ic_branch *c = &cf.branches[k], *h = NULL;
+                for (int j = 0; j < 2; j++)
+                    if (fabs(dot(hd.branches[j].t, c->t)) > 1 - 1e-9)
+                        h = &hd.branches[j];
+                CHECK(h != NULL, "random implicit branch point %d: branch %d", trial, k);
+                if (!h)
+                    continue;
+                const double e = fmax(fmax(fabs(h->kappa - c->kappa), fabs(h->tau - c->tau)),
+                                      1 - fabs(dot(h->n, c->n)));
+                worst = fmax(worst, e);
+                CHECK(e <= 1e-10, "random implicit branch point %d: kappa %.17g/%.17g tau %.17g/%.17g",
+                      trial, c->kappa, h->kappa, c->tau, h->tau);
+            }
+            if (st == IC_OK)
+                tested++;
+        }
+        ic_pair_free(pair);
+        ic_surface_free(A);
+        ic_surface_free(B);
+    }
+    CHECK(tested >= 20, "random implicit branch points tested: %d", tested);
+    printf("seed 001 section 4 closed form vs height-difference at %d random branch points: "
+           "%.2g\n", tested, worst);
+}
+
 int main(int argc, char **argv)
 {
     static truth_case truth[64];
@@ -390,6 +474,7 @@ int main(int argc, char **argv)
     }
     test_near_tangential();
     test_closed_form_random();
+    test_closed_form_implicit_random();
     printf("tangential branches against truth: worst c^(1..4) %.2g, c^(5..8) %.2g; perturbation "
            "against height-difference (t, n, kappa): %.2g\n",
            worst_low, worst_high, worst_perturbation);

@@ -174,7 +174,8 @@ typedef struct {
      *  tacnode) or of the leading form (higher-order contact); 0 otherwise */
     int contact_order;
     /** closed-form method at tangential points: the paper's coefficients
-     *  (seed 000 (4.8): a11, a12, a22) and its discriminant a12^2 - a11 a22 */
+     *  (seed 000 (4.8): a11, a12, a22 and its discriminant a12^2 - a11 a22;
+     *  seed 001 (4.1), (4.10): A, a11, a12, a13) */
     int npaper;
     const char *paper_names[4];
     double paper_values[4];

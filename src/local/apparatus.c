@@ -35,23 +35,25 @@ ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res, const ic_local
     if (res->angle < opt->tangential_angle) {
         res->type = IC_POINT_TANGENTIAL;
         const int closed = res->method == IC_METHOD_CLOSED_FORM;
-        if (closed && (!sh[0].parametric || !sh[1].parametric))
+        if (closed && sh[0].parametric != sh[1].parametric)
             return ic_error_set(err, IC_ERR_INVALID, 0,
                                 "tangential point (normals %.3g rad from parallel): the "
-                                "closed form there covers two parametric surfaces (seed 000 "
-                                "section 4); use height-difference",
+                                "closed forms there cover two parametric surfaces (seed 000 "
+                                "section 4) or two implicit ones (seed 001 section 4); use "
+                                "height-difference",
                                 res->angle);
         const int perturb = res->method == IC_METHOD_PERTURBATION;
         if (!perturb && !closed)
             res->method = IC_METHOD_HEIGHT_DIFFERENCE;
         /* the classification is the height-difference method's */
-        ic_status st = ic_height_difference(res, sh, perturb || closed ? 2 : order, opt, err);
+        ic_status st = ic_height_difference(res, sh, perturb ? 2 : closed ? 3 : order, opt, err);
         if (st != IC_OK)
             return st;
         if (perturb)
             return ic_perturbation(pair, res, sh, opt, err);
         if (closed) {
-            st = ic_closed_seed000_tangential(res, sh, opt, err);
+            st = sh[0].parametric ? ic_closed_seed000_tangential(res, sh, opt, err)
+                                  : ic_closed_seed001_tangential(res, sh, opt, err);
             for (int i = 0; st == IC_OK && i < res->nbranches; i++)
                 ic_branch_finish(&res->branches[i], sh, opt);
             return st;

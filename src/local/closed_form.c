@@ -17,6 +17,21 @@ void ic_solve_frame(double *x, const double *t, const double *NA, const double *
         x[c] = (r[0] * ab[c] + r[1] * bt[c] + r[2] * ta[c]) / det;
 }
 
+void ic_arc_length_derivs(double c[3][3], const double *b1, const double *b2, const double *b3)
+{
+    /* c' = b1/v, c'' = (b2 v - b1 v1)/v^3 and c''' = b3/v^3 - 3 v1 b2/v^4 - v2 b1/v^4
+     * + 3 v1^2 b1/v^5, with v = |b1|, v1 = b1.b2/v, v2 = (|b2|^2 + b1.b3)/v - (b1.b2)^2/v^3 */
+    const double v = ic_norm3(b1), bb = ic_dot3(b1, b2);
+    const double v1 = bb / v;
+    const double v2 = (ic_dot3(b2, b2) + ic_dot3(b1, b3)) / v - bb * bb / (v * v * v);
+    const double v3 = v * v * v, v4 = v3 * v, v5 = v4 * v;
+    for (int i = 0; i < 3; i++) {
+        c[0][i] = b1[i] / v;
+        c[1][i] = (b2[i] * v - b1[i] * v1) / v3;
+        c[2][i] = b3[i] / v3 - 3 * v1 * b2[i] / v4 - v2 * b1[i] / v4 + 3 * v1 * v1 * b1[i] / v5;
+    }
+}
+
 void ic_orient_closed(ic_branch *br, const double *NA, const double *NB)
 {
     double w[3];

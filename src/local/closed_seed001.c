@@ -125,20 +125,12 @@ ic_status ic_closed_seed001(ic_branch *br, const ic_sheet sh[2], ic_paper_values
                          a23_4;
     /* (3.23) */
     const double tau = A23 * A23 * (x2dd * x3ddd - x3dd * x2ddd) / quad;
-    /* c''' from beta', beta'', beta''' by the chain rule for d/ds = |beta'|^-1 d/dx1
-     * (not in the paper, which stops at tau): with v = |beta'|,
-     * c''' = beta'''/v^3 - 3 v1 beta''/v^4 - v2 beta'/v^4 + 3 v1^2 beta'/v^5,
-     * v1 = beta'.beta''/v, v2 = (|beta''|^2 + beta'.beta''')/v - (beta'.beta'')^2/v^3. */
+    /* c', c'', c''' from beta', beta'', beta''' by the chain rule (not in the
+     * paper, which stops at tau); (3.18) is the same c'' written out */
     const double b2[3] = {0.0, x2dd, x3dd}, b3[3] = {0.0, x2ddd, x3ddd};
-    const double v = ic_norm3(b1), bb = ic_dot3(b1, b2);
-    const double v1 = bb / v;
-    const double v2 = (ic_dot3(b2, b2) + ic_dot3(b1, b3)) / v - bb * bb / (v * v * v);
-    double c3[3], c1[3];
-    for (int i = 0; i < 3; i++) {
-        c1[i] = b1[i] / v;
-        c3[i] = b3[i] / (v * v * v) - 3 * v1 * b2[i] / (v * v * v * v) -
-                v2 * b1[i] / (v * v * v * v) + 3 * v1 * v1 * b1[i] / (v * v * v * v * v);
-    }
+    double cc[3][3];
+    ic_arc_length_derivs(cc, b1, b2, b3);
+    const double *c1 = cc[0], *c3 = cc[2];
     /* back to the original axes: new axis i is old axis (i + shift) mod 3 */
     memset(br, 0, sizeof *br);
     br->order = 3;

@@ -68,6 +68,9 @@ ic_status ic_closed_seed003(ic_branch *br, const ic_sheet sh[2], ic_paper_values
  * both): x = (r0 N_A x N_B + r1 N_B x t + r2 t x N_A) / det[t; N_A; N_B]. */
 void ic_solve_frame(double *x, const double *t, const double *NA, const double *NB,
                     const double *r);
+/* c', c'', c''' (arc length) of a curve from its derivatives b1, b2, b3 with
+ * respect to any regular parameter (the chain rule for d/ds = |b1|^-1 d/dp). */
+void ic_arc_length_derivs(double c[3][3], const double *b1, const double *b2, const double *b3);
 /* Flips c', c'', c''' to the orientation t = N_A x N_B if needed. */
 void ic_orient_closed(ic_branch *br, const double *NA, const double *NB);
 

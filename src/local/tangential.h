@@ -34,4 +34,10 @@ ic_status ic_perturbation(ic_pair *pair, ic_local_result *res, const ic_sheet sh
 ic_status ic_closed_seed000_tangential(ic_local_result *res, const ic_sheet sh[2],
                                        const ic_local_options *opt, ic_error *err);
 
+/* Seed 001 section 4 (corrected) at a tangential point of two implicit
+ * sheets classified in res: the paper's A, a11, a12, a13 and c', c'', c'''
+ * on each branch (replacing the classification's branches). */
+ic_status ic_closed_seed001_tangential(ic_local_result *res, const ic_sheet sh[2],
+                                       const ic_local_options *opt, ic_error *err);
+
 #endif

@@ -56,6 +56,11 @@ static const tcase CASES[] = {
      {0, 0, 0}, IC_POINT_CUSP, 2, NULL},
     {"monkey saddle and its tangent plane", PAR("u", "v", "u^3 - 3*u*v^2", "u", "v"), IMP("z"),
      {0, 0, 0}, IC_POINT_HIGHER_ORDER_CONTACT, 3, NULL},
+    /* a self-intersection: the sheets u ~ +1 and u ~ -1 of
+     * R = (u^2 - 1, v, u (v^2 - (u^2 - 1)^2)) are both tangent to z = 0 at the
+     * origin and cross along the lines v = +-x there */
+    {"tangential self-intersection", PAR("u^2 - 1", "v", "u*(v^2 - (u^2 - 1)^2)", "u", "v"),
+     IMP(NULL), {0, 0, 0}, IC_POINT_BRANCH, 2, NULL},
 };
 
 static ic_surface *build(const surf *d)
@@ -379,9 +384,10 @@ int main(int argc, char **argv)
     const int order = 8;
     for (size_t i = 0; i < sizeof CASES / sizeof CASES[0]; i++) {
         const tcase *tc = &CASES[i];
-        ic_surface *A = build(&tc->A), *B = build(&tc->B);
+        const int self = !tc->B.f && !tc->B.xyz[0];
+        ic_surface *A = build(&tc->A), *B = self ? NULL : build(&tc->B);
         ic_pair *pair = NULL;
-        if (!A || !B || ic_pair_new(&pair, A, B, NULL) != IC_OK) {
+        if (!A || (!self && !B) || ic_pair_new(&pair, A, B, NULL) != IC_OK) {
             CHECK(0, "%s: setup", tc->label);
             goto next;
         }
@@ -421,6 +427,22 @@ int main(int argc, char **argv)
                       br->t[2], br->n[0], br->n[1], br->n[2]);
             }
             CHECK(res.branches[0].n[1] * res.branches[1].n[1] < 0, "opposite normals");
+        }
+        if (self) { /* the straight branches v = +-x, z = 0 */
+            for (int b = 0; b < res.nbranches; b++) {
+                const ic_branch *br = &res.branches[b];
+                CHECK(fabs(fabs(br->t[0]) - sqrt(0.5)) < 1e-12 && fabs(fabs(br->t[1]) - sqrt(0.5)) < 1e-12 &&
+                          fabs(br->t[2]) < 1e-12 && br->kappa < 1e-12,
+                      "self-intersection branch %d: t (%g %g %g), kappa %g", b, br->t[0], br->t[1],
+                      br->t[2], br->kappa);
+            }
+            CHECK(res.nbranches == 2 && fabs(dot(res.branches[0].t, res.branches[1].t)) < 1e-12,
+                  "two perpendicular branches");
+            ic_local_result cf;
+            st = ic_local_apparatus(pair, &cf, &pt, 3, IC_METHOD_CLOSED_FORM, &opt, &err);
+            CHECK(st == IC_OK && cf.nbranches == 2 && cf.branches[0].kappa < 1e-12 &&
+                      cf.branches[1].kappa < 1e-12,
+                  "self-intersection, seed 000 section 4: %s", st ? err.message : "");
         }
         if (tc->type == IC_POINT_HIGHER_ORDER_CONTACT) {
             /* x^3 - 3 x y^2 = x (x^2 - 3 y^2): the lines at 90, 30 and 150 degrees */

@@ -167,12 +167,14 @@ static int transversal_at(ic_pair *pair, const found_point *fp, const pctx *c,
     if (ic_dot3(d, br->t) < 0)
         ic_branch_reverse(br);
     if (!br->frame_defined) /* a straight branch: kappa = 0, no n */
-        br->kappa = br->tau = 0.0;
+        br->tau = 0.0;
     return 0;
 }
 
+/* t and the curvature vector K = c'' = kappa n (the same on both halves of a
+ * branch, and well defined where kappa is at noise level), and tau */
 typedef struct {
-    double t[3], n[3], kappa, tau;
+    double t[3], K[3], tau;
 } estimate;
 
 /* Average of the two halves of a branch (second half reversed). */
@@ -182,11 +184,9 @@ static estimate average(const ic_branch *a, const ic_branch *b, int reverse_b)
     const double s = reverse_b ? -1.0 : 1.0;
     for (int k = 0; k < 3; k++) {
         e.t[k] = 0.5 * (a->t[k] + s * b->t[k]);
-        e.n[k] = 0.5 * (a->n[k] + b->n[k]);
+        e.K[k] = 0.5 * (a->derivs[1][k] + b->derivs[1][k]);
     }
     ic_normalize3(e.t);
-    ic_normalize3(e.n);
-    e.kappa = 0.5 * (a->kappa + b->kappa);
     e.tau = 0.5 * (a->tau + b->tau);
     return e;
 }
@@ -200,21 +200,19 @@ static estimate richardson(estimate *v, int levels, double *change)
             estimate *a = &v[i], *b = &v[i + 1];
             for (int k = 0; k < 3; k++) {
                 a->t[k] = (q * b->t[k] - a->t[k]) / (q - 1);
-                a->n[k] = (q * b->n[k] - a->n[k]) / (q - 1);
+                a->K[k] = (q * b->K[k] - a->K[k]) / (q - 1);
             }
-            a->kappa = (q * b->kappa - a->kappa) / (q - 1);
             a->tau = (q * b->tau - a->tau) / (q - 1);
         }
         if (l == levels - 1 && change) {
             /* the last step's size: how much the extrapolation still moved */
-            double m = fabs(v[0].kappa - v[1].kappa);
+            double m = 0.0;
             for (int k = 0; k < 3; k++)
-                m = fmax(m, fmax(fabs(v[0].t[k] - v[1].t[k]), fabs(v[0].n[k] - v[1].n[k])));
+                m = fmax(m, fmax(fabs(v[0].t[k] - v[1].t[k]), fabs(v[0].K[k] - v[1].K[k])));
             *change = m;
         }
     }
     ic_normalize3(v[0].t);
-    ic_normalize3(v[0].n);
     return v[0];
 }
 
@@ -225,7 +223,7 @@ static void store(ic_branch *br, const estimate *e, const ic_sheet sh[2],
     br->order = 2;
     br->regular = 1;
     memcpy(br->derivs[0], e->t, sizeof e->t);
-    ic_scale3(br->derivs[1], e->n, e->kappa);
+    memcpy(br->derivs[1], e->K, sizeof e->K);
     ic_branch_finish(br, sh, opt);
     br->tau = e->tau;
     br->tau_defined = br->frame_defined;
@@ -243,7 +241,7 @@ static void store(ic_branch *br, const estimate *e, const ic_sheet sh[2],
         }
 }
 
-/* Pairs the halves found on one circle: cost |t_i + t_j| + |n_i - n_j|. */
+/* Pairs the halves found on one circle: cost |t_i + t_j| + |K_i - K_j|. */
 static int pair_halves(const ic_branch *h, int n, estimate *out)
 {
     int used[MAX_ROOTS] = {0}, count = 0;
@@ -255,10 +253,10 @@ static int pair_halves(const ic_branch *h, int n, estimate *out)
         for (int j = 0; j < n; j++) {
             if (j == i || used[j])
                 continue;
-            double st[3], dn[3];
+            double st[3], dk[3];
             ic_axpy3(st, h[i].t, 1.0, h[j].t);
-            ic_axpy3(dn, h[i].n, -1.0, h[j].n);
-            const double cost = ic_norm3(st) + ic_norm3(dn);
+            ic_axpy3(dk, h[i].derivs[1], -1.0, h[j].derivs[1]);
+            const double cost = ic_norm3(st) + ic_norm3(dk) / fmax(1.0, ic_norm3(h[i].derivs[1]));
             if (cost < bc)
                 bc = cost, best = j;
         }
@@ -303,10 +301,8 @@ static ic_status singular_point(ic_pair *pair, ic_local_result *res, const ic_sh
             int best = b;
             double bc = INFINITY;
             for (int j = 0; j < m && l > 0; j++) {
-                double kn[3], kn0[3];
-                ic_scale3(kn, e[j].n, e[j].kappa);
-                ic_scale3(kn0, lev[b][0].n, lev[b][0].kappa);
-                ic_axpy3(kn, kn, -1.0, kn0);
+                double kn[3];
+                ic_axpy3(kn, e[j].K, -1.0, lev[b][0].K);
                 const double cost = 1 - fabs(ic_dot3(e[j].t, lev[b][0].t)) + ic_norm3(kn);
                 if (cost < bc)
                     bc = cost, best = j;

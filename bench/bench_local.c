@@ -142,8 +142,8 @@ int main(void)
                               PRIM(unit, IC_IMPLICIT), {0.6, 0.8, 0}};
     tang[nt++] = (bench_case){"sphere/plane isolated contact", PRIM(unit, IC_IMPLICIT),
                               PRIM(touch, IC_IMPLICIT), {0, 1, 0}};
-    printf("\n%-36s %10s %10s %10s %12s\n", "tangential point (ns per point)", "classify",
-           "height K=3", "height K=8", "perturbation");
+    printf("\n%-36s %10s %10s %10s %12s %12s\n", "tangential point (ns per point)", "classify",
+           "height K=3", "height K=8", "perturbation", "closed-form");
     for (int i = 0; i < nt; i++) {
         job j;
         memset(&j, 0, sizeof j);
@@ -164,7 +164,11 @@ int main(void)
         j.method = IC_METHOD_PERTURBATION;
         j.order = 2;
         r[3] = bench_ns_per_call(run_apparatus, &j);
-        printf("%-36s %10.0f %10.0f %10.0f %12.0f\n", tang[i].name, r[0], r[1], r[2], r[3]);
+        j.method = IC_METHOD_CLOSED_FORM; /* branch points only (NaN elsewhere) */
+        j.order = 3;
+        double r4 = i < 2 ? bench_ns_per_call(run_apparatus, &j) : NAN;
+        printf("%-36s %10.0f %10.0f %10.0f %12.0f %12.0f\n", tang[i].name, r[0], r[1], r[2], r[3],
+               r4);
         ic_pair_free(j.pair);
     }
     for (int i = 0; i < ns; i++)

@@ -42,8 +42,13 @@ static const tcase CASES[] = {
     {"seed 001 Ex 5.1 branch point", IMP("x^2/0.36 + y^2/0.64 + z^2 - 1"),
      IMP("x^2/0.2025 + y^2/0.64 + z^2/1.5625 - 1"), {0, 0.8, 0}, IC_POINT_BRANCH, 2,
      "tangent-ellipse51"},
+    {"seed 001 Ex 5.1 branch point (0, -0.8, 0)", IMP("x^2/0.36 + y^2/0.64 + z^2 - 1"),
+     IMP("x^2/0.2025 + y^2/0.64 + z^2/1.5625 - 1"), {0, -0.8, 0}, IC_POINT_BRANCH, 2, NULL},
     {"seed 001 Ex 5.2 tangential circle", IMP("(x^2 + y^2 + z^2 + 3)^2 - 16*(x^2 + y^2)"),
      IMP("x^2 + y^2 + z^2 - 1"), {0.6, 0.8, 0}, IC_POINT_TANGENTIAL_CURVE, 1, "tangent-circle52"},
+    {"seed 001 Ex 5.2 tangential circle at (cos 2, sin 2, 0)",
+     IMP("(x^2 + y^2 + z^2 + 3)^2 - 16*(x^2 + y^2)"), IMP("x^2 + y^2 + z^2 - 1"),
+     {-0.41614683654714241, 0.90929742682568171, 0}, IC_POINT_TANGENTIAL_CURVE, 1, NULL},
     {"seed 001 Ex 5.3 isolated contact", IMP("x^2 + y^2 + z^2 - 1"), IMP("y - 1"), {0, 1, 0},
      IC_POINT_ISOLATED_CONTACT, 0, NULL},
     {"seed 002 Ex 3 tangential circle", PAR("8*u - 1", "15*v - 15/2", "0", "u", "v"),
@@ -412,6 +417,29 @@ int main(int argc, char **argv)
         if (strstr(tc->label, "Viviani")) /* psi = -y^2/2 and -(y^2 + z^2)/4: Delta = 1/16 */
             CHECK(fabs(res.discriminant - 0.0625) <= 1e-15, "%s: Delta %.17g", tc->label,
                   res.discriminant);
+        if (strstr(tc->label, "Ex 5.1")) { /* ERRATA: A = 1, a11 = 9/2, a12 = 0, a13 = -4375/162 */
+            CHECK(res.npaper == 4 && fabs(res.paper_values[0] - 1) < 1e-14 &&
+                      fabs(res.paper_values[1] - 4.5) < 1e-12 && fabs(res.paper_values[2]) < 1e-12 &&
+                      fabs(res.paper_values[3] + 4375.0 / 162) < 1e-11,
+                  "%s: seed 001 (4.10) coefficients %g %g %g %g", tc->label, res.paper_values[0],
+                  res.paper_values[1], res.paper_values[2], res.paper_values[3]);
+            for (int b = 0; b < res.nbranches; b++) /* kappa = 320/319, tau = 0 */
+                CHECK(fabs(res.branches[b].kappa - 320.0 / 319) < 1e-12 &&
+                          fabs(res.branches[b].tau) < 1e-12,
+                      "%s: kappa %.17g tau %g", tc->label, res.branches[b].kappa, res.branches[b].tau);
+        }
+        if (tc->type == IC_POINT_TANGENTIAL_CURVE && strstr(tc->label, "5.2")) /* kappa 1, tau 0 */
+            CHECK(fabs(res.branches[0].kappa - 1) < 1e-12 && fabs(res.branches[0].tau) < 1e-12,
+                  "%s: kappa %.17g tau %g", tc->label, res.branches[0].kappa, res.branches[0].tau);
+        if (strstr(tc->label, "Viviani branch point, param/param")) /* seed 000 (4.8) */
+            CHECK(res.npaper == 4 && !strcmp(res.paper_names[0], "a11") && res.paper_values[3] > 0,
+                  "%s: seed 000 coefficients, Delta %g", tc->label, res.paper_values[3]);
+        if (tc->type == IC_POINT_ISOLATED_CONTACT) /* ERRATA: A = 2, a11 = 8, a12 = 0, a13 = 8 */
+            CHECK(res.npaper == 4 && fabs(res.paper_values[0] - 2) < 1e-14 &&
+                      fabs(res.paper_values[1] - 8) < 1e-13 && fabs(res.paper_values[2]) < 1e-13 &&
+                      fabs(res.paper_values[3] - 8) < 1e-13,
+                  "Ex 5.3 coefficients %g %g %g %g", res.paper_values[0], res.paper_values[1],
+                  res.paper_values[2], res.paper_values[3]);
         if (tc->type == IC_POINT_ISOLATED_CONTACT) /* g2 = -(x^2 + z^2)/2: Delta = -1/4 */
             CHECK(fabs(res.discriminant + 0.25) <= 1e-15, "%s: Delta %.17g", tc->label,
                   res.discriminant);

@@ -49,6 +49,11 @@ ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res, const ic_local
         ic_status st = ic_height_difference(res, sh, perturb ? 2 : closed ? 3 : order, opt, err);
         if (st != IC_OK)
             return st;
+        /* the papers' coefficients, whatever the method */
+        if (sh[0].parametric && sh[1].parametric)
+            ic_closed_seed000_coefficients(res, sh);
+        else if (!sh[0].parametric && !sh[1].parametric)
+            ic_closed_seed001_coefficients(res, sh);
         if (perturb)
             return ic_perturbation(pair, res, sh, opt, err);
         if (closed) {

@@ -95,45 +95,71 @@ static int solve23(double *y, const double *r, double s, const double *h, double
     return 0;
 }
 
-/* One branch whose tangent (in the original axes) is `dir`. */
-static int branch(ic_branch *br, const ic_sheet sh[2], const double *dir, double *paper)
+/* The axes of the paper's parametrisation for a branch along dir (NULL: any):
+ * its own (x, y, z) where f2 and the branch's x-component are clearly
+ * nonzero; otherwise x2 along the largest normal component and x1 the other
+ * axis along which dir is largest (perm[new] = old). */
+static void choose_axes(int perm[3], const double *N, const double *dir)
 {
-    /* axes: the paper's own (x1, x2, x3) = (x, y, z) where f2 and the
-     * branch's x-component are clearly nonzero; otherwise x2 along the largest
-     * normal component and x1 the other axis along which dir is largest
-     * (perm[new] = old) */
-    const double *N = sh[0].geo.normal;
     int a1 = 0, a2 = 1, a3 = 2;
-    if (!(fabs(N[1]) >= 0.3 && fabs(dir[0]) >= 0.3 * ic_norm3(dir))) {
+    if (!(fabs(N[1]) >= 0.3 && (!dir || fabs(dir[0]) >= 0.3 * ic_norm3(dir)))) {
         a2 = 0;
         for (int k = 1; k < 3; k++)
             if (fabs(N[k]) > fabs(N[a2]))
                 a2 = k;
         a1 = (a2 + 1) % 3, a3 = (a2 + 2) % 3;
-        if (fabs(dir[a3]) > fabs(dir[a1])) {
+        if (dir && fabs(dir[a3]) > fabs(dir[a1])) {
             const int tmp = a1;
             a1 = a3, a3 = tmp;
         }
     }
-    const int perm[3] = {a1, a2, a3};
-    derivs4 f, h;
-    load(&f, &sh[0], perm);
-    load(&h, &sh[1], perm);
+    perm[0] = a1, perm[1] = a2, perm[2] = a3;
+}
+
+/* A of (4.1) and a11, a12, a13 of (4.10) in the axes perm; D = H1 - A H2. */
+static void coefficients(double paper[4], double D[3][3], const derivs4 *f, const derivs4 *h)
+{
     int kmax = 0;
     for (int k = 1; k < 3; k++)
-        if (fabs(h.g[k]) > fabs(h.g[kmax]))
+        if (fabs(h->g[k]) > fabs(h->g[kmax]))
             kmax = k;
-    const double A = f.g[kmax] / h.g[kmax]; /* (4.1) */
-    double D[3][3];
+    const double A = f->g[kmax] / h->g[kmax];
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
-            D[i][j] = f.H[i][j] - A * h.H[i][j];
-    /* (4.10), reported */
-    const double f1 = f.g[0], f2 = f.g[1], f3 = f.g[2];
+            D[i][j] = f->H[i][j] - A * h->H[i][j];
+    const double f1 = f->g[0], f2 = f->g[1], f3 = f->g[2];
     paper[0] = A;
     paper[1] = f2 * f2 * D[2][2] - 2 * f2 * f3 * D[1][2] + f3 * f3 * D[1][1];
     paper[2] = f2 * f2 * D[0][2] - f1 * f2 * D[1][2] - f2 * f3 * D[0][1] + f1 * f3 * D[1][1];
     paper[3] = f1 * f1 * D[1][1] - 2 * f1 * f2 * D[0][1] + f2 * f2 * D[0][0];
+}
+
+void ic_closed_seed001_coefficients(ic_local_result *res, const ic_sheet sh[2])
+{
+    int perm[3];
+    choose_axes(perm, sh[0].geo.normal, NULL);
+    derivs4 f, h;
+    load(&f, &sh[0], perm);
+    load(&h, &sh[1], perm);
+    double D[3][3];
+    coefficients(res->paper_values, D, &f, &h);
+    res->npaper = 4;
+    res->paper_names[0] = "A", res->paper_names[1] = "a11";
+    res->paper_names[2] = "a12", res->paper_names[3] = "a13";
+}
+
+/* One branch whose tangent (in the original axes) is `dir`. */
+static int branch(ic_branch *br, const ic_sheet sh[2], const double *dir, double *paper)
+{
+    int perm[3];
+    choose_axes(perm, sh[0].geo.normal, dir);
+    const int a1 = perm[0], a3 = perm[2];
+    derivs4 f, h;
+    load(&f, &sh[0], perm);
+    load(&h, &sh[1], perm);
+    double D[3][3];
+    coefficients(paper, D, &f, &h); /* (4.1), (4.10) */
+    const double A = paper[0], f1 = f.g[0], f2 = f.g[1], f3 = f.g[2];
     /* (4.9): a11 x3'^2 + 2 a12 x3' + a13 = 0; of its roots the one along this
      * branch (dir only picks the root); x2' from grad f . beta' = 0 (4.11) */
     const double a11 = paper[1], a12 = paper[2], a13 = paper[3];

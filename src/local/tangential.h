@@ -40,4 +40,9 @@ ic_status ic_closed_seed000_tangential(ic_local_result *res, const ic_sheet sh[2
 ic_status ic_closed_seed001_tangential(ic_local_result *res, const ic_sheet sh[2],
                                        const ic_local_options *opt, ic_error *err);
 
+/* The papers' coefficients alone (reported at every tangential point of a
+ * parametric/parametric or implicit/implicit pair, whatever the method). */
+void ic_closed_seed001_coefficients(ic_local_result *res, const ic_sheet sh[2]);
+void ic_closed_seed000_coefficients(ic_local_result *res, const ic_sheet sh[2]);
+
 #endif

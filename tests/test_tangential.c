@@ -486,8 +486,29 @@ int main(int argc, char **argv)
             }
         }
         /* the perturbation method: t, n, kappa as limits of nearby transversal
-         * values, to the issue's 1e-6 (cusps are not resolved by it) */
-        if (tc->type != IC_POINT_CUSP) {
+         * values, to the issue's 1e-6 */
+        if (tc->type == IC_POINT_CUSP) { /* one-sided t, n of the half-branches */
+            ic_local_result pr;
+            st = ic_local_apparatus(pair, &pr, &pt, 1, IC_METHOD_PERTURBATION, &opt, &err);
+            CHECK(st == IC_OK && pr.nbranches == 2, "cusp by perturbation: %s",
+                  st ? err.message : "");
+            for (int b = 0; st == IC_OK && b < 2; b++) {
+                const ic_branch *q = &pr.branches[b];
+                /* the limits converge only like rho^(1/2): the issue's 1e-6 is not
+                 * reached at a cusp (measured 1.2e-5 on t and n after extrapolation);
+                 * the reported error estimate must cover the true error */
+                const double et = sqrt((q->t[0] - 1) * (q->t[0] - 1) + q->t[1] * q->t[1] +
+                                       q->t[2] * q->t[2]);
+                const double en = sqrt(q->n[0] * q->n[0] + (fabs(q->n[1]) - 1) * (fabs(q->n[1]) - 1) +
+                                       q->n[2] * q->n[2]);
+                CHECK(!q->regular && et < 1e-4 && en < 1e-4 && et <= pr.error_estimate &&
+                          en <= pr.error_estimate,
+                      "cusp half-branch %d by perturbation: t off by %g, n by %g, estimate %g", b,
+                      et, en, pr.error_estimate);
+            }
+            if (st == IC_OK)
+                CHECK(pr.branches[0].n[1] * pr.branches[1].n[1] < 0, "opposite cusp normals");
+        } else {
             ic_local_result pr;
             st = ic_local_apparatus(pair, &pr, &pt, 2, IC_METHOD_PERTURBATION, &opt, &err);
             CHECK(st == IC_OK && pr.nbranches == res.nbranches, "%s: perturbation: %s",

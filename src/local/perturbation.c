@@ -323,6 +323,65 @@ static ic_status singular_point(ic_pair *pair, ic_local_result *res, const ic_sh
     return IC_OK;
 }
 
+/* A cusp (seed 002 Example 2): both half-branches leave P on one side, each
+ * a root of the circle; t and n at the nearby points converge like rho^(1/2),
+ * so the radii shrink by 4 and Richardson works in sqrt(rho) (ratio 2). The
+ * curvature diverges: the half-branches get one-sided t, n, b only. */
+static ic_status cusp(ic_pair *pair, ic_local_result *res, const ic_sheet sh[2], const pctx *c,
+                      double L, const ic_local_options *opt, ic_error *err)
+{
+    double t[2][LEVELS][3], n[2][LEVELS][3];
+    for (int l = 0; l < LEVELS; l++) {
+        const double rho = 0.05 * L / pow(4.0, l);
+        found_point fp[MAX_ROOTS];
+        ic_branch half[MAX_ROOTS];
+        const int m = circle_roots(c, sh, rho, fp);
+        if (m != 2)
+            return ic_error_set(err, IC_ERR_UNABLE, 0,
+                                "perturbation: %d nearby points of the cusp at radius %g, not 2",
+                                m, rho);
+        for (int i = 0; i < 2; i++)
+            if (transversal_at(pair, &fp[i], c, opt, &half[i]) != 0 || !half[i].frame_defined)
+                return ic_error_set(err, IC_ERR_UNABLE, 0,
+                                    "perturbation: a nearby point of the cusp is not transversal");
+        for (int i = 0; i < 2; i++) { /* keep each half-branch by the side of its normal */
+            const int k = l == 0 ? i : (ic_dot3(half[i].n, n[0][0]) > 0 ? 0 : 1);
+            memcpy(t[k][l], half[i].t, sizeof t[k][l]);
+            memcpy(n[k][l], half[i].n, sizeof n[k][l]);
+        }
+    }
+    res->error_estimate = 0.0;
+    for (int k = 0; k < 2; k++) {
+        for (int lev = 1; lev < LEVELS; lev++) { /* Richardson in sqrt(rho), ratio 2 */
+            const double q = pow(2.0, lev);
+            for (int i = 0; i + lev < LEVELS; i++)
+                for (int d = 0; d < 3; d++) {
+                    t[k][i][d] = (q * t[k][i + 1][d] - t[k][i][d]) / (q - 1);
+                    n[k][i][d] = (q * n[k][i + 1][d] - n[k][i][d]) / (q - 1);
+                }
+            if (lev == LEVELS - 1)
+                for (int d = 0; d < 3; d++)
+                    res->error_estimate = fmax(res->error_estimate,
+                                               fmax(fabs(t[k][0][d] - t[k][1][d]),
+                                                    fabs(n[k][0][d] - n[k][1][d])));
+        }
+        ic_branch *br = &res->branches[k];
+        memset(br, 0, sizeof *br);
+        br->order = 1;
+        br->regular = 0;
+        br->frame_defined = 1;
+        memcpy(br->t, t[k][0], sizeof br->t);
+        memcpy(br->n, n[k][0], sizeof br->n);
+        ic_normalize3(br->t);
+        ic_axpy3(br->n, br->n, -ic_dot3(br->n, br->t), br->t); /* orthonormal */
+        ic_normalize3(br->n);
+        ic_cross3(br->b, br->t, br->n);
+        memcpy(br->derivs[0], br->t, sizeof br->t);
+    }
+    res->nbranches = 2;
+    return IC_OK;
+}
+
 /* B shifted by `shift` along N: a callback surface over the original. */
 typedef struct {
     ic_surface *base;
@@ -465,10 +524,7 @@ ic_status ic_perturbation(ic_pair *pair, ic_local_result *res, const ic_sheet sh
             st = tangential_curve(res, sh, &c, L, opt, err);
             break;
         case IC_POINT_CUSP:
-            st = ic_error_set(err, IC_ERR_UNABLE, 0,
-                              "the perturbation method does not resolve cusps (their "
-                              "halves do not converge like a smooth branch); use "
-                              "height-difference");
+            st = cusp(pair, res, sh, &c, L, opt, err);
             break;
         default:
             st = singular_point(pair, res, sh, &c, L, opt, err);

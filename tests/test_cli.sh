@@ -104,8 +104,15 @@ expect_error 1 "point $src/examples/viviani.json --at 1,2,3 --method guess" "--m
 expect_error 1 "point $src/examples/viviani.json --at 1,2" "--at needs three coordinates"
 expect_error 1 "point $src/examples/viviani.json --at 1,2,3 --params 1,2,3,4" "one of --at or --params"
 expect_error 1 "point $src/examples/viviani.json --at 1,2,3 --order 17" "--order expects a whole number from 1 to 16"
-"$bin" point --help | grep -q "example:"
-check "point --help has an example" $?
+"$bin" point "$src/examples/viviani.json" --at 2,0,0 --method closed-form --order 3 >"$out" 2>"$errf"
+grep -q '"paper_coefficients"' "$out" && grep -q '"tau":.*0.375' "$out"
+check "point: seed 000 section 4 at the branch point, tau 3/8 ($(cat "$errf"))" $?
+"$bin" point "$src/examples/viviani.json" --at 2,0,0 --method perturbation >"$out" 2>"$errf"
+grep -q '"error_estimate"' "$out"
+check "point: perturbation reports an error estimate ($(cat "$errf"))" $?
+expect_error 1 "point $src/examples/viviani.json --at 1.5,0.8660254037844386,1 --method height-difference" "for tangential points"
+"$bin" point --help | grep -q "examples:"
+check "point --help has examples" $?
 
 # a degenerate point: printed with nulls and the reason
 "$bin" eval "$src/examples/viviani.json" --surface sphere --at 0.3,pi/2 >"$out" 2>"$errf"

@@ -21,21 +21,25 @@ static const char POINT_HELP[] =
     "                  for a self-intersection both preimages U,V,P,Q\n"
     "  --order K       highest derivative (default 4; jet: up to 16, closed-form: 3)\n"
     "  --method M      auto, jet (transversal, any order), closed-form (the papers'\n"
-    "                  formulas, order <= 3), height-difference (tangential points,\n"
-    "                  any order), perturbation (tangential points: t, n, kappa as\n"
-    "                  limits of nearby transversal values, with an error estimate)\n"
+    "                  formulas, order <= 3: seeds 000-003 at transversal points,\n"
+    "                  seed 000/001 section 4 at tangential ones), height-difference\n"
+    "                  (tangential points, any order), perturbation (tangential points:\n"
+    "                  t, n, kappa as limits of nearby transversal values, with an\n"
+    "                  error estimate)\n"
     "  --format F      json (default) or text\n"
     "  --point-tol T   largest distance of the given point from either surface\n"
     "                  (default 1e-6); farther is an error saying how far\n"
     "\n"
     "The curve is oriented by t = N_A x N_B. At a tangential point (normals parallel)\n"
     "the point is classified (branch-point, tangential-curve, isolated-contact, cusp,\n"
-    "tacnode, higher-order-contact) and every branch through it is given. Undefined\n"
-    "values (n, b, torsion where the curvature is 0) are null. Exit status 2 when the\n"
-    "point is not on the intersection.\n"
+    "tacnode, higher-order-contact) and every branch through it is given, with the\n"
+    "discriminant and the papers' coefficients. Undefined values (n, b, torsion where\n"
+    "the curvature is 0) are null. Exit status 2 when the point is not on the\n"
+    "intersection.\n"
     "\n"
-    "example:\n"
-    "  intercurve point examples/viviani.json --at 1.5,0.8660254037844386,1 --order 3\n";
+    "examples:\n"
+    "  intercurve point examples/viviani.json --at 1.5,0.8660254037844386,1 --order 3\n"
+    "  intercurve point examples/viviani.json --at 2,0,0 --format text   (a branch point)\n";
 
 static cJSON *branch_json(const ic_branch *br, const ic_pair *pair)
 {

@@ -13,38 +13,8 @@
 #include <math.h>
 #include <string.h>
 
-typedef struct {
-    double d1[2][3];    /* P_1, P_2 */
-    double d2[2][2][3]; /* P_ij */
-    double d3[4][3];    /* P_111, P_112, P_122, P_222 */
-    double L[2][2];     /* L_ij = P_ij . N */
-    const double *N;
-    double area;        /* |P_1 x P_2| */
-} param_data;
-
-static void load(param_data *p, const ic_sheet *sh)
-{
-    ic_sheet_partial(sh, 1, 0, p->d1[0]);
-    ic_sheet_partial(sh, 0, 1, p->d1[1]);
-    ic_sheet_partial(sh, 2, 0, p->d2[0][0]);
-    ic_sheet_partial(sh, 1, 1, p->d2[0][1]);
-    memcpy(p->d2[1][0], p->d2[0][1], sizeof p->d2[0][1]);
-    ic_sheet_partial(sh, 0, 2, p->d2[1][1]);
-    ic_sheet_partial(sh, 3, 0, p->d3[0]);
-    ic_sheet_partial(sh, 2, 1, p->d3[1]);
-    ic_sheet_partial(sh, 1, 2, p->d3[2]);
-    ic_sheet_partial(sh, 0, 3, p->d3[3]);
-    p->N = sh->geo.normal;
-    for (int i = 0; i < 2; i++)
-        for (int j = 0; j < 2; j++)
-            p->L[i][j] = ic_dot3(p->d2[i][j], p->N);
-    double c[3];
-    ic_cross3(c, p->d1[0], p->d1[1]);
-    p->area = ic_norm3(c);
-}
-
 /* (3.18): the normal curvature v'^T L v'. */
-static double normal_curvature(const param_data *p, const double *v1)
+static double normal_curvature(const ic_param_data *p, const double *v1)
 {
     return v1[0] * v1[0] * p->L[0][0] + 2 * v1[0] * v1[1] * p->L[0][1] +
            v1[1] * v1[1] * p->L[1][1];
@@ -52,7 +22,7 @@ static double normal_curvature(const param_data *p, const double *v1)
 
 /* (3.22)/(3.23): v'' from alpha'' = sum v_i' v_j' P_ij + v_1'' P_1 + v_2'' P_2 (3.20),
  * crossing with P_2 (P_1) and projecting on N. */
-static void second_param_derivs(const param_data *p, const double *v1, const double *c2,
+static void second_param_derivs(const ic_param_data *p, const double *v1, const double *c2,
                                 double *v2)
 {
     double rest[3];
@@ -65,7 +35,7 @@ static void second_param_derivs(const param_data *p, const double *v1, const dou
 }
 
 /* (3.26): psi = alpha''' . N. */
-static double psi(const param_data *p, const double *v1, const double *v2)
+static double psi(const ic_param_data *p, const double *v1, const double *v2)
 {
     const double a = v1[0], b = v1[1];
     const double third = a * a * a * ic_dot3(p->d3[0], p->N) +
@@ -81,9 +51,9 @@ ic_status ic_closed_seed000(ic_branch *br, const ic_sheet sh[2], ic_paper_values
 {
     if (!sh[0].parametric || !sh[1].parametric)
         return ic_error_set(err, IC_ERR_INVALID, 0, "seed 000 needs two parametric sheets");
-    param_data P, Q;
-    load(&P, &sh[0]);
-    load(&Q, &sh[1]);
+    ic_param_data P, Q;
+    ic_param_data_load(&P, &sh[0]);
+    ic_param_data_load(&Q, &sh[1]);
     /* rows {l, m}: the largest |B12| = |Q_1^l Q_2^m - Q_1^m Q_2^l| (3.5) */
     int l = 0, m = 1, q = 2;
     double best = -1.0;

@@ -19,36 +19,8 @@
 #include <math.h>
 #include <string.h>
 
-typedef struct {
-    double d1[2][3];    /* P_i */
-    double d2[2][2][3]; /* P_ij */
-    double d3[4][3];    /* P_111, P_112, P_122, P_222 */
-    double d4[5][3];    /* P_1111, P_1112, P_1122, P_1222, P_2222 */
-    double L[2][2];     /* P_ij . (own normal) */
-    double g[2][2];     /* first fundamental form */
-} sheet_data;
-
-static void load(sheet_data *p, const ic_sheet *sh)
-{
-    ic_sheet_partial(sh, 1, 0, p->d1[0]);
-    ic_sheet_partial(sh, 0, 1, p->d1[1]);
-    ic_sheet_partial(sh, 2, 0, p->d2[0][0]);
-    ic_sheet_partial(sh, 1, 1, p->d2[0][1]);
-    memcpy(p->d2[1][0], p->d2[0][1], sizeof p->d2[0][1]);
-    ic_sheet_partial(sh, 0, 2, p->d2[1][1]);
-    for (int k = 0; k < 4; k++)
-        ic_sheet_partial(sh, 3 - k, k, p->d3[k]);
-    for (int k = 0; k < 5; k++)
-        ic_sheet_partial(sh, 4 - k, k, p->d4[k]);
-    for (int i = 0; i < 2; i++)
-        for (int j = 0; j < 2; j++) {
-            p->L[i][j] = ic_dot3(p->d2[i][j], sh->geo.normal);
-            p->g[i][j] = ic_dot3(p->d1[i], p->d1[j]);
-        }
-}
-
 /* sum_ij P_ij a_i b_j */
-static void second(double *out, const sheet_data *p, const double *a, const double *b)
+static void second(double *out, const ic_param_data *p, const double *a, const double *b)
 {
     memset(out, 0, 3 * sizeof *out);
     for (int i = 0; i < 2; i++)
@@ -57,7 +29,7 @@ static void second(double *out, const sheet_data *p, const double *a, const doub
 }
 
 /* sum_ijk P_ijk a_i a_j b_k (symmetric: P_111, P_112, P_122, P_222) */
-static void third(double *out, const sheet_data *p, const double *a, const double *b)
+static void third(double *out, const ic_param_data *p, const double *a, const double *b)
 {
     const double x = a[0], y = a[1];
     memset(out, 0, 3 * sizeof *out);
@@ -68,7 +40,7 @@ static void third(double *out, const sheet_data *p, const double *a, const doubl
 }
 
 /* sum P_ijkl a_i a_j a_k a_l */
-static void fourth(double *out, const sheet_data *p, const double *a)
+static void fourth(double *out, const ic_param_data *p, const double *a)
 {
     static const double binom[5] = {1, 4, 6, 4, 1};
     memset(out, 0, 3 * sizeof *out);
@@ -93,7 +65,7 @@ static int solve2(double *x, const double *r1, double s1, const double *r2, doub
 }
 
 /* One branch along the direction v' (unit in the first form). */
-static int branch(ic_branch *br, const sheet_data *P, const sheet_data *Q, const double *N2,
+static int branch(ic_branch *br, const ic_param_data *P, const ic_param_data *Q, const double *N2,
                   double delta, const double C[2][2], double B12, const double *v1)
 {
     /* (4.5) w' = C v' / B12, C = [[A12, A22], [-A11, -A21]] */
@@ -212,9 +184,9 @@ ic_status ic_closed_seed000_tangential(ic_local_result *res, const ic_sheet sh[2
         return ic_error_set(err, IC_ERR_INVALID, 0,
                             "the closed form at tangential points covers two parametric "
                             "surfaces (seed 000); use height-difference");
-    sheet_data P, Q;
-    load(&P, &sh[0]);
-    load(&Q, &sh[1]);
+    ic_param_data P, Q;
+    ic_param_data_load(&P, &sh[0]);
+    ic_param_data_load(&Q, &sh[1]);
     const double *N2 = sh[1].geo.normal;
     const double delta = ic_dot3(sh[0].geo.normal, N2) < 0 ? -1.0 : 1.0; /* (4.1) */
     /* rows {l, m}: the largest |B12| (4.6) */

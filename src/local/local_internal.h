@@ -31,6 +31,22 @@ typedef struct {
 ic_status ic_sheet_at(ic_pair *pair, ic_sheet *sh, int which, const ic_local_point *pt,
                       ic_error *err);
 
+/* The partial derivatives of a parametric sheet to order 4, in the papers'
+ * notation: P_i, P_ij, P_ijk (111, 112, 122, 222), P_ijkl (1111 .. 2222), the
+ * second form L_ij = P_ij . N, the first form g_ij, and |P_1 x P_2|. */
+typedef struct {
+    double d1[2][3];
+    double d2[2][2][3];
+    double d3[4][3];
+    double d4[5][3];
+    double L[2][2];
+    double g[2][2];
+    const double *N;
+    double area;
+} ic_param_data;
+
+void ic_param_data_load(ic_param_data *p, const ic_sheet *sh);
+
 /* Rewrites a domain error of sheet `which` as "surface A/B is singular at
  * the point: ..."; returns st. */
 ic_status ic_sheet_singular(ic_error *err, ic_status st, int which);

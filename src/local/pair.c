@@ -1,6 +1,7 @@
 /* Pairs of surfaces, options, names, and the sheets at a point. */
 #include "local_internal.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -143,4 +144,27 @@ double ic_sheet_fpartial(const ic_sheet *sh, int a, int b, int c)
         pos += d - a2 + 1; /* monomials of degree d with a larger x-exponent */
     pos += d - a - b;
     return sh->taylor[start[d] + pos] * FACT[a] * FACT[b] * FACT[c];
+}
+
+void ic_param_data_load(ic_param_data *p, const ic_sheet *sh)
+{
+    ic_sheet_partial(sh, 1, 0, p->d1[0]);
+    ic_sheet_partial(sh, 0, 1, p->d1[1]);
+    ic_sheet_partial(sh, 2, 0, p->d2[0][0]);
+    ic_sheet_partial(sh, 1, 1, p->d2[0][1]);
+    memcpy(p->d2[1][0], p->d2[0][1], sizeof p->d2[0][1]);
+    ic_sheet_partial(sh, 0, 2, p->d2[1][1]);
+    for (int k = 0; k < 4; k++)
+        ic_sheet_partial(sh, 3 - k, k, p->d3[k]);
+    for (int k = 0; k < 5; k++)
+        ic_sheet_partial(sh, 4 - k, k, p->d4[k]);
+    p->N = sh->geo.normal;
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 2; j++) {
+            p->L[i][j] = p->d2[i][j][0] * p->N[0] + p->d2[i][j][1] * p->N[1] + p->d2[i][j][2] * p->N[2];
+            p->g[i][j] = p->d1[i][0] * p->d1[j][0] + p->d1[i][1] * p->d1[j][1] + p->d1[i][2] * p->d1[j][2];
+        }
+    const double *a = p->d1[0], *b = p->d1[1];
+    const double c[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    p->area = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
 }

@@ -11,6 +11,7 @@
 #include "intercurve/expr.h"
 #include "intercurve/surface.h"
 #include "intercurve/local.h"
+#include "intercurve/trace.h"
 #include "intercurve/problem.h"
 
 #define IC_VERSION "0.1.0"

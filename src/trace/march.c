@@ -1,0 +1,336 @@
+/*
+ * The marching core (trace.h): Taylor predictor, Newton corrector in the
+ * plane normal to the curve, step control by truncation error and chord
+ * height, events.
+ */
+#include "intercurve/trace.h"
+#include "common/vec3.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct ic_tracer {
+    ic_pair *pair;
+    ic_trace_options opt;
+    int par[2];             /* which sheets are parametric */
+    double domain[2][2][2];
+    int periodic[2][2];
+    int dir;                /* +1: along t = N_A x N_B, -1: against */
+    ic_local_point cur;
+    ic_local_result res;    /* apparatus at cur, order opt.order */
+    double s;
+    double start_xyz[3], start_t[3];
+    ic_trace_point *pts;
+    int n, cap;
+    int done;
+};
+
+const char *ic_trace_event_name(ic_trace_event ev)
+{
+    static const char *const names[] = {"continue", "closed", "left-domain", "left-box",
+                                        "tangential", "budget", "failed"};
+    return ev >= IC_TRACE_CONTINUE && ev <= IC_TRACE_FAILED ? names[ev] : "unknown";
+}
+
+void ic_trace_defaults(ic_trace_options *opt)
+{
+    memset(opt, 0, sizeof *opt);
+    opt->tol = 1e-10;
+    opt->chord = 1e-3;
+    opt->max_step = 0.5;
+    opt->min_step = 1e-12;
+    opt->order = 6;
+    opt->max_points = 100000;
+    ic_local_defaults(&opt->local);
+}
+
+ic_status ic_tracer_new(ic_tracer **out, ic_pair *pair, const ic_trace_options *opt,
+                        ic_error *err)
+{
+    *out = NULL;
+    if (!pair || !opt || opt->order < 3 || opt->order > 12 || !(opt->tol > 0) ||
+        !(opt->chord > 0) || !(opt->max_step > 0) || opt->max_points < 2)
+        return ic_error_set(err, IC_ERR_INVALID, 0,
+                            "tracer: invalid options (order 3..12, positive tolerances)");
+    ic_tracer *tr = calloc(1, sizeof *tr);
+    if (!tr)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory creating a tracer");
+    tr->pair = pair;
+    tr->opt = *opt;
+    for (int s = 0; s < 2; s++) {
+        ic_surface *srf = ic_pair_surface(pair, s);
+        tr->par[s] = ic_surface_get_kind(srf) == IC_PARAMETRIC;
+        if (tr->par[s])
+            ic_surface_get_domain(srf, tr->domain[s], tr->periodic[s]);
+    }
+    *out = tr;
+    return IC_OK;
+}
+
+void ic_tracer_free(ic_tracer *tr)
+{
+    if (!tr)
+        return;
+    free(tr->pts);
+    free(tr);
+}
+
+int ic_tracer_num_points(const ic_tracer *tr) { return tr->n; }
+const ic_trace_point *ic_tracer_point(const ic_tracer *tr, int i)
+{
+    return i >= 0 && i < tr->n ? &tr->pts[i] : NULL;
+}
+
+/* t along the marching direction */
+static void march_t(const ic_tracer *tr, const ic_local_result *res, double *t)
+{
+    ic_scale3(t, res->branches[0].t, (double)tr->dir);
+}
+
+static ic_status record(ic_tracer *tr, ic_error *err)
+{
+    if (tr->n == tr->cap) {
+        const int cap = tr->cap ? 2 * tr->cap : 256;
+        ic_trace_point *p = realloc(tr->pts, (size_t)cap * sizeof *p);
+        if (!p)
+            return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory tracing a curve");
+        tr->pts = p;
+        tr->cap = cap;
+    }
+    const ic_branch *br = &tr->res.branches[0];
+    ic_trace_point *p = &tr->pts[tr->n++];
+    memset(p, 0, sizeof *p);
+    p->s = tr->s;
+    memcpy(p->xyz, tr->cur.xyz, sizeof p->xyz);
+    memcpy(p->params, tr->cur.params, sizeof p->params);
+    march_t(tr, &tr->res, p->t);
+    memcpy(p->n, br->n, sizeof p->n);
+    ic_scale3(p->b, br->b, (double)tr->dir);
+    p->kappa = br->kappa;
+    p->tau = br->tau;
+    p->frame_defined = br->frame_defined;
+    return IC_OK;
+}
+
+/* The apparatus at a point; IC_TRACE_TANGENTIAL if it is tangential. */
+static ic_status apparatus(ic_tracer *tr, ic_local_result *res, const ic_local_point *pt,
+                           int *tangential, ic_error *err)
+{
+    ic_local_options o = tr->opt.local;
+    ic_status st = ic_local_apparatus(tr->pair, res, pt, tr->opt.order, IC_METHOD_JET, &o, err);
+    *tangential = 0;
+    if (st == IC_OK && res->type != IC_POINT_TRANSVERSAL)
+        *tangential = 1;
+    return st;
+}
+
+ic_status ic_tracer_start(ic_tracer *tr, const ic_local_point *start, int direction,
+                          ic_error *err)
+{
+    tr->n = 0;
+    tr->s = 0.0;
+    tr->done = 0;
+    tr->dir = direction < 0 ? -1 : 1;
+    tr->cur = *start;
+    int tangential;
+    ic_status st = apparatus(tr, &tr->res, start, &tangential, err);
+    if (st != IC_OK)
+        return st;
+    if (tangential)
+        return ic_error_set(err, IC_ERR_UNABLE, 0, "a curve cannot start at a tangential point");
+    memcpy(tr->start_xyz, start->xyz, sizeof tr->start_xyz);
+    march_t(tr, &tr->res, tr->start_t);
+    return record(tr, err);
+}
+
+/* Taylor coefficients (marching direction) of the point and parameters at cur */
+static void predict(const ic_tracer *tr, double h, double *X, double params[2][2])
+{
+    const ic_branch *br = &tr->res.branches[0];
+    memcpy(X, tr->cur.xyz, 3 * sizeof *X);
+    memcpy(params, tr->cur.params, sizeof tr->cur.params);
+    double f = 1.0;
+    for (int k = 1; k <= br->order; k++) {
+        f *= tr->dir * h / k;
+        ic_axpy3(X, X, f, br->derivs[k - 1]);
+        for (int s = 0; s < 2; s++)
+            if (tr->par[s] && k <= br->param_order) {
+                params[s][0] += f * br->param_derivs[s][k - 1][0];
+                params[s][1] += f * br->param_derivs[s][k - 1][1];
+            }
+    }
+}
+
+/* The step length from the truncation error and the chord height. */
+static double step_length(const ic_tracer *tr)
+{
+    const ic_branch *br = &tr->res.branches[0];
+    double h = tr->opt.max_step, fact = 1.0;
+    for (int k = 1; k <= br->order; k++) {
+        fact *= k;
+        if (k >= br->order - 1) { /* the last two terms bound the truncation */
+            const double a = ic_norm3(br->derivs[k - 1]) / fact;
+            if (a > 0)
+                h = fmin(h, pow(tr->opt.tol / a, 1.0 / k));
+        }
+    }
+    if (br->kappa > 0)
+        h = fmin(h, sqrt(8 * tr->opt.chord / br->kappa));
+    return h;
+}
+
+static int outside(const ic_tracer *tr, const ic_local_point *pt, ic_trace_event *ev)
+{
+    for (int s = 0; s < 2; s++)
+        if (tr->par[s])
+            for (int i = 0; i < 2; i++)
+                if (!tr->periodic[s][i] && (pt->params[s][i] < tr->domain[s][i][0] ||
+                                            pt->params[s][i] > tr->domain[s][i][1])) {
+                    *ev = IC_TRACE_LEFT_DOMAIN;
+                    return 1;
+                }
+    if (tr->opt.has_box)
+        for (int k = 0; k < 3; k++)
+            if (pt->xyz[k] < tr->opt.box[k][0] || pt->xyz[k] > tr->opt.box[k][1]) {
+                *ev = IC_TRACE_LEFT_BOX;
+                return 1;
+            }
+    return 0;
+}
+
+/* Has the step from cur over length h (to `next`) passed the start point?
+ * Then *hs is the exact step to it (Newton on (X(h) - X0) . X'(h) = 0). */
+static int closes(const ic_tracer *tr, const double *next, double h, double *hs)
+{
+    if (tr->n < 3)
+        return 0;
+    double t[3], d[3], e[3];
+    march_t(tr, &tr->res, t);
+    ic_axpy3(d, tr->start_xyz, -1.0, tr->cur.xyz);
+    ic_axpy3(e, next, -1.0, tr->cur.xyz);
+    const double along = ic_dot3(d, e) / ic_dot3(e, e);
+    if (along < 0 || along > 1 + 1e-9 || ic_dot3(t, tr->start_t) <= 0)
+        return 0;
+    double off[3];
+    ic_axpy3(off, d, -along, e);
+    if (ic_norm3(off) > 4 * tr->opt.chord + 1e-9)
+        return 0;
+    /* the exact step: minimise |X(h) - X0| along the predictor */
+    double hh = along * h;
+    for (int it = 0; it < 20; it++) {
+        double X[3], X1[3], p[2][2], q[2][2];
+        const double dh = 1e-7 * h;
+        predict(tr, hh, X, p);
+        predict(tr, hh + dh, X1, q);
+        double g[3], dX[3];
+        ic_axpy3(g, X, -1.0, tr->start_xyz);
+        ic_axpy3(dX, X1, -1.0, X);
+        ic_scale3(dX, dX, 1.0 / dh);
+        const double step = ic_dot3(g, dX) / ic_dot3(dX, dX);
+        hh -= step;
+        if (fabs(step) < 1e-15 * h)
+            break;
+    }
+    *hs = hh;
+    return 1;
+}
+
+ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
+{
+    *event = IC_TRACE_CONTINUE;
+    if (tr->done)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "the curve has ended; start another");
+    if (tr->n >= tr->opt.max_points) {
+        tr->done = 1;
+        *event = IC_TRACE_BUDGET;
+        return IC_OK;
+    }
+    double h = step_length(tr);
+    ic_local_options lo = tr->opt.local;
+    int near_tangential = 0;
+    for (int attempt = 0; attempt < 60; attempt++, h *= 0.5) {
+        if (h < tr->opt.min_step || (near_tangential && h < 1e-9 * (1 + ic_norm3(tr->cur.xyz))))
+            break;
+        double X[3], params[2][2];
+        predict(tr, h, X, params);
+        ic_local_point next;
+        double flat[4];
+        int np = 0;
+        for (int s = 0; s < 2; s++)
+            if (tr->par[s]) {
+                flat[np++] = params[s][0];
+                flat[np++] = params[s][1];
+            }
+        ic_status st = np ? ic_local_locate_params(tr->pair, &next, flat, np, &lo, NULL)
+                          : ic_local_locate(tr->pair, &next, X, &lo, NULL);
+        if (st != IC_OK)
+            continue;
+        /* the corrector moves the point in the normal plane: accept small
+         * corrections that move forward */
+        double t[3], d[3], c[3];
+        march_t(tr, &tr->res, t);
+        ic_axpy3(d, next.xyz, -1.0, tr->cur.xyz);
+        ic_axpy3(c, next.xyz, -1.0, X);
+        if (ic_dot3(d, t) <= 0.5 * h || ic_norm3(c) > fmax(1e3 * tr->opt.tol, 1e-3 * h))
+            continue;
+        double hs;
+        if (closes(tr, next.xyz, h, &hs)) {
+            tr->s += hs;
+            tr->cur.xyz[0] = tr->start_xyz[0];
+            tr->cur.xyz[1] = tr->start_xyz[1];
+            tr->cur.xyz[2] = tr->start_xyz[2];
+            /* the closing point is the start point itself */
+            ic_trace_point first = tr->pts[0];
+            first.s = tr->s;
+            st = record(tr, err);
+            if (st != IC_OK)
+                return st;
+            tr->pts[tr->n - 1] = first;
+            tr->done = 1;
+            *event = IC_TRACE_CLOSED;
+            return IC_OK;
+        }
+        if (outside(tr, &next, event)) {
+            tr->done = 1;
+            return IC_OK;
+        }
+        ic_local_result res;
+        int tangential;
+        st = apparatus(tr, &res, &next, &tangential, NULL);
+        if (st != IC_OK)
+            continue;
+        double tn[3];
+        march_t(tr, &res, tn);
+        if (tangential || ic_dot3(tn, t) <= 0) {
+            /* a tangential point ahead (or passed: t = N_A x N_B flips across a
+             * branch point): shorten the step to end just before it */
+            near_tangential = 1;
+            continue;
+        }
+        tr->cur = next;
+        tr->res = res;
+        tr->s += h;
+        return record(tr, err);
+    }
+    tr->done = 1;
+    if (near_tangential) {
+        *event = IC_TRACE_TANGENTIAL;
+        return IC_OK;
+    }
+    *event = IC_TRACE_FAILED;
+    return ic_error_set(err, IC_ERR_UNABLE, 0,
+                        "the tracer could not make a step at s = %g, (%g, %g, %g): the corrector "
+                        "did not converge down to the minimum step %g",
+                        tr->s, tr->cur.xyz[0], tr->cur.xyz[1], tr->cur.xyz[2], tr->opt.min_step);
+}
+
+ic_status ic_tracer_run(ic_tracer *tr, ic_trace_event *event, ic_error *err)
+{
+    do {
+        ic_status st = ic_tracer_step(tr, event, err);
+        if (st != IC_OK)
+            return st;
+    } while (*event == IC_TRACE_CONTINUE);
+    return IC_OK;
+}

@@ -1,0 +1,216 @@
+/* The marching core: closed loops, boundary exits, a self-intersection and
+ * a tangential stop, against closed forms. */
+#include <string.h>
+
+#include "harness.h"
+#include "intercurve/trace.h"
+
+static double dist_implicit(ic_surface *s, const double *x)
+{
+    double f;
+    if (ic_surface_eval(s, &f, x, NULL) != IC_OK)
+        return INFINITY;
+    ic_surface_geometry g;
+    if (ic_surface_geometry_at(s, &g, x, NULL) != IC_OK)
+        return INFINITY;
+    return fabs(f) / g.normal_length;
+}
+
+/* sphere x^2 + y^2 + z^2 = 4 and plane z = 1: the circle of radius sqrt 3,
+ * kappa = 1/sqrt 3, tau = 0, length 2 pi sqrt 3 */
+static void test_circle(int parametric_sphere, double tol)
+{
+    ic_surface *A = NULL, *B = NULL;
+    const char *sph[3] = {"2*cos(u)*cos(v)", "2*sin(u)*cos(v)", "2*sin(v)"};
+    if (parametric_sphere) {
+        const double dom[2][2] = {{-3.141592653589793, 3.141592653589793}, {-1.5707963267948966, 1.5707963267948966}};
+        const int per[2] = {1, 0};
+        if (ic_surface_new_parametric(&A, sph, NULL, NULL, 0, NULL, NULL) ||
+            ic_surface_set_domain(A, dom, per, NULL))
+            return;
+    } else if (ic_surface_new_implicit(&A, "x^2 + y^2 + z^2 - 4", NULL, 0, NULL)) {
+        return;
+    }
+    ic_pair *pair = NULL;
+    ic_tracer *tr = NULL;
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    opt.tol = tol;
+    if (ic_surface_new_implicit(&B, "z - 1", NULL, 0, NULL) || ic_pair_new(&pair, A, B, NULL) ||
+        ic_tracer_new(&tr, pair, &opt, NULL))
+        return;
+    ic_local_point pt;
+    ic_error err;
+    const double X0[3] = {sqrt(3.0), 0, 1};
+    ic_trace_event ev = IC_TRACE_FAILED;
+    CHECK(ic_local_locate(pair, &pt, X0, &opt.local, &err) == IC_OK, "locate: %s", err.message);
+    CHECK(ic_tracer_start(tr, &pt, 1, &err) == IC_OK, "start: %s", err.message);
+    CHECK(ic_tracer_run(tr, &ev, &err) == IC_OK && ev == IC_TRACE_CLOSED, "circle (%s, tol %g): %s %s",
+          parametric_sphere ? "param" : "implicit", tol, ic_trace_event_name(ev), err.message);
+    const int n = ic_tracer_num_points(tr);
+    const double L = 2 * 3.141592653589793 * sqrt(3.0);
+    const ic_trace_point *last = ic_tracer_point(tr, n - 1);
+    /* the length: per step the arc length is the predictor's, exact to the
+     * truncation tolerance; n steps of tol each, relative to L */
+    CHECK(last && fabs(last->s - L) <= 1e-9 * L + n * tol, "length %.15g vs %.15g (%d points)",
+          last ? last->s : 0, L, n);
+    double worst_on = 0, worst_k = 0;
+    for (int i = 0; i < n; i++) {
+        const ic_trace_point *p = ic_tracer_point(tr, i);
+        worst_on = fmax(worst_on, fmax(fabs(p->xyz[2] - 1), fabs(hypot(p->xyz[0], p->xyz[1]) - sqrt(3.0))));
+        worst_k = fmax(worst_k, fmax(fabs(p->kappa - 1 / sqrt(3.0)), fabs(p->tau)));
+    }
+    CHECK(worst_on <= 1e-12, "points on the circle to %g", worst_on);
+    CHECK(worst_k <= 1e-10, "kappa and tau along the circle to %g", worst_k);
+    printf("circle (%s sphere), tol %g: %d points, length error %.2g\n",
+           parametric_sphere ? "parametric" : "implicit", tol, n, fabs(last->s - L));
+    ic_tracer_free(tr);
+    ic_pair_free(pair);
+    ic_surface_free(A);
+    ic_surface_free(B);
+}
+
+/* cylinder x^2 + y^2 = 1 and the helicoid (v cos u, v sin u, u/2), u in
+ * [-1, 7]: the helix from u = 0 leaves the domain at u = 7, arc length
+ * 7 sqrt(5)/2; kappa = 0.8, tau = 0.4 everywhere */
+static void test_helix(void)
+{
+    const char *hel[3] = {"v*cos(u)", "v*sin(u)", "u/2"};
+    ic_surface *A = NULL, *B = NULL;
+    ic_pair *pair = NULL;
+    ic_tracer *tr = NULL;
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    const double dom[2][2] = {{-1, 7}, {0.5, 1.5}};
+    if (ic_surface_new_implicit(&A, "x^2 + y^2 - 1", NULL, 0, NULL) ||
+        ic_surface_new_parametric(&B, hel, NULL, NULL, 0, NULL, NULL) ||
+        ic_surface_set_domain(B, dom, NULL, NULL) || ic_pair_new(&pair, A, B, NULL) ||
+        ic_tracer_new(&tr, pair, &opt, NULL))
+        return;
+    ic_local_point pt;
+    ic_error err;
+    const double params[2] = {0, 1};
+    ic_trace_event ev = IC_TRACE_FAILED;
+    CHECK(ic_local_locate_params(pair, &pt, params, 2, &opt.local, &err) == IC_OK, "%s", err.message);
+    /* march towards increasing u: the direction whose t has a positive z */
+    ic_local_result r;
+    CHECK(ic_local_apparatus(pair, &r, &pt, 2, IC_METHOD_JET, &opt.local, &err) == IC_OK, "app");
+    CHECK(ic_tracer_start(tr, &pt, r.branches[0].t[2] > 0 ? 1 : -1, &err) == IC_OK, "start");
+    CHECK(ic_tracer_run(tr, &ev, &err) == IC_OK && ev == IC_TRACE_LEFT_DOMAIN, "helix: %s",
+          ic_trace_event_name(ev));
+    const int n = ic_tracer_num_points(tr);
+    const ic_trace_point *last = ic_tracer_point(tr, n - 1);
+    const double L = 7 * sqrt(5.0) / 2;
+    CHECK(last && last->s <= L && last->s > L - opt.max_step, "helix length %g of %g", last->s, L);
+    double worst = 0;
+    for (int i = 0; i < n; i++) {
+        const ic_trace_point *p = ic_tracer_point(tr, i);
+        worst = fmax(worst, fmax(fabs(p->kappa - 0.8), fabs(p->tau - 0.4)));
+        /* the point at arc length s is (cos u, sin u, u/2) with u = 2 s / sqrt 5 */
+        const double u = 2 * p->s / sqrt(5.0);
+        worst = fmax(worst, fabs(p->xyz[2] - u / 2));
+    }
+    CHECK(worst <= 1e-9, "helix: kappa 0.8, tau 0.4 and z(s) to %g", worst);
+    printf("helix: %d points, worst %.2g\n", n, worst);
+    ic_tracer_free(tr);
+    ic_pair_free(pair);
+    ic_surface_free(A);
+    ic_surface_free(B);
+}
+
+/* Enneper-type surface of seed 000 Ex. 2: its double curve
+ * (4u + 8u^3/3, 0, -3 - 2u^2) from R(sqrt 2, 3) = R(sqrt 2, -3) to the domain */
+static void test_self_intersection(void)
+{
+    const char *enn[3] = {"u - u^3/3 + u*v^2", "-v - u^2*v + v^3/3", "u^2 - v^2"};
+    ic_surface *A = NULL;
+    ic_pair *pair = NULL;
+    ic_tracer *tr = NULL;
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    const double dom[2][2] = {{-5, 5}, {-5, 5}};
+    if (ic_surface_new_parametric(&A, enn, NULL, NULL, 0, NULL, NULL) ||
+        ic_surface_set_domain(A, dom, NULL, NULL) || ic_pair_new(&pair, A, NULL, NULL) ||
+        ic_tracer_new(&tr, pair, &opt, NULL))
+        return;
+    ic_local_point pt;
+    ic_error err;
+    const double params[4] = {sqrt(2.0), 3, sqrt(2.0), -3};
+    ic_trace_event ev = IC_TRACE_FAILED;
+    CHECK(ic_local_locate_params(pair, &pt, params, 4, &opt.local, &err) == IC_OK, "%s", err.message);
+    for (int dir = -1; dir <= 1; dir += 2) {
+        CHECK(ic_tracer_start(tr, &pt, dir, &err) == IC_OK, "start");
+        CHECK(ic_tracer_run(tr, &ev, &err) == IC_OK && ev == IC_TRACE_LEFT_DOMAIN,
+              "Enneper double curve, direction %d: %s %s", dir, ic_trace_event_name(ev), err.message);
+        double worst = 0;
+        for (int i = 0; i < ic_tracer_num_points(tr); i++) {
+            const ic_trace_point *p = ic_tracer_point(tr, i);
+            /* on the double curve: y = 0, and the preimages (u, +-v) with v^2 = 3(1 + u^2) */
+            const double u = p->params[0][0], v = p->params[0][1];
+            worst = fmax(worst, fabs(p->xyz[1]));
+            worst = fmax(worst, fabs(p->xyz[2] + 3 + 2 * u * u) / (1 + u * u));
+            worst = fmax(worst, fabs(v * v - 3 * (1 + u * u)) / (1 + u * u));
+            worst = fmax(worst, fabs(p->tau) * (p->frame_defined ? 1 : 0));
+        }
+        CHECK(worst <= 1e-9, "Enneper double curve, direction %d: off by %g", dir, worst);
+        printf("Enneper double curve, direction %+d: %d points to s = %.6g, worst %.2g\n", dir,
+               ic_tracer_num_points(tr), ic_tracer_point(tr, ic_tracer_num_points(tr) - 1)->s, worst);
+    }
+    ic_tracer_free(tr);
+    ic_pair_free(pair);
+    ic_surface_free(A);
+}
+
+/* Viviani's curve marched into its branch point (2, 0, 0): the tracer stops
+ * just before it with a tangential event, within about the tangential
+ * threshold (normals 1e-5 rad apart: about 2e-5 from the point) */
+static void test_tangential_stop(void)
+{
+    ic_surface *A = NULL, *B = NULL;
+    ic_pair *pair = NULL;
+    ic_tracer *tr = NULL;
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    if (ic_surface_new_implicit(&A, "(x - 1)^2 + y^2 - 1", NULL, 0, NULL) ||
+        ic_surface_new_implicit(&B, "x^2 + y^2 + z^2 - 4", NULL, 0, NULL) ||
+        ic_pair_new(&pair, A, B, NULL) || ic_tracer_new(&tr, pair, &opt, NULL))
+        return;
+    ic_local_point pt;
+    ic_error err;
+    const double X0[3] = {1.5, 0.8660254037844386, 1};
+    ic_trace_event ev = IC_TRACE_FAILED;
+    CHECK(ic_local_locate(pair, &pt, X0, &opt.local, &err) == IC_OK, "locate");
+    int stopped = 0;
+    for (int dir = -1; dir <= 1; dir += 2) {
+        CHECK(ic_tracer_start(tr, &pt, dir, &err) == IC_OK, "start");
+        const ic_status st = ic_tracer_run(tr, &ev, &err);
+        const ic_trace_point *last = ic_tracer_point(tr, ic_tracer_num_points(tr) - 1);
+        const double d = hypot(hypot(last->xyz[0] - 2, last->xyz[1]), last->xyz[2]);
+        printf("Viviani, direction %+d: %s after %d points at s = %.6g, %.2g from (2, 0, 0)\n", dir,
+               ic_trace_event_name(ev), ic_tracer_num_points(tr), last->s, d);
+        if (st == IC_OK && ev == IC_TRACE_TANGENTIAL && d < 1e-4)
+            stopped++;
+        double worst = 0;
+        for (int i = 0; i < ic_tracer_num_points(tr); i++) {
+            const ic_trace_point *p = ic_tracer_point(tr, i);
+            worst = fmax(worst, fmax(dist_implicit(A, p->xyz), dist_implicit(B, p->xyz)));
+        }
+        CHECK(worst <= 1e-12, "Viviani points on both surfaces to %g", worst);
+    }
+    CHECK(stopped == 2, "both directions stop at the branch point as tangential");
+    ic_tracer_free(tr);
+    ic_pair_free(pair);
+    ic_surface_free(A);
+    ic_surface_free(B);
+}
+
+int main(void)
+{
+    test_circle(0, 1e-10);
+    test_circle(1, 1e-10);
+    test_circle(0, 1e-6);
+    test_helix();
+    test_self_intersection();
+    test_tangential_stop();
+    return harness_finish("test_trace");
+}

@@ -44,6 +44,7 @@ demo: all
 bench: all
 	./$(BUILD)/bench/bench_surface
 	./$(BUILD)/bench/bench_local
+	./$(BUILD)/bench/bench_trace
 
 install: all
 	cmake --install $(BUILD) --prefix $(PREFIX)

@@ -114,6 +114,24 @@ expect_error 1 "point $src/examples/viviani.json --at 1.5,0.8660254037844386,1 -
 "$bin" point --help | grep -q "examples:"
 check "point --help has examples" $?
 
+# intercurve trace
+"$bin" trace "$src/examples/viviani-implicit.json" >"$out" 2>"$errf"
+check "trace Viviani exits 0 ($(cat "$errf"))" $?
+[ "$(grep -c '"closed":' "$out")" -eq 2 ] && grep -q '"type":.*"branch-point"' "$out"
+check "trace Viviani: two curves and the branch point" $?
+grep -q '"exclusion_proven":.*true' "$out" && grep -q '"uncovered_cells":.*0' "$out"
+check "trace Viviani: the report says what was proven" $?
+tmpout="$(mktemp -d)/v.json"
+"$bin" trace "$src/examples/ellipsoids.json" -o "$tmpout" >"$out" 2>"$errf"
+check "trace -o FILE exits 0" $?
+[ -s "$tmpout" ] && [ ! -e "$tmpout.tmp" ] && grep -q '"shape":.*"planar"' "$tmpout"
+check "trace -o FILE: written through a rename, planar arcs of Ex 5.1" $?
+expect_error 1 "trace $src/examples/viviani-implicit.json --format csv" "--format csv is not available yet"
+expect_error 2 "trace $src/examples/viviani.json" "four parameters"
+expect_error 1 "trace $src/tests/data/bad-formula.json" "surfaces[0].f"
+"$bin" trace --help | grep -q "example:"
+check "trace --help has an example" $?
+
 # a degenerate point: printed with nulls and the reason
 "$bin" eval "$src/examples/viviani.json" --surface sphere --at 0.3,pi/2 >"$out" 2>"$errf"
 check "sphere pole exits 0" $?

@@ -204,6 +204,128 @@ static void test_tangential_stop(void)
     ic_surface_free(B);
 }
 
+/* Traces a pair of implicit formulas in a box (NULL g: a parametric helicoid). */
+static ic_trace_result *trace_pair(const char *f, const char *g, double box, ic_surface **A,
+                                   ic_surface **B, ic_pair **pair, ic_status *st)
+{
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    opt.has_box = 1;
+    for (int k = 0; k < 3; k++)
+        opt.box[k][0] = -box, opt.box[k][1] = box;
+    ic_trace_result *res = NULL;
+    ic_error err;
+    *A = *B = NULL;
+    *pair = NULL;
+    *st = ic_surface_new_implicit(A, f, NULL, 0, &err);
+    if (*st == IC_OK)
+        *st = ic_surface_new_implicit(B, g, NULL, 0, &err);
+    if (*st == IC_OK)
+        *st = ic_pair_new(pair, *A, *B, &err);
+    if (*st == IC_OK)
+        *st = ic_trace(&res, *pair, &opt, &err);
+    return res;
+}
+
+static void release(ic_trace_result *r, ic_surface *A, ic_surface *B, ic_pair *pair)
+{
+    ic_trace_result_free(r);
+    ic_pair_free(pair);
+    ic_surface_free(A);
+    ic_surface_free(B);
+}
+
+/* The lobe of Viviani's curve: the integral of sqrt(1 + cos^2(t/2)) over
+ * [0, 2 pi] by composite Simpson in long double (independent of the tracer). */
+static double viviani_lobe(void)
+{
+    const int n = 20000;
+    const long double h = 2 * 3.14159265358979323846264338327950288L / n;
+    long double sum = 0;
+    for (int i = 0; i <= n; i++) {
+        const long double c = cosl(i * h / 2);
+        const long double f = sqrtl(1 + c * c);
+        sum += (i == 0 || i == n ? 1 : i % 2 ? 4 : 2) * f;
+    }
+    return (double)(sum * h / 3);
+}
+
+static void test_whole(void)
+{
+    ic_surface *A, *B;
+    ic_pair *pair;
+    ic_status st;
+    /* the sphere/plane circle: one closed curve, a circle, proven search */
+    ic_trace_result *r = trace_pair("x^2 + y^2 + z^2 - 4", "z - 1", 3, &A, &B, &pair, &st);
+    CHECK(st == IC_OK && ic_trace_result_num_curves(r) == 1, "circle: one curve");
+    if (st == IC_OK && ic_trace_result_num_curves(r) == 1) {
+        const ic_trace_curve *c = ic_trace_result_curve(r, 0);
+        const ic_trace_report *rep = ic_trace_result_report(r);
+        CHECK(c->closed && c->shape == IC_SHAPE_CIRCLE, "closed circle: %s", ic_shape_name(c->shape));
+        CHECK(fabs(c->length - 2 * 3.141592653589793 * sqrt(3.0)) < 1e-9, "length %.15g", c->length);
+        CHECK(rep->proven && rep->cells_excluded > 0 && rep->uncovered_cells == 0 &&
+                  ic_trace_result_num_specials(r) == 0,
+              "report: proven %d, excluded %d, uncovered %d", rep->proven, rep->cells_excluded,
+              rep->uncovered_cells);
+    }
+    release(r, A, B, pair);
+    /* Viviani's curve: two lobes ending at the branch point (2, 0, 0) */
+    r = trace_pair("(x - 1)^2 + y^2 - 1", "x^2 + y^2 + z^2 - 4", 2.5, &A, &B, &pair, &st);
+    CHECK(st == IC_OK && ic_trace_result_num_curves(r) == 2, "Viviani: two curves");
+    if (st == IC_OK && ic_trace_result_num_curves(r) == 2) {
+        const double lobe = viviani_lobe();
+        for (int i = 0; i < 2; i++) {
+            const ic_trace_curve *c = ic_trace_result_curve(r, i);
+            /* each end stops within about 2e-5 of the branch point (located
+             * exactly in a later step): the lobe length to 1e-4 */
+            CHECK(!c->closed && c->ends[0] == IC_TRACE_TANGENTIAL &&
+                      c->ends[1] == IC_TRACE_TANGENTIAL && fabs(c->length - lobe) < 1e-4 &&
+                      c->length < lobe,
+                  "Viviani lobe %d: length %.12g of %.12g", i, c->length, lobe);
+        }
+        CHECK(ic_trace_result_num_specials(r) == 1, "one tangential point");
+        const ic_trace_special *sp = ic_trace_result_special(r, 0);
+        CHECK(sp && sp->type == IC_POINT_BRANCH && sp->nbranches == 2 &&
+                  hypot(hypot(sp->xyz[0] - 2, sp->xyz[1]), sp->xyz[2]) < 1e-4,
+              "the branch point (2, 0, 0)");
+        CHECK(ic_trace_result_report(r)->uncovered_cells == 0, "nothing left uncovered");
+    }
+    release(r, A, B, pair);
+    /* seed 001 Ex. 5.1: four planar arcs between the branch points (0, +-0.8, 0) */
+    r = trace_pair("x^2/0.36 + y^2/0.64 + z^2 - 1", "x^2/0.2025 + y^2/0.64 + z^2/1.5625 - 1", 1.5,
+                   &A, &B, &pair, &st);
+    CHECK(st == IC_OK && ic_trace_result_num_curves(r) == 4 && ic_trace_result_num_specials(r) == 2,
+          "Ex 5.1: four arcs, two branch points");
+    for (int i = 0; st == IC_OK && i < ic_trace_result_num_curves(r); i++)
+        CHECK(ic_trace_result_curve(r, i)->shape == IC_SHAPE_PLANAR, "arc %d planar", i);
+    release(r, A, B, pair);
+    /* a tangential circle (torus touching a sphere) is not traced yet: the
+     * report must show that something was left unfound */
+    r = trace_pair("(x^2 + y^2 + z^2 + 3)^2 - 16*(x^2 + y^2)", "x^2 + y^2 + z^2 - 1", 3.5, &A, &B,
+                   &pair, &st);
+    CHECK(st == IC_OK && ic_trace_result_report(r)->uncovered_cells > 0 &&
+              ic_trace_result_report(r)->nfailures > 0,
+          "an untraced tangential circle is visible in the report");
+    release(r, A, B, pair);
+    /* two parametric surfaces: not searched yet, a clear error */
+    const char *xyz[3] = {"u", "v", "0"};
+    ic_surface *P1 = NULL, *P2 = NULL;
+    ic_trace_result *r2 = NULL;
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    ic_error err;
+    if (ic_surface_new_parametric(&P1, xyz, NULL, NULL, 0, NULL, NULL) == IC_OK &&
+        ic_surface_new_parametric(&P2, xyz, NULL, NULL, 0, NULL, NULL) == IC_OK &&
+        ic_pair_new(&pair, P1, P2, NULL) == IC_OK) {
+        CHECK(ic_trace(&r2, pair, &opt, &err) == IC_ERR_UNABLE && strstr(err.message, "four"),
+              "two parametric surfaces: %s", err.message);
+        ic_pair_free(pair);
+    }
+    ic_trace_result_free(r2);
+    ic_surface_free(P1);
+    ic_surface_free(P2);
+}
+
 int main(void)
 {
     test_circle(0, 1e-10);
@@ -212,5 +334,6 @@ int main(void)
     test_helix();
     test_self_intersection();
     test_tangential_stop();
+    test_whole();
     return harness_finish("test_trace");
 }

@@ -21,6 +21,7 @@
 #define INTERCURVE_SURFACE_H
 
 #include "intercurve/common.h"
+#include "intercurve/expr.h"
 #include "intercurve/jet.h"
 
 #ifdef __cplusplus
@@ -137,6 +138,15 @@ IC_NODISCARD ic_status ic_surface_compose(ic_surface *s, double *out, const doub
 /** Point R(at) (parametric, out[3]) or value f(at) (implicit, out[1]). */
 IC_NODISCARD ic_status ic_surface_eval(ic_surface *s, double *out, const double *at,
                                        ic_error *err);
+
+/**
+ * Encloses the surface over a box of its inputs: out[3] (parametric: x, y, z
+ * over the parameter box) or out[1] (implicit: f over the space box), with
+ * outward rounding (expr.h). Formula surfaces only: IC_ERR_UNABLE for
+ * callbacks and primitives (the caller then samples instead of proving).
+ */
+IC_NODISCARD ic_status ic_surface_eval_interval(ic_surface *s, ic_interval *out,
+                                                const ic_interval *in, ic_error *err);
 
 /** Local geometry of a surface at a point (see the conventions above). */
 typedef struct {

@@ -34,6 +34,9 @@ typedef struct {
     int max_points;   /**< point budget of one curve (default 100000) */
     int has_box;      /**< 1: stop when the curve leaves box */
     double box[3][2];
+    int depth;        /**< subdivision depth of the start-point search (default 6:
+                       *   64 cells per axis) */
+    double shape_tol; /**< relative tolerance of the shape tests (default 1e-6) */
     ic_local_options local;
 } ic_trace_options;
 
@@ -58,6 +61,7 @@ typedef struct {
     double params[2][2];
     double t[3], n[3], b[3];
     double kappa, tau;
+    double angle;           /**< between the normals, radians */
     int frame_defined;      /**< 0 where kappa = 0: n, b, tau undefined */
 } ic_trace_point;
 
@@ -79,6 +83,72 @@ IC_NODISCARD ic_status ic_tracer_run(ic_tracer *tr, ic_trace_event *event, ic_er
 
 int ic_tracer_num_points(const ic_tracer *tr);
 const ic_trace_point *ic_tracer_point(const ic_tracer *tr, int i);
+
+/* ---- the whole intersection ---- */
+
+/** Shapes of a traced curve (seed 001 corollaries 3.1-3.5). */
+typedef enum {
+    IC_SHAPE_GENERAL, IC_SHAPE_LINE, IC_SHAPE_CIRCLE, IC_SHAPE_PLANAR, IC_SHAPE_CIRCULAR_HELIX,
+    IC_SHAPE_HELIX
+} ic_shape;
+
+/** "general", "line", "circle", "planar", "circular-helix", "helix". */
+const char *ic_shape_name(ic_shape shape);
+
+typedef struct {
+    int closed;
+    int npoints;
+    const ic_trace_point *points;
+    double length;
+    ic_trace_event ends[2];   /**< how the two ends stopped (both CLOSED for a loop) */
+    ic_shape shape;
+    double shape_tol;         /**< relative tolerance of the shape test */
+} ic_trace_curve;
+
+/** A tangential point met: at a curve end (approximate: the last transversal
+ *  point before it, within about the tangential threshold) or on its own. */
+typedef struct {
+    double xyz[3];
+    ic_point_type type;
+    int nbranches;
+    int approximate;
+} ic_trace_special;
+
+#define IC_TRACE_MAX_FAILURES 16
+
+/** What the search proved and what it only sampled (trace.md). */
+typedef struct {
+    int cells;           /**< cells examined by the subdivision */
+    int cells_excluded;  /**< cells proven empty by interval arithmetic */
+    int proven;          /**< 1: every surface had interval evaluation */
+    int candidates;      /**< start candidates found by Newton in the remaining cells */
+    double cell_size;    /**< the smallest cell (length or parameter units) */
+    /** leaf cells not excluded, where no start point was found, and that no
+     *  traced curve or recorded point passes near: an intersection may hide
+     *  there unfound (a tangential curve, for one); listed in failures */
+    int uncovered_cells;
+    int nfailures;
+    char failures[IC_TRACE_MAX_FAILURES][240];
+} ic_trace_report;
+
+typedef struct ic_trace_result ic_trace_result;
+
+/**
+ * Traces the whole intersection of the pair: start points by subdivision of
+ * the box (implicit/implicit; opt->has_box required) or of the parametric
+ * surface's domain (parametric/implicit; a finite domain required), every
+ * curve traced in both directions, tangential curve ends recorded. Two
+ * parametric surfaces and self-intersections are not searched yet
+ * (IC_ERR_UNABLE). The result is freed with ic_trace_result_free.
+ */
+IC_NODISCARD ic_status ic_trace(ic_trace_result **res, ic_pair *pair, const ic_trace_options *opt,
+                                ic_error *err);
+void ic_trace_result_free(ic_trace_result *res);
+int ic_trace_result_num_curves(const ic_trace_result *res);
+const ic_trace_curve *ic_trace_result_curve(const ic_trace_result *res, int i);
+int ic_trace_result_num_specials(const ic_trace_result *res);
+const ic_trace_special *ic_trace_result_special(const ic_trace_result *res, int i);
+const ic_trace_report *ic_trace_result_report(const ic_trace_result *res);
 
 #ifdef __cplusplus
 }

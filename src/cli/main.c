@@ -13,7 +13,8 @@ static const char USAGE[] =
     "          derivative tensor of one surface of a problem at a point\n"
     "  point   the intersection at a point: its type, the Frenet apparatus and the\n"
     "          derivatives of any order with respect to arc length\n"
-    "  trace   (not yet available) trace the whole intersection\n"
+    "  trace   trace the whole intersection (two implicit surfaces, or a parametric\n"
+    "          and an implicit one, for now)\n"
     "  plot    (not yet available) draw surfaces, curves and frames\n"
     "\n"
     "example:\n"
@@ -38,8 +39,9 @@ int main(int argc, char **argv)
         return ic_cmd_eval(argc - 1, argv + 1);
     if (strcmp(argv[1], "point") == 0)
         return ic_cmd_point(argc - 1, argv + 1);
-    if (strcmp(argv[1], "trace") == 0 ||
-        strcmp(argv[1], "plot") == 0) {
+    if (strcmp(argv[1], "trace") == 0)
+        return ic_cmd_trace(argc - 1, argv + 1);
+    if (strcmp(argv[1], "plot") == 0) {
         fprintf(stderr, "intercurve: '%s' is not available in this version yet\n", argv[1]);
         return EXIT_INPUT;
     }

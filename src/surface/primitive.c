@@ -395,3 +395,34 @@ ic_status ic_primitive_taylor(ic_surface *s, double *out, const double *at,
     quadric_taylor(s, out, at, sp, A, B, C);
     return IC_OK;
 }
+
+ic_status ic_primitive_interval(ic_surface *s, ic_interval *out, const ic_interval *in,
+                                ic_error *err)
+{
+    const ic_primitive *p = &s->prim;
+    ic_interval d[3], sq[3];
+    for (int i = 0; i < 3; i++) {
+        d[i] = ic_interval_sub(in[i], (ic_interval){p->center[i], p->center[i]});
+        sq[i] = ic_interval_pow_int(d[i], 2);
+    }
+    if (p->kind == IC_PRIM_TORUS) {
+        /* (|d|^2 + R^2 - r^2)^2 - 4 R^2 (dx^2 + dy^2) */
+        const double R = p->major_radius, r = p->radius;
+        const ic_interval rho = ic_interval_add(sq[0], sq[1]);
+        const ic_interval sum = ic_interval_add(ic_interval_add(rho, sq[2]),
+                                                (ic_interval){R * R - r * r, R * R - r * r});
+        out[0] = ic_interval_sub(ic_interval_pow_int(sum, 2),
+                                 ic_interval_mul((ic_interval){4 * R * R, 4 * R * R}, rho));
+        return IC_OK;
+    }
+    double A[3], B[3], C;
+    quadric_coefficients(p, A, B, &C);
+    ic_interval f = {C, C};
+    for (int i = 0; i < 3; i++) {
+        f = ic_interval_add(f, ic_interval_mul((ic_interval){A[i], A[i]}, sq[i]));
+        f = ic_interval_add(f, ic_interval_mul((ic_interval){B[i], B[i]}, d[i]));
+    }
+    out[0] = f;
+    (void)err;
+    return IC_OK;
+}

@@ -261,3 +261,26 @@ ic_status ic_surface_eval(ic_surface *s, double *out, const double *at, ic_error
         return err ? err->code : IC_ERR_NOMEM;
     return ic_surface_taylor(s, out, at, sp, err);
 }
+
+ic_status ic_surface_eval_interval(ic_surface *s, ic_interval *out, const ic_interval *in,
+                                   ic_error *err)
+{
+    if (s->backend == BACKEND_PRIMITIVE && s->kind == IC_IMPLICIT)
+        return ic_primitive_interval(s, out, in, err);
+    if (s->backend != BACKEND_FORMULA)
+        return ic_error_set(err, IC_ERR_UNABLE, 0,
+                            "interval evaluation needs a formula surface or an implicit "
+                            "primitive");
+    ic_interval work[256];
+    ic_interval *w = work;
+    const size_t len = ic_expr_interval_work_len(s->expr);
+    if (len > 256) {
+        w = malloc(len * sizeof *w);
+        if (!w)
+            return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
+    }
+    ic_expr_eval_interval(s->expr, out, in, w);
+    if (w != work)
+        free(w);
+    return IC_OK;
+}

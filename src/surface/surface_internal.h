@@ -44,4 +44,8 @@ ic_status ic_primitive_taylor(ic_surface *s, double *out, const double *at,
 ic_status ic_primitive_compose(ic_surface *s, double *out, const double *const *in,
                                const ic_jet_space *sp, ic_error *err);
 
+/* An implicit primitive over a box (interval arithmetic, outward rounded). */
+ic_status ic_primitive_interval(ic_surface *s, ic_interval *out, const ic_interval *in,
+                                ic_error *err);
+
 #endif

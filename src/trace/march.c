@@ -42,6 +42,8 @@ void ic_trace_defaults(ic_trace_options *opt)
     opt->min_step = 1e-12;
     opt->order = 6;
     opt->max_points = 100000;
+    opt->depth = 6;
+    opt->shape_tol = 1e-6;
     ic_local_defaults(&opt->local);
 }
 
@@ -109,6 +111,7 @@ static ic_status record(ic_tracer *tr, ic_error *err)
     ic_scale3(p->b, br->b, (double)tr->dir);
     p->kappa = br->kappa;
     p->tau = br->tau;
+    p->angle = tr->res.angle;
     p->frame_defined = br->frame_defined;
     return IC_OK;
 }

@@ -1,0 +1,208 @@
+/* intercurve trace: the whole intersection as JSON (DESIGN.md 3.3). */
+#include "cli.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char TRACE_HELP[] =
+    "usage: intercurve trace PROBLEM.json [--format json] [-o FILE] [--tol T] [--depth D]\n"
+    "\n"
+    "Finds the intersection curves of the problem's two surfaces and traces each, with\n"
+    "t, n, b, curvature and torsion at every point, its length and its shape (line,\n"
+    "circle, planar, circular-helix, helix, general), the tangential points met, and a\n"
+    "report of what was proven (cells excluded by interval arithmetic), what was only\n"
+    "sampled, and every failure.\n"
+    "\n"
+    "This version searches two implicit surfaces inside the problem's \"box\" and a\n"
+    "parametric surface against an implicit one over the parametric \"domain\".\n"
+    "\n"
+    "  --format F   json (default; csv, vtk and obj come next)\n"
+    "  -o FILE      write to FILE (through a temporary file and a rename)\n"
+    "  --tol T      truncation error allowed per step, a length (default 1e-10)\n"
+    "  --depth D    subdivision depth of the start-point search, 1..9 (default 6)\n"
+    "\n"
+    "example:\n"
+    "  intercurve trace examples/viviani-implicit.json -o viviani.json\n";
+
+static cJSON *point_json(const ic_trace_point *p, const ic_pair *pair)
+{
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddItemToObject(o, "s", ic_json_number_or_null(p->s));
+    cJSON_AddItemToObject(o, "xyz", ic_json_vector(p->xyz, 3));
+    cJSON *params = cJSON_CreateArray();
+    for (int s = 0; s < 2; s++)
+        cJSON_AddItemToArray(params, ic_surface_get_kind(ic_pair_surface(pair, s)) == IC_PARAMETRIC
+                                         ? ic_json_vector(p->params[s], 2)
+                                         : cJSON_CreateNull());
+    cJSON_AddItemToObject(o, "params", params);
+    cJSON_AddItemToObject(o, "t", ic_json_vector(p->t, 3));
+    cJSON_AddItemToObject(o, "n", p->frame_defined ? ic_json_vector(p->n, 3) : cJSON_CreateNull());
+    cJSON_AddItemToObject(o, "b", p->frame_defined ? ic_json_vector(p->b, 3) : cJSON_CreateNull());
+    cJSON_AddItemToObject(o, "kappa", ic_json_number_or_null(p->kappa));
+    cJSON_AddItemToObject(o, "tau", p->frame_defined ? ic_json_number_or_null(p->tau) : cJSON_CreateNull());
+    cJSON_AddItemToObject(o, "angle", ic_json_number_or_null(p->angle));
+    cJSON_AddStringToObject(o, "type", "transversal");
+    return o;
+}
+
+static cJSON *result_json(const ic_trace_result *r, const ic_pair *pair)
+{
+    cJSON *doc = cJSON_CreateObject();
+    cJSON *curves = cJSON_CreateArray();
+    for (int i = 0; i < ic_trace_result_num_curves(r); i++) {
+        const ic_trace_curve *c = ic_trace_result_curve(r, i);
+        cJSON *o = cJSON_CreateObject();
+        cJSON_AddBoolToObject(o, "closed", c->closed);
+        cJSON_AddStringToObject(o, "type", "transversal");
+        cJSON_AddStringToObject(o, "shape", ic_shape_name(c->shape));
+        cJSON_AddNumberToObject(o, "shape_tolerance", c->shape_tol);
+        cJSON_AddItemToObject(o, "length", ic_json_number_or_null(c->length));
+        cJSON *ends = cJSON_CreateArray();
+        cJSON_AddItemToArray(ends, cJSON_CreateString(ic_trace_event_name(c->ends[0])));
+        cJSON_AddItemToArray(ends, cJSON_CreateString(ic_trace_event_name(c->ends[1])));
+        cJSON_AddItemToObject(o, "ends", ends);
+        cJSON *pts = cJSON_CreateArray();
+        for (int k = 0; k < c->npoints; k++)
+            cJSON_AddItemToArray(pts, point_json(&c->points[k], pair));
+        cJSON_AddItemToObject(o, "points", pts);
+        cJSON_AddItemToArray(curves, o);
+    }
+    cJSON_AddItemToObject(doc, "curves", curves);
+    cJSON *points = cJSON_CreateArray();
+    for (int i = 0; i < ic_trace_result_num_specials(r); i++) {
+        const ic_trace_special *sp = ic_trace_result_special(r, i);
+        cJSON *o = cJSON_CreateObject();
+        cJSON_AddItemToObject(o, "xyz", ic_json_vector(sp->xyz, 3));
+        cJSON_AddStringToObject(o, "type", ic_point_type_name(sp->type));
+        cJSON_AddNumberToObject(o, "branches", sp->nbranches);
+        cJSON_AddBoolToObject(o, "approximate", sp->approximate);
+        cJSON_AddItemToArray(points, o);
+    }
+    cJSON_AddItemToObject(doc, "points", points);
+    const ic_trace_report *rep = ic_trace_result_report(r);
+    cJSON *ro = cJSON_CreateObject();
+    cJSON_AddNumberToObject(ro, "cells", rep->cells);
+    cJSON_AddNumberToObject(ro, "cells_excluded_by_intervals", rep->cells_excluded);
+    cJSON_AddBoolToObject(ro, "exclusion_proven", rep->proven);
+    cJSON_AddStringToObject(ro, "sampled",
+                            rep->proven ? "start points inside the cells that were not excluded"
+                                        : "everything: a surface has no interval evaluation");
+    cJSON_AddNumberToObject(ro, "smallest_cell", rep->cell_size);
+    cJSON_AddNumberToObject(ro, "start_candidates", rep->candidates);
+    cJSON_AddNumberToObject(ro, "uncovered_cells", rep->uncovered_cells);
+    cJSON *f = cJSON_CreateArray();
+    for (int i = 0; i < rep->nfailures; i++)
+        cJSON_AddItemToArray(f, cJSON_CreateString(rep->failures[i]));
+    cJSON_AddItemToObject(ro, "failures", f);
+    cJSON_AddItemToObject(doc, "report", ro);
+    return doc;
+}
+
+/* Writes text to path through a temporary file and a rename. */
+static int write_atomic(const char *path, const char *text)
+{
+    const size_t len = strlen(path) + 16;
+    char *tmp = malloc(len);
+    if (!tmp)
+        return -1;
+    snprintf(tmp, len, "%s.tmp", path);
+    FILE *f = fopen(tmp, "w");
+    int ok = f && fputs(text, f) >= 0 && fputc('\n', f) != EOF;
+    if (f && fclose(f) != 0)
+        ok = 0;
+    if (ok && rename(tmp, path) != 0)
+        ok = 0;
+    if (!ok)
+        remove(tmp);
+    free(tmp);
+    return ok ? 0 : -1;
+}
+
+int ic_cmd_trace(int argc, char **argv)
+{
+    const char *file = NULL, *outpath = NULL, *format = "json";
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    for (int i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            fputs(TRACE_HELP, stdout);
+            return 0;
+        }
+        const int has_value = i + 1 < argc;
+        if (strcmp(argv[i], "--format") == 0 && has_value)
+            format = argv[++i];
+        else if (strcmp(argv[i], "-o") == 0 && has_value)
+            outpath = argv[++i];
+        else if (strcmp(argv[i], "--tol") == 0 && has_value) {
+            double v;
+            if (ic_cli_parse_list(&v, 1, argv[++i], "--tol") != 1 || !(v > 0) || v > 1e-2) {
+                fprintf(stderr, "intercurve trace: --tol expects a length in (0, 1e-2]\n");
+                return EXIT_INPUT;
+            }
+            opt.tol = v;
+        } else if (strcmp(argv[i], "--depth") == 0 && has_value) {
+            if (ic_cli_parse_int(&opt.depth, argv[++i], 1, 9, "--depth") < 0)
+                return EXIT_INPUT;
+        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
+            fprintf(stderr, "intercurve trace: unknown option or missing value: %s\n"
+                            "try 'intercurve trace --help'\n", argv[i]);
+            return EXIT_INPUT;
+        } else if (!file)
+            file = argv[i];
+        else {
+            fprintf(stderr, "intercurve trace: unexpected argument '%s'\n", argv[i]);
+            return EXIT_INPUT;
+        }
+    }
+    if (!file) {
+        fprintf(stderr, "intercurve trace: needs PROBLEM.json\n%s", TRACE_HELP);
+        return EXIT_INPUT;
+    }
+    if (strcmp(format, "json") != 0) {
+        fprintf(stderr, "intercurve trace: --format %s is not available yet (json is)\n", format);
+        return EXIT_INPUT;
+    }
+    ic_error err;
+    ic_error_clear(&err);
+    ic_problem *p = NULL;
+    ic_pair *pair = NULL;
+    ic_trace_result *res = NULL;
+    if (ic_problem_load(&p, file, &err) != IC_OK) {
+        ic_cli_print_error(file, &err);
+        return EXIT_INPUT;
+    }
+    int rc = EXIT_INPUT;
+    opt.has_box = ic_problem_box(p, opt.box);
+    const int self = ic_problem_is_self(p);
+    if (ic_pair_new(&pair, ic_problem_surface(p, 0), self ? NULL : ic_problem_surface(p, 1),
+                    &err) != IC_OK) {
+        ic_cli_print_error(file, &err);
+        goto cleanup;
+    }
+    ic_status st = ic_trace(&res, pair, &opt, &err);
+    if (st != IC_OK) {
+        ic_cli_print_error(file, &err);
+        rc = st == IC_ERR_INVALID ? EXIT_INPUT : EXIT_COMPUTE;
+        goto cleanup;
+    }
+    cJSON *doc = result_json(res, pair);
+    if (outpath) {
+        char *text = cJSON_Print(doc);
+        cJSON_Delete(doc);
+        if (!text || write_atomic(outpath, text) != 0) {
+            fprintf(stderr, "intercurve trace: cannot write %s\n", outpath);
+            rc = EXIT_COMPUTE;
+        } else {
+            rc = 0;
+        }
+        free(text);
+    } else {
+        rc = ic_json_print(doc) == 0 ? 0 : EXIT_COMPUTE;
+    }
+cleanup:
+    ic_trace_result_free(res);
+    ic_pair_free(pair);
+    ic_problem_free(p);
+    return rc;
+}

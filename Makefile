@@ -40,6 +40,9 @@ sanitize:
 demo: all
 	./$(BUILD)/intercurve eval examples/viviani.json --surface sphere --at 0.3,0.4 --order 3
 	./$(BUILD)/intercurve point examples/viviani.json --at 1.5,0.8660254037844386,1 --order 4 --format text
+	./$(BUILD)/intercurve point examples/viviani.json --at 2,0,0 --order 3 --format text
+	./$(BUILD)/intercurve trace examples/viviani-implicit.json -o $(BUILD)/viviani-trace.json
+	@echo "traced Viviani's curve into $(BUILD)/viviani-trace.json"
 
 bench: all
 	./$(BUILD)/bench/bench_surface

@@ -67,5 +67,42 @@ int main(void)
         ic_surface_free(A);
         ic_surface_free(B);
     }
+    /* the whole intersection: start-point search, every curve, the report */
+    printf("\n%-40s %8s %8s %14s\n", "whole intersection (box search, depth 6)", "tol", "curves",
+           "ms per trace");
+    struct {
+        const char *name, *f, *g;
+        double box;
+    } whole[] = {
+        {"Viviani (implicit/implicit)", "(x - 1)^2 + y^2 - 1", "x^2 + y^2 + z^2 - 4", 2.5},
+        {"ellipsoids Ex 5.1", "x^2/0.36 + y^2/0.64 + z^2 - 1",
+         "x^2/0.2025 + y^2/0.64 + z^2/1.5625 - 1", 1.5},
+        {"sphere/plane circle", "x^2 + y^2 + z^2 - 4", "z - 1", 3},
+    };
+    for (size_t c = 0; c < sizeof whole / sizeof whole[0]; c++) {
+        ic_surface *A = NULL, *B = NULL;
+        ic_pair *pair = NULL;
+        if (ic_surface_new_implicit(&A, whole[c].f, NULL, 0, NULL) ||
+            ic_surface_new_implicit(&B, whole[c].g, NULL, 0, NULL) || ic_pair_new(&pair, A, B, NULL))
+            return 1;
+        for (int k = 0; k < 3; k++) {
+            ic_trace_options opt;
+            ic_trace_defaults(&opt);
+            opt.tol = tols[k];
+            opt.has_box = 1;
+            for (int i = 0; i < 3; i++)
+                opt.box[i][0] = -whole[c].box, opt.box[i][1] = whole[c].box;
+            const double t0 = bench_now();
+            ic_trace_result *r = NULL;
+            if (ic_trace(&r, pair, &opt, NULL) != IC_OK)
+                return 1;
+            const double ms = (bench_now() - t0) * 1e3;
+            printf("%-40s %8.0e %8d %14.1f\n", whole[c].name, tols[k], ic_trace_result_num_curves(r), ms);
+            ic_trace_result_free(r);
+        }
+        ic_pair_free(pair);
+        ic_surface_free(A);
+        ic_surface_free(B);
+    }
     return 0;
 }

@@ -131,6 +131,17 @@ IC_NODISCARD ic_status ic_local_locate_params(ic_pair *pair, ic_local_point *pt,
                                               const double *params, int nparams,
                                               const ic_local_options *opt, ic_error *err);
 
+/**
+ * The tangential point nearest to a point close to it: on both surfaces with
+ * parallel normals (N_A x N_B = 0), by Gauss-Newton on the residuals of the
+ * pairing (distances to the surfaces, the components of N_A x N_B) from
+ * `near`. IC_ERR_UNABLE if it does not converge (residual above 1e-12) or
+ * moves farther than `reach` (a length).
+ */
+IC_NODISCARD ic_status ic_local_locate_tangential(ic_pair *pair, ic_local_point *pt,
+                                                  const ic_local_point *near, double reach,
+                                                  const ic_local_options *opt, ic_error *err);
+
 /** Darboux quantities of the curve on one surface (DESIGN.md 2.1). */
 typedef struct {
     double kappa_n; /**< normal curvature c'' . N */

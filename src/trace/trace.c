@@ -16,6 +16,7 @@
 struct ic_trace_result {
     ic_trace_curve *curves;
     ic_trace_point **storage; /* the points of each curve */
+    int (*at)[2];             /* the exact tangential point at each end, or -1 */
     int ncurves, capc;
     ic_trace_special *specials;
     int nspecials, caps;
@@ -114,14 +115,21 @@ static void cover(ic_candidate *c, int n, const ic_trace_point *pts, int np, dou
 }
 
 static ic_status add_special(ic_trace_result *r, ic_pair *pair, const ic_local_point *pt,
-                             int approximate, const ic_trace_options *opt)
+                             int approximate, const ic_trace_options *opt, int *index)
 {
+    int dummy;
+    if (!index)
+        index = &dummy;
     for (int i = 0; i < r->nspecials; i++) {
         double d[3];
         ic_axpy3(d, r->specials[i].xyz, -1.0, pt->xyz);
-        if (ic_norm3(d) < 1e-3) /* the same point met from another curve */
+        const double same = r->specials[i].approximate || approximate ? 1e-3 : 1e-9;
+        if (ic_norm3(d) < same) { /* the same point met from another curve */
+            *index = i;
             return IC_OK;
+        }
     }
+    *index = r->nspecials;
     if (r->nspecials == r->caps) {
         const int cap = r->caps ? 2 * r->caps : 8;
         ic_trace_special *p = realloc(r->specials, (size_t)cap * sizeof *p);
@@ -150,20 +158,25 @@ static ic_status add_special(ic_trace_result *r, ic_pair *pair, const ic_local_p
 }
 
 static ic_status add_curve(ic_trace_result *r, ic_trace_point *pts, int n, int closed,
-                           ic_trace_event e0, ic_trace_event e1, double shape_tol)
+                           ic_trace_event e0, ic_trace_event e1, double shape_tol, int at0, int at1)
 {
     if (r->ncurves == r->capc) {
         const int cap = r->capc ? 2 * r->capc : 8;
         ic_trace_curve *c = realloc(r->curves, (size_t)cap * sizeof *c);
         ic_trace_point **s = realloc(r->storage, (size_t)cap * sizeof *s);
+        int(*at)[2] = realloc(r->at, (size_t)cap * sizeof *at);
         if (c)
             r->curves = c;
         if (s)
             r->storage = s;
-        if (!c || !s)
+        if (at)
+            r->at = at;
+        if (!c || !s || !at)
             return IC_ERR_NOMEM;
         r->capc = cap;
     }
+    r->at[r->ncurves][0] = at0;
+    r->at[r->ncurves][1] = at1;
     ic_trace_curve *c = &r->curves[r->ncurves];
     r->storage[r->ncurves++] = pts;
     memset(c, 0, sizeof *c);
@@ -176,6 +189,53 @@ static ic_status add_curve(ic_trace_result *r, ic_trace_point *pts, int n, int c
     c->shape_tol = shape_tol;
     c->shape = classify(pts, n, c->length, shape_tol);
     return IC_OK;
+}
+
+/* A curve end at a tangential point: the point located precisely, appended
+ * (the last step, about 2e-5, is straight to 1e-16) with the apparatus of
+ * the branch continuing the curve, and recorded. Returns the special index,
+ * or -1 (then the end is recorded approximately). */
+static int finish_end(ic_trace_result *r, ic_pair *pair, const ic_trace_options *opt,
+                      ic_trace_point *last, ic_trace_point *extra)
+{
+    ic_local_point near, P;
+    memset(&near, 0, sizeof near);
+    memcpy(near.xyz, last->xyz, sizeof near.xyz);
+    memcpy(near.params, last->params, sizeof near.params);
+    int index = -1;
+    if (ic_local_locate_tangential(pair, &P, &near, 1e-3, &opt->local, NULL) != IC_OK) {
+        add_special(r, pair, &near, 1, opt, NULL);
+        return -1;
+    }
+    ic_local_result res;
+    ic_local_options o = opt->local;
+    if (ic_local_apparatus(pair, &res, &P, 3, IC_METHOD_AUTO, &o, NULL) != IC_OK ||
+        add_special(r, pair, &P, 0, opt, &index) != IC_OK)
+        return -1;
+    double d[3];
+    ic_axpy3(d, P.xyz, -1.0, last->xyz);
+    *extra = *last;
+    extra->s = last->s + ic_norm3(d);
+    memcpy(extra->xyz, P.xyz, sizeof P.xyz);
+    memcpy(extra->params, P.params, sizeof P.params);
+    extra->angle = res.angle;
+    /* the branch through P that continues the curve */
+    int best = -1;
+    double bd = 0;
+    for (int b = 0; b < res.nbranches; b++)
+        if (fabs(ic_dot3(res.branches[b].t, last->t)) > bd)
+            bd = fabs(ic_dot3(res.branches[b].t, last->t)), best = b;
+    if (best >= 0 && res.branches[best].regular) {
+        const ic_branch *br = &res.branches[best];
+        const double sg = ic_dot3(br->t, last->t) < 0 ? -1.0 : 1.0;
+        ic_scale3(extra->t, br->t, sg);
+        memcpy(extra->n, br->n, sizeof extra->n);
+        ic_scale3(extra->b, br->b, sg);
+        extra->kappa = br->kappa;
+        extra->tau = br->tau;
+        extra->frame_defined = br->frame_defined;
+    }
+    return index;
 }
 
 /* Traces the curve through pt: forward, and backward unless it closed. */
@@ -192,21 +252,18 @@ static ic_status trace_curve(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
     if (st != IC_OK)
         failure(&r->report, "curve from (%g, %g, %g): %s", pt->xyz[0], pt->xyz[1], pt->xyz[2],
                 err ? err->message : "failed");
-    const int n1 = ic_tracer_num_points(tr);
-    ic_trace_point *fwd = malloc((size_t)n1 * sizeof *fwd);
+    int n1 = ic_tracer_num_points(tr);
+    ic_trace_point *fwd = malloc((size_t)(n1 + 1) * sizeof *fwd);
     if (!fwd)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
     memcpy(fwd, ic_tracer_point(tr, 0), (size_t)n1 * sizeof *fwd);
-    if (e1 == IC_TRACE_TANGENTIAL) {
-        ic_local_point end = *pt;
-        memcpy(end.xyz, fwd[n1 - 1].xyz, sizeof end.xyz);
-        memcpy(end.params, fwd[n1 - 1].params, sizeof end.params);
-        add_special(r, pair, &end, 1, opt);
-    }
+    int at1 = -1, at0 = -1;
+    if (e1 == IC_TRACE_TANGENTIAL && (at1 = finish_end(r, pair, opt, &fwd[n1 - 1], &fwd[n1])) >= 0)
+        n1++;
     if (e1 == IC_TRACE_CLOSED) {
         *pts_out = fwd;
         *n_out = n1;
-        return add_curve(r, fwd, n1, 1, e1, e1, opt->shape_tol);
+        return add_curve(r, fwd, n1, 1, e1, e1, opt->shape_tol, -1, -1);
     }
     st = ic_tracer_start(tr, pt, -1, err);
     if (st == IC_OK)
@@ -214,16 +271,25 @@ static ic_status trace_curve(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
     if (st != IC_OK)
         failure(&r->report, "curve from (%g, %g, %g), backwards: %s", pt->xyz[0], pt->xyz[1],
                 pt->xyz[2], err ? err->message : "failed");
-    const int n0 = ic_tracer_num_points(tr);
-    ic_trace_point *all = malloc((size_t)(n0 + n1 - 1) * sizeof *all);
-    if (!all) {
+    int n0 = ic_tracer_num_points(tr);
+    ic_trace_point *back = malloc((size_t)(n0 + 1) * sizeof *back);
+    if (!back) {
         free(fwd);
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
     }
+    memcpy(back, ic_tracer_point(tr, 0), (size_t)n0 * sizeof *back);
+    if (e0 == IC_TRACE_TANGENTIAL && (at0 = finish_end(r, pair, opt, &back[n0 - 1], &back[n0])) >= 0)
+        n0++;
+    ic_trace_point *all = malloc((size_t)(n0 + n1 - 1) * sizeof *all);
+    if (!all) {
+        free(fwd);
+        free(back);
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
+    }
     /* the backward part reversed: order, orientation (t, b) and arc length */
-    const double S0 = ic_tracer_point(tr, n0 - 1)->s;
+    const double S0 = back[n0 - 1].s;
     for (int i = 0; i < n0; i++) {
-        ic_trace_point p = *ic_tracer_point(tr, n0 - 1 - i);
+        ic_trace_point p = back[n0 - 1 - i];
         ic_scale3(p.t, p.t, -1.0);
         ic_scale3(p.b, p.b, -1.0);
         p.s = S0 - p.s;
@@ -233,16 +299,109 @@ static ic_status trace_curve(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
         all[n0 - 1 + i] = fwd[i];
         all[n0 - 1 + i].s += S0;
     }
-    if (e0 == IC_TRACE_TANGENTIAL) {
-        ic_local_point end = *pt;
-        memcpy(end.xyz, all[0].xyz, sizeof end.xyz);
-        memcpy(end.params, all[0].params, sizeof end.params);
-        add_special(r, pair, &end, 1, opt);
-    }
     free(fwd);
+    free(back);
     *pts_out = all;
     *n_out = n0 + n1 - 1;
-    return add_curve(r, all, n0 + n1 - 1, 0, e0, e1, opt->shape_tol);
+    return add_curve(r, all, n0 + n1 - 1, 0, e0, e1, opt->shape_tol, at0, at1);
+}
+
+/* Reverses a curve in place: order, orientation (t, b) and arc length. */
+static void reverse_curve(ic_trace_point *p, int n)
+{
+    const double L = p[n - 1].s + p[0].s;
+    for (int i = 0; i < n / 2; i++) {
+        const ic_trace_point tmp = p[i];
+        p[i] = p[n - 1 - i];
+        p[n - 1 - i] = tmp;
+    }
+    for (int i = 0; i < n; i++) {
+        ic_scale3(p[i].t, p[i].t, -1.0);
+        ic_scale3(p[i].b, p[i].b, -1.0);
+        p[i].s = L - p[i].s;
+    }
+}
+
+/* Joins curves through the tangential points at their ends where a branch
+ * continues smoothly: the outgoing directions of the two ends are opposite.
+ * A curve joined to itself is closed. */
+static ic_status join_curves(ic_trace_result *r, double shape_tol)
+{
+    for (int changed = 1; changed;) {
+        changed = 0;
+        for (int a = 0; a < r->ncurves && !changed; a++)
+            for (int ea = 0; ea < 2 && !changed; ea++) {
+                const int k = r->at[a][ea];
+                if (k < 0 || r->curves[a].closed)
+                    continue;
+                for (int b = a; b < r->ncurves && !changed; b++)
+                    for (int eb = 0; eb < 2 && !changed; eb++) {
+                        if ((b == a && eb == ea) || r->at[b][eb] != k)
+                            continue;
+                        /* outgoing directions: +t at a start, -t at an end */
+                        const ic_trace_curve *ca = &r->curves[a], *cb = &r->curves[b];
+                        const ic_trace_point *pa = ea ? &ca->points[ca->npoints - 1] : &ca->points[0];
+                        const ic_trace_point *pb = eb ? &cb->points[cb->npoints - 1] : &cb->points[0];
+                        double oa[3], ob[3];
+                        ic_scale3(oa, pa->t, ea ? -1.0 : 1.0);
+                        ic_scale3(ob, pb->t, eb ? -1.0 : 1.0);
+                        if (ic_dot3(oa, ob) > -1 + 1e-6)
+                            continue;
+                        ic_trace_point *A = r->storage[a];
+                        int na = ca->npoints;
+                        if (b == a) { /* both ends of one curve: it closes */
+                            r->curves[a].closed = 1;
+                            r->curves[a].ends[0] = r->curves[a].ends[1] = IC_TRACE_CLOSED;
+                            r->at[a][0] = r->at[a][1] = -1;
+                            changed = 1;
+                            continue;
+                        }
+                        /* a's joining end last, b's joining end first */
+                        if (ea == 0)
+                            reverse_curve(A, na);
+                        ic_trace_point *B = r->storage[b];
+                        const int nb = cb->npoints;
+                        if (eb == 1)
+                            reverse_curve(B, nb);
+                        ic_trace_point *J = realloc(A, (size_t)(na + nb - 1) * sizeof *J);
+                        if (!J)
+                            return IC_ERR_NOMEM;
+                        const double shift = J[na - 1].s - B[0].s;
+                        for (int i = 1; i < nb; i++) {
+                            J[na - 1 + i] = B[i];
+                            J[na - 1 + i].s += shift;
+                        }
+                        const int at0 = r->at[a][ea == 0 ? 1 : 0], at1 = r->at[b][eb == 1 ? 0 : 1];
+                        const ic_trace_event e0 = ca->ends[ea == 0 ? 1 : 0];
+                        const ic_trace_event e1 = cb->ends[eb == 1 ? 0 : 1];
+                        free(B);
+                        /* b leaves the list; a becomes the joined curve */
+                        r->storage[a] = J;
+                        r->curves[b] = r->curves[r->ncurves - 1];
+                        r->storage[b] = r->storage[r->ncurves - 1];
+                        r->at[b][0] = r->at[r->ncurves - 1][0];
+                        r->at[b][1] = r->at[r->ncurves - 1][1];
+                        const int ai = a == r->ncurves - 1 ? b : a;
+                        r->ncurves--;
+                        ic_trace_curve *c = &r->curves[ai];
+                        r->storage[ai] = J;
+                        c->points = J;
+                        c->npoints = na + nb - 1;
+                        c->ends[0] = e0;
+                        c->ends[1] = e1;
+                        r->at[ai][0] = at0;
+                        r->at[ai][1] = at1;
+                        changed = 1;
+                    }
+            }
+    }
+    for (int i = 0; i < r->ncurves; i++) {
+        ic_trace_curve *c = &r->curves[i];
+        c->points = r->storage[i];
+        c->length = c->points[c->npoints - 1].s - c->points[0].s;
+        c->shape = classify(c->points, c->npoints, c->length, shape_tol);
+    }
+    return IC_OK;
 }
 
 ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options *opt,
@@ -284,7 +443,7 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
         if (ic_local_apparatus(pair, &res, &pt, 2, IC_METHOD_JET, &lo, &e2) != IC_OK ||
             res.type != IC_POINT_TRANSVERSAL) {
             /* a tangential candidate: recorded, and covered around it */
-            st = add_special(r, pair, &pt, 0, opt);
+            st = add_special(r, pair, &pt, 0, opt, NULL);
             ic_trace_point one;
             memset(&one, 0, sizeof one);
             memcpy(one.xyz, pt.xyz, sizeof one.xyz);
@@ -322,6 +481,8 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
             r->report.uncovered_cells++;
         }
     }
+    if (st == IC_OK && join_curves(r, opt->shape_tol) != IC_OK)
+        st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory joining curves");
     ic_tracer_free(tr);
     free(cand);
     free(unres);
@@ -341,6 +502,7 @@ void ic_trace_result_free(ic_trace_result *r)
         free(r->storage[i]);
     free(r->storage);
     free(r->curves);
+    free(r->at);
     free(r->specials);
     free(r);
 }

@@ -127,7 +127,9 @@ check "trace -o FILE exits 0" $?
 [ -s "$tmpout" ] && [ ! -e "$tmpout.tmp" ] && grep -q '"shape":.*"planar"' "$tmpout"
 check "trace -o FILE: written through a rename, planar arcs of Ex 5.1" $?
 expect_error 1 "trace $src/examples/viviani-implicit.json --format csv" "--format csv is not available yet"
-expect_error 2 "trace $src/examples/viviani.json" "four parameters"
+"$bin" trace "$src/examples/enneper-self.json" >"$out" 2>"$errf"
+[ "$(grep -c '"closed":' "$out")" -eq 2 ] && [ "$(grep -c '"shape":.*"planar"' "$out")" -eq 2 ]
+check "trace a self-intersection: Enneper's two planar double curves" $?
 expect_error 1 "trace $src/tests/data/bad-formula.json" "surfaces[0].f"
 "$bin" trace --help | grep -q "example:"
 check "trace --help has an example" $?

@@ -136,10 +136,11 @@ typedef struct ic_trace_result ic_trace_result;
 /**
  * Traces the whole intersection of the pair: start points by subdivision of
  * the box (implicit/implicit; opt->has_box required) or of the parametric
- * surface's domain (parametric/implicit; a finite domain required), every
- * curve traced in both directions, tangential curve ends recorded. Two
- * parametric surfaces and self-intersections are not searched yet
- * (IC_ERR_UNABLE). The result is freed with ic_trace_result_free.
+ * surface's domain (parametric/implicit; a finite domain required) or of
+ * both domains (two parametric surfaces; a self-intersection, with the
+ * preimage pairs ordered and the diagonal left out), every curve traced in
+ * both directions, tangential curve ends recorded. The result is freed with
+ * ic_trace_result_free.
  */
 IC_NODISCARD ic_status ic_trace(ic_trace_result **res, ic_pair *pair, const ic_trace_options *opt,
                                 ic_error *err);

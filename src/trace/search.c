@@ -19,7 +19,7 @@
 #include <string.h>
 
 typedef struct {
-    double lo[3], hi[3];
+    double lo[4], hi[4];
     int depth;
 } cell;
 
@@ -101,6 +101,48 @@ static int newton_mixed(ic_surface *P, ic_surface *I, const ic_jet_space *sp2,
     return -1;
 }
 
+/* Min-norm Newton onto R_A(u, v) = R_B(p, q) from z = (u, v, p, q). */
+static int newton_params(ic_surface *A, ic_surface *B, const ic_jet_space *sp2, double *z,
+                         double *x)
+{
+    for (int it = 0; it < 40; it++) {
+        double ta[9], tb[9];
+        if (ic_surface_taylor(A, ta, z, sp2, NULL) || ic_surface_taylor(B, tb, z + 2, sp2, NULL))
+            return -1;
+        double F[3], J[3][4];
+        for (int k = 0; k < 3; k++) {
+            F[k] = ta[3 * k] - tb[3 * k];
+            J[k][0] = ta[3 * k + 1], J[k][1] = ta[3 * k + 2];
+            J[k][2] = -tb[3 * k + 1], J[k][3] = -tb[3 * k + 2];
+        }
+        x[0] = ta[0], x[1] = ta[3], x[2] = ta[6];
+        /* step = J^T (J J^T)^-1 F */
+        double M[3][3], y[3];
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++) {
+                M[a][b] = 0;
+                for (int j = 0; j < 4; j++)
+                    M[a][b] += J[a][j] * J[b][j];
+            }
+        const double det = ic_det3(M[0], M[1], M[2]);
+        if (!(fabs(det) > 1e-30))
+            return -1;
+        double c0[3] = {M[0][0], M[1][0], M[2][0]}, c1[3] = {M[0][1], M[1][1], M[2][1]},
+               c2[3] = {M[0][2], M[1][2], M[2][2]};
+        y[0] = ic_det3(F, c1, c2) / det, y[1] = ic_det3(c0, F, c2) / det;
+        y[2] = ic_det3(c0, c1, F) / det;
+        double size = 0;
+        for (int j = 0; j < 4; j++) {
+            const double step = J[0][j] * y[0] + J[1][j] * y[1] + J[2][j] * y[2];
+            z[j] -= step;
+            size = fmax(size, fabs(step));
+        }
+        if (size <= 1e-15 * (1 + fabs(z[0]) + fabs(z[1]) + fabs(z[2]) + fabs(z[3])))
+            return ic_norm3(F) < 1e-10 * (1 + ic_norm3(x)) ? 0 : -1;
+    }
+    return -1;
+}
+
 ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_candidate **out,
                               int *nout, ic_unresolved **unres, int *nunres, ic_trace_report *rep,
                               ic_error *err)
@@ -113,15 +155,27 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_can
     ic_surface *S[2] = {ic_pair_surface(pair, 0), ic_pair_surface(pair, 1)};
     const int par[2] = {ic_surface_get_kind(S[0]) == IC_PARAMETRIC,
                         ic_surface_get_kind(S[1]) == IC_PARAMETRIC};
-    if (ic_pair_is_self(pair) || (par[0] && par[1]))
-        return ic_error_set(err, IC_ERR_UNABLE, 0,
-                            "tracing two parametric surfaces (or a self-intersection) needs a "
-                            "search over four parameters, not available yet");
-    const int mixed = par[0] || par[1];
+    const int both = par[0] && par[1], self = ic_pair_is_self(pair);
+    const int mixed = !both && (par[0] || par[1]);
     const int P = par[0] ? 0 : 1, I = 1 - P;
     int dim = 3;
-    double lo[3], hi[3];
-    if (mixed) {
+    double lo[4], hi[4];
+    if (both) { /* (u, v, p, q) */
+        for (int s2 = 0; s2 < 2; s2++) {
+            double dom[2][2];
+            int per[2];
+            ic_surface_get_domain(S[s2], dom, per);
+            for (int i = 0; i < 2; i++) {
+                if (!isfinite(dom[i][0]) || !isfinite(dom[i][1]))
+                    return ic_error_set(err, IC_ERR_INVALID, 0,
+                                        "tracing needs a finite \"domain\" for the parametric "
+                                        "surface %c",
+                                        'A' + s2);
+                lo[2 * s2 + i] = dom[i][0], hi[2 * s2 + i] = dom[i][1];
+            }
+        }
+        dim = 4;
+    } else if (mixed) {
         double dom[2][2];
         int per[2];
         ic_surface_get_domain(S[P], dom, per);
@@ -142,19 +196,22 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_can
             lo[k] = opt->box[k][0], hi[k] = opt->box[k][1];
     }
     /* can the surfaces be enclosed? (formula surfaces only) */
-    ic_interval probe_in[3], probe_out[3];
-    for (int k = 0; k < 3; k++)
+    ic_interval probe_in[4], probe_out[3];
+    for (int k = 0; k < 4; k++)
         probe_in[k] = (ic_interval){k < dim ? lo[k] : 0, k < dim ? hi[k] : 0};
     rep->proven = ic_surface_eval_interval(S[0], probe_out, probe_in, NULL) == IC_OK &&
-                  ic_surface_eval_interval(S[1], probe_out, probe_in, NULL) == IC_OK;
-    const int depth = rep->proven ? opt->depth : (opt->depth < 4 ? opt->depth : 4);
+                  ic_surface_eval_interval(S[1], probe_out, probe_in + (both ? 2 : 0), NULL) == IC_OK;
+    /* four parameters: one level less (16 children a split) */
+    const int full = both ? opt->depth - 1 : opt->depth;
+    const int depth = rep->proven ? full : (full < 4 ? full : 4);
     ic_jet_space *sp2 = NULL, *sp3 = NULL;
     ic_status st = ic_jet_space_new(&sp2, 2, 1, err);
     if (st == IC_OK)
         st = ic_jet_space_new(&sp3, 3, 1, err);
     cand_list list = {0};
-    const size_t max_stack = 8 * (size_t)depth + 16;
+    const size_t max_stack = 16 * (size_t)depth + 16;
     cell *stack = malloc(max_stack * sizeof *stack);
+    const double dwidth[2] = {(hi[0] - lo[0]) / (1 << depth), (hi[1] - lo[1]) / (1 << depth)};
     if (st == IC_OK && !stack)
         st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory searching start points");
     int top = 0;
@@ -170,7 +227,31 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_can
     while (st == IC_OK && top > 0) {
         const cell c = stack[--top];
         rep->cells++;
-        if (rep->proven) {
+        if (self) {
+            /* one sheet pair per curve: (u, v) before (p, q); and away from the
+             * trivial diagonal (u, v) = (p, q), two leaf widths at least */
+            if (c.lo[0] > c.hi[2] ||
+                (c.hi[0] >= c.lo[2] - 2 * dwidth[0] && c.lo[0] <= c.hi[2] + 2 * dwidth[0] &&
+                 c.hi[1] >= c.lo[3] - 2 * dwidth[1] && c.lo[1] <= c.hi[3] + 2 * dwidth[1] &&
+                 c.depth == depth))
+                continue;
+        }
+        if (rep->proven && both) {
+            ic_interval ua[2] = {{c.lo[0], c.hi[0]}, {c.lo[1], c.hi[1]}};
+            ic_interval ub[2] = {{c.lo[2], c.hi[2]}, {c.lo[3], c.hi[3]}};
+            ic_interval xa[3], xb[3];
+            int empty = 0;
+            if (ic_surface_eval_interval(S[0], xa, ua, NULL) == IC_OK &&
+                ic_surface_eval_interval(S[1], xb, ub, NULL) == IC_OK)
+                for (int k = 0; k < 3; k++)
+                    if (ic_interval_is_empty(xa[k]) || ic_interval_is_empty(xb[k]) ||
+                        xa[k].hi < xb[k].lo || xb[k].hi < xa[k].lo)
+                        empty = 1;
+            if (empty) {
+                rep->cells_excluded++;
+                continue;
+            }
+        } else if (rep->proven) {
             ic_interval box[3], fa, fb, xyz[3];
             for (int k = 0; k < dim; k++)
                 box[k] = (ic_interval){c.lo[k], c.hi[k]};
@@ -207,7 +288,20 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_can
         memset(&cand, 0, sizeof cand);
         double x[3], uv[2];
         int ok, converged;
-        if (mixed) {
+        if (both) {
+            double z[4];
+            for (int k = 0; k < 4; k++)
+                z[k] = 0.5 * (c.lo[k] + c.hi[k]);
+            ok = converged = newton_params(S[0], S[1], sp2, z, x) == 0;
+            for (int k = 0; ok && k < 4; k++) {
+                const double w = c.hi[k] - c.lo[k];
+                ok = z[k] >= c.lo[k] - w && z[k] <= c.hi[k] + w && z[k] >= lo[k] && z[k] <= hi[k];
+            }
+            if (ok && self) /* distinct preimages */
+                ok = fabs(z[0] - z[2]) + fabs(z[1] - z[3]) > 4 * (dwidth[0] + dwidth[1]);
+            cand.params[0][0] = z[0], cand.params[0][1] = z[1];
+            cand.params[1][0] = z[2], cand.params[1][1] = z[3];
+        } else if (mixed) {
             uv[0] = 0.5 * (c.lo[0] + c.hi[0]), uv[1] = 0.5 * (c.lo[1] + c.hi[1]);
             ok = converged = newton_mixed(S[P], S[I], sp2, sp3, uv, x) == 0;
             for (int k = 0; ok && k < 2; k++) {
@@ -231,9 +325,9 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_can
         } else if (!converged) { /* a curve may pass here unfound (a tangential one) */
             ic_unresolved u;
             double t[9];
-            if (mixed) {
+            if (mixed || both) {
                 const double uvc[2] = {0.5 * (c.lo[0] + c.hi[0]), 0.5 * (c.lo[1] + c.hi[1])};
-                if (ic_surface_taylor(S[P], t, uvc, sp2, NULL) != IC_OK)
+                if (ic_surface_taylor(S[both ? 0 : P], t, uvc, sp2, NULL) != IC_OK)
                     continue;
                 const double Ru[3] = {t[1], t[4], t[7]}, Rv[3] = {t[2], t[5], t[8]};
                 u.xyz[0] = t[0], u.xyz[1] = t[3], u.xyz[2] = t[6];

@@ -42,7 +42,8 @@ demo: all
 	./$(BUILD)/intercurve point examples/viviani.json --at 1.5,0.8660254037844386,1 --order 4 --format text
 	./$(BUILD)/intercurve point examples/viviani.json --at 2,0,0 --order 3 --format text
 	./$(BUILD)/intercurve trace examples/viviani-implicit.json -o $(BUILD)/viviani-trace.json
-	@echo "traced Viviani's curve into $(BUILD)/viviani-trace.json"
+	./$(BUILD)/intercurve trace examples/viviani-implicit.json --format vtk -o $(BUILD)/viviani-trace.vtk
+	@echo "traced Viviani's curve into $(BUILD)/viviani-trace.json and $(BUILD)/viviani-trace.vtk (ParaView)"
 
 bench: all
 	./$(BUILD)/bench/bench_surface

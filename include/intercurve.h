@@ -13,6 +13,7 @@
 #include "intercurve/local.h"
 #include "intercurve/trace.h"
 #include "intercurve/problem.h"
+#include "intercurve/writers.h"
 
 #define IC_VERSION "0.1.0"
 

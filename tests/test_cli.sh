@@ -126,7 +126,20 @@ tmpout="$(mktemp -d)/v.json"
 check "trace -o FILE exits 0" $?
 [ -s "$tmpout" ] && [ ! -e "$tmpout.tmp" ] && grep -q '"shape":.*"planar"' "$tmpout"
 check "trace -o FILE: written through a rename, planar arcs of Ex 5.1" $?
-expect_error 1 "trace $src/examples/viviani-implicit.json --format csv" "--format csv is not available yet"
+expect_error 1 "trace $src/examples/viviani-implicit.json --format xls" "--format xls is not one of json, csv, vtk, obj"
+for fmt in csv vtk obj; do
+    "$bin" trace "$src/examples/ellipsoids.json" --format $fmt -o "$tmpout.$fmt" >"$out" 2>"$errf"
+    check "trace --format $fmt -o FILE exits 0" $?
+    [ -s "$tmpout.$fmt" ] && [ ! -e "$tmpout.$fmt.tmp" ]
+    check "trace --format $fmt: the file is there, no temporary left" $?
+done
+[ "$(grep -c ',branch-point$' "$tmpout.csv")" -ge 2 ] && head -1 "$tmpout.csv" | grep -q '^curve,s,x,y,z,u,v,p,q,'
+check "trace --format csv: DESIGN.md's columns, the branch points classified" $?
+grep -q '^LINES 2 ' "$tmpout.vtk" && grep -q '^VECTORS b double' "$tmpout.vtk"
+check "trace --format vtk: two polylines with the frame as point data" $?
+[ "$(grep -c '^l ' "$tmpout.obj")" -eq 2 ]
+check "trace --format obj: two polylines" $?
+expect_error 2 "trace $src/examples/ellipsoids.json -o /nonexistent-dir/x.json" "cannot write /nonexistent-dir/x.json"
 "$bin" trace "$src/examples/enneper-self.json" >"$out" 2>"$errf"
 [ "$(grep -c '"closed":' "$out")" -eq 2 ] && [ "$(grep -c '"shape":.*"planar"' "$out")" -eq 2 ]
 check "trace a self-intersection: Enneper's two planar double curves" $?

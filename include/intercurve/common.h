@@ -34,7 +34,8 @@ typedef enum {
     IC_ERR_PARSE = 2,   /**< malformed formula or problem file (caller's mistake) */
     IC_ERR_NOMEM = 3,   /**< out of memory */
     IC_ERR_DOMAIN = 4,  /**< mathematically undefined: log of <= 0, zero normal, ... */
-    IC_ERR_UNABLE = 5   /**< no convergence, singular system */
+    IC_ERR_UNABLE = 5,  /**< no convergence, singular system */
+    IC_ERR_IO = 6       /**< a file could not be read or written */
 } ic_status;
 
 /** Sizes of the fixed buffers of ::ic_error. */

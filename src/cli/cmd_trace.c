@@ -6,7 +6,8 @@
 #include <string.h>
 
 static const char TRACE_HELP[] =
-    "usage: intercurve trace PROBLEM.json [--format json] [-o FILE] [--tol T] [--depth D]\n"
+    "usage: intercurve trace PROBLEM.json [--format json|csv|vtk|obj] [-o FILE] [--tol T]\n"
+    "                        [--depth D]\n"
     "\n"
     "Finds the intersection curves of the problem's two surfaces and traces each, with\n"
     "t, n, b, curvature and torsion at every point, its length and its shape (line,\n"
@@ -19,15 +20,18 @@ static const char TRACE_HELP[] =
     "surfaces or a self-intersection). A curve ends where it leaves the box or a\n"
     "domain, closes, or meets a tangential point it cannot pass.\n"
     "\n"
-    "  --format F   json (default; csv, vtk and obj come next)\n"
+    "  --format F   json (default), csv (one row per point), vtk (legacy PolyData with\n"
+    "               t, n, b, kappa, tau as point data, for ParaView) or obj (polylines);\n"
+    "               docs/output-formats.md\n"
     "  -o FILE      write to FILE (through a temporary file and a rename)\n"
     "  --tol T      truncation error allowed per step, a length (default 1e-10)\n"
     "  --depth D    subdivision depth of the start-point search, 1..9 (default 6)\n"
     "\n"
     "example:\n"
-    "  intercurve trace examples/viviani-implicit.json -o viviani.json\n";
+    "  intercurve trace examples/viviani-implicit.json -o viviani.json\n"
+    "  intercurve trace examples/viviani-implicit.json --format vtk -o viviani.vtk\n";
 
-static cJSON *point_json(const ic_trace_point *p, const ic_pair *pair)
+static cJSON *point_json(const ic_trace_point *p, const ic_trace_result *res, const ic_pair *pair)
 {
     cJSON *o = cJSON_CreateObject();
     cJSON_AddItemToObject(o, "s", ic_json_number_or_null(p->s));
@@ -44,7 +48,7 @@ static cJSON *point_json(const ic_trace_point *p, const ic_pair *pair)
     cJSON_AddItemToObject(o, "kappa", ic_json_number_or_null(p->kappa));
     cJSON_AddItemToObject(o, "tau", p->frame_defined ? ic_json_number_or_null(p->tau) : cJSON_CreateNull());
     cJSON_AddItemToObject(o, "angle", ic_json_number_or_null(p->angle));
-    cJSON_AddStringToObject(o, "type", "transversal");
+    cJSON_AddStringToObject(o, "type", ic_point_type_name(ic_trace_point_type(res, p)));
     return o;
 }
 
@@ -66,7 +70,7 @@ static cJSON *result_json(const ic_trace_result *r, const ic_pair *pair)
         cJSON_AddItemToObject(o, "ends", ends);
         cJSON *pts = cJSON_CreateArray();
         for (int k = 0; k < c->npoints; k++)
-            cJSON_AddItemToArray(pts, point_json(&c->points[k], pair));
+            cJSON_AddItemToArray(pts, point_json(&c->points[k], r, pair));
         cJSON_AddItemToObject(o, "points", pts);
         cJSON_AddItemToArray(curves, o);
     }
@@ -101,8 +105,30 @@ static cJSON *result_json(const ic_trace_result *r, const ic_pair *pair)
     return doc;
 }
 
-/* Writes text to path through a temporary file and a rename. */
-static int write_atomic(const char *path, const char *text)
+typedef enum { FORMAT_JSON, FORMAT_CSV, FORMAT_VTK, FORMAT_OBJ } out_format;
+
+/* Writes the result in the format to an open stream; 0 on success. */
+static int write_result(FILE *f, out_format fmt, const ic_trace_result *res, const ic_pair *pair)
+{
+    ic_error err;
+    switch (fmt) {
+    case FORMAT_CSV: return ic_trace_write_csv(f, res, pair, &err) == IC_OK ? 0 : -1;
+    case FORMAT_VTK: return ic_trace_write_vtk(f, res, &err) == IC_OK ? 0 : -1;
+    case FORMAT_OBJ: return ic_trace_write_obj(f, res, &err) == IC_OK ? 0 : -1;
+    case FORMAT_JSON: break;
+    }
+    cJSON *doc = result_json(res, pair);
+    char *text = cJSON_Print(doc);
+    cJSON_Delete(doc);
+    const int ok = text && fputs(text, f) >= 0 && fputc('\n', f) != EOF;
+    free(text);
+    return ok ? 0 : -1;
+}
+
+/* Writes the result to path through a temporary file and a rename, so that an
+ * interrupted run never leaves half a file under the name asked for. */
+static int write_atomic(const char *path, out_format fmt, const ic_trace_result *res,
+                        const ic_pair *pair)
 {
     const size_t len = strlen(path) + 16;
     char *tmp = malloc(len);
@@ -110,7 +136,7 @@ static int write_atomic(const char *path, const char *text)
         return -1;
     snprintf(tmp, len, "%s.tmp", path);
     FILE *f = fopen(tmp, "w");
-    int ok = f && fputs(text, f) >= 0 && fputc('\n', f) != EOF;
+    int ok = f && write_result(f, fmt, res, pair) == 0;
     if (f && fclose(f) != 0)
         ok = 0;
     if (ok && rename(tmp, path) != 0)
@@ -161,8 +187,13 @@ int ic_cmd_trace(int argc, char **argv)
         fprintf(stderr, "intercurve trace: needs PROBLEM.json\n%s", TRACE_HELP);
         return EXIT_INPUT;
     }
-    if (strcmp(format, "json") != 0) {
-        fprintf(stderr, "intercurve trace: --format %s is not available yet (json is)\n", format);
+    static const char *const format_names[] = {"json", "csv", "vtk", "obj"};
+    out_format fmt = FORMAT_JSON;
+    while (fmt <= FORMAT_OBJ && strcmp(format, format_names[fmt]) != 0)
+        fmt++;
+    if (fmt > FORMAT_OBJ) {
+        fprintf(stderr, "intercurve trace: --format %s is not one of json, csv, vtk, obj\n",
+                format);
         return EXIT_INPUT;
     }
     ic_error err;
@@ -188,19 +219,14 @@ int ic_cmd_trace(int argc, char **argv)
         rc = st == IC_ERR_INVALID ? EXIT_INPUT : EXIT_COMPUTE;
         goto cleanup;
     }
-    cJSON *doc = result_json(res, pair);
     if (outpath) {
-        char *text = cJSON_Print(doc);
-        cJSON_Delete(doc);
-        if (!text || write_atomic(outpath, text) != 0) {
+        rc = write_atomic(outpath, fmt, res, pair) == 0 ? 0 : EXIT_COMPUTE;
+        if (rc != 0)
             fprintf(stderr, "intercurve trace: cannot write %s\n", outpath);
-            rc = EXIT_COMPUTE;
-        } else {
-            rc = 0;
-        }
-        free(text);
     } else {
-        rc = ic_json_print(doc) == 0 ? 0 : EXIT_COMPUTE;
+        rc = write_result(stdout, fmt, res, pair) == 0 && fflush(stdout) == 0 ? 0 : EXIT_COMPUTE;
+        if (rc != 0)
+            fprintf(stderr, "intercurve trace: writing the output failed\n");
     }
 cleanup:
     ic_trace_result_free(res);

@@ -13,6 +13,7 @@ const char *ic_status_name(ic_status status)
     case IC_ERR_NOMEM: return "out of memory";
     case IC_ERR_DOMAIN: return "domain error";
     case IC_ERR_UNABLE: return "unable to compute";
+    case IC_ERR_IO: return "input/output error";
     }
     return "unknown status";
 }

@@ -328,8 +328,10 @@ static void test_whole(void)
     r = trace_pair("(x^2 + y^2 + z^2 + 3)^2 - 16*(x^2 + y^2)", "x^2 + y^2 + z^2 - 1", 3.5, &A, &B,
                    &pair, &st);
     CHECK(st == IC_OK && ic_trace_result_report(r)->uncovered_cells > 0 &&
-              ic_trace_result_report(r)->nfailures > 0,
-          "an untraced tangential circle is visible in the report");
+              ic_trace_result_report(r)->nfailures > 0 &&
+              strstr(ic_trace_result_report(r)->failures[0], "tangential curve passes through") &&
+              ic_trace_result_num_curves(r) == 0 && ic_trace_result_num_specials(r) == 0,
+          "an untraced tangential circle is visible in the report, as a tangential curve");
     release(r, A, B, pair);
 }
 
@@ -453,6 +455,72 @@ done:
     ic_surface_free(B);
 }
 
+/* One isolated contact and nothing else: checks the result r. The contact
+ * solves N_A x N_B = 0 (linear in the offset) to the locator's 1e-12, so the
+ * point is right to 1e-12 times the scale. */
+static void check_contact(const ic_trace_result *r, ic_status st, const double want[3],
+                          const char *what)
+{
+    CHECK(st == IC_OK && ic_trace_result_num_curves(r) == 0 && ic_trace_result_num_specials(r) == 1,
+          "%s: no curve, one point (%d curves, %d points)", what, r ? ic_trace_result_num_curves(r) : -1,
+          r ? ic_trace_result_num_specials(r) : -1);
+    if (!r || ic_trace_result_num_specials(r) != 1)
+        return;
+    const ic_trace_special *sp = ic_trace_result_special(r, 0);
+    const double d = hypot(hypot(sp->xyz[0] - want[0], sp->xyz[1] - want[1]), sp->xyz[2] - want[2]);
+    CHECK(sp->type == IC_POINT_ISOLATED_CONTACT && sp->nbranches == 0 && !sp->approximate &&
+              d <= 1e-12,
+          "%s: %s at distance %.3g from (%g, %g, %g)", what, ic_point_type_name(sp->type), d,
+          want[0], want[1], want[2]);
+    printf("%s: isolated contact located to %.2g\n", what, d);
+}
+
+/* Isolated contacts have no curve: found by the collinear-normals search in
+ * the cells the intervals could not exclude (issue 5's tests). */
+static void test_isolated_contacts(void)
+{
+    ic_surface *A, *B;
+    ic_pair *pair;
+    ic_status st;
+    const double top[3] = {0, 1, 0}, touch[3] = {1, 0, 0};
+    ic_trace_result *r = trace_pair("x^2 + y^2 + z^2 - 1", "y - 1", 2, &A, &B, &pair, &st);
+    check_contact(r, st, top, "sphere resting on a plane");
+    release(r, A, B, pair);
+    r = trace_pair("x^2 + y^2 + z^2 - 1", "(x - 2)^2 + y^2 + z^2 - 1", 3, &A, &B, &pair, &st);
+    check_contact(r, st, touch, "two spheres touching from outside");
+    release(r, A, B, pair);
+    /* a parametric sphere (contact on its equator, a regular point of the
+     * patch) on the implicit plane, then on a parametric plane */
+    const char *sph[3] = {"cos(u)*cos(v)", "sin(u)*cos(v)", "sin(v)"};
+    const char *pln[3] = {"u", "1", "v"};
+    const double pi = 3.141592653589793;
+    const double ds[2][2] = {{0, 2 * pi}, {-pi / 2, pi / 2}}, dp[2][2] = {{-2, 2}, {-2, 2}};
+    const int ps[2] = {1, 0};
+    for (int both = 0; both < 2; both++) {
+        ic_surface *S = NULL, *P = NULL;
+        ic_trace_result *res = NULL;
+        ic_trace_options opt;
+        ic_trace_defaults(&opt);
+        ic_error err;
+        pair = NULL;
+        st = ic_surface_new_parametric(&S, sph, NULL, NULL, 0, NULL, &err);
+        if (st == IC_OK)
+            st = ic_surface_set_domain(S, ds, ps, &err);
+        if (st == IC_OK)
+            st = both ? ic_surface_new_parametric(&P, pln, NULL, NULL, 0, NULL, &err)
+                      : ic_surface_new_implicit(&P, "y - 1", NULL, 0, &err);
+        if (st == IC_OK && both)
+            st = ic_surface_set_domain(P, dp, NULL, &err);
+        if (st == IC_OK)
+            st = ic_pair_new(&pair, S, P, &err);
+        if (st == IC_OK)
+            st = ic_trace(&res, pair, &opt, &err);
+        check_contact(res, st, top, both ? "parametric sphere on a parametric plane"
+                                         : "parametric sphere on an implicit plane");
+        release(res, S, P, pair);
+    }
+}
+
 int main(void)
 {
     test_circle(0, 1e-10);
@@ -462,6 +530,7 @@ int main(void)
     test_self_intersection();
     test_tangential_stop();
     test_whole_self();
+    test_isolated_contacts();
     test_whole_parametric();
     test_whole();
     return harness_finish("test_trace");

@@ -324,6 +324,7 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_can
                 st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory searching start points");
         } else if (!converged) { /* a curve may pass here unfound (a tangential one) */
             ic_unresolved u;
+            memset(&u, 0, sizeof u);
             double t[9];
             if (mixed || both) {
                 const double uvc[2] = {0.5 * (c.lo[0] + c.hi[0]), 0.5 * (c.lo[1] + c.hi[1])};
@@ -332,6 +333,10 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_can
                 const double Ru[3] = {t[1], t[4], t[7]}, Rv[3] = {t[2], t[5], t[8]};
                 u.xyz[0] = t[0], u.xyz[1] = t[3], u.xyz[2] = t[6];
                 u.radius = (c.hi[0] - c.lo[0]) * ic_norm3(Ru) + (c.hi[1] - c.lo[1]) * ic_norm3(Rv);
+                const int sheet = both ? 0 : P;
+                u.params[sheet][0] = uvc[0], u.params[sheet][1] = uvc[1];
+                if (both)
+                    u.params[1][0] = 0.5 * (c.lo[2] + c.hi[2]), u.params[1][1] = 0.5 * (c.lo[3] + c.hi[3]);
             } else {
                 double half[3];
                 for (int k = 0; k < 3; k++) {

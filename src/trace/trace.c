@@ -404,6 +404,65 @@ static ic_status join_curves(ic_trace_result *r, double shape_tol)
     return IC_OK;
 }
 
+/* Whether a traced curve or a recorded point passes within the cell's radius. */
+static int found_near(const ic_trace_result *r, const ic_unresolved *u)
+{
+    for (int k = 0; k < r->nspecials; k++) {
+        double d[3];
+        ic_axpy3(d, r->specials[k].xyz, -1.0, u->xyz);
+        if (ic_norm3(d) <= u->radius)
+            return 1;
+    }
+    for (int c = 0; c < r->ncurves; c++) {
+        ic_candidate probe;
+        memset(&probe, 0, sizeof probe);
+        memcpy(probe.xyz, u->xyz, sizeof probe.xyz);
+        cover(&probe, 1, r->curves[c].points, r->curves[c].npoints, u->radius);
+        if (probe.covered)
+            return 1;
+    }
+    return 0;
+}
+
+/* Records a tangential point near `near`: located to full precision on the
+ * collinear-normals condition (ic_local_locate_tangential, within reach) and
+ * classified. Where the location fails, the point is dropped, or kept as
+ * approximate when keep_unrefined. A point of a tangential curve is reported
+ * as a failure instead: such curves are not traced yet. */
+static ic_status record_tangential(ic_trace_result *r, ic_pair *pair, const ic_local_point *near,
+                                   double reach, int keep_unrefined, const ic_trace_options *opt)
+{
+    ic_local_point pt;
+    ic_local_options lo = opt->local;
+    int approximate = 0;
+    if (ic_local_locate_tangential(pair, &pt, near, reach, &lo, NULL) != IC_OK) {
+        if (!keep_unrefined)
+            return IC_OK;
+        pt = *near;
+        approximate = 1;
+    }
+    ic_local_result res;
+    if (ic_local_apparatus(pair, &res, &pt, 2, IC_METHOD_AUTO, &lo, NULL) == IC_OK &&
+        res.type == IC_POINT_TANGENTIAL_CURVE) {
+        failure(&r->report, "a tangential curve passes through (%.6g, %.6g, %.6g): not traced yet",
+                pt.xyz[0], pt.xyz[1], pt.xyz[2]);
+        return IC_OK;
+    }
+    return add_special(r, pair, &pt, approximate, opt, NULL);
+}
+
+/* Looks for a tangential point in an unresolved cell: this is how isolated
+ * contacts, which have no curve to lead to them, are found. */
+static ic_status tangential_in_cell(ic_trace_result *r, ic_pair *pair, const ic_unresolved *u,
+                                    const ic_trace_options *opt)
+{
+    ic_local_point near;
+    memset(&near, 0, sizeof near);
+    memcpy(near.xyz, u->xyz, sizeof near.xyz);
+    memcpy(near.params, u->params, sizeof near.params);
+    return record_tangential(r, pair, &near, u->radius, 0, opt);
+}
+
 ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options *opt,
                    ic_error *err)
 {
@@ -443,7 +502,7 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
         if (ic_local_apparatus(pair, &res, &pt, 2, IC_METHOD_JET, &lo, &e2) != IC_OK ||
             res.type != IC_POINT_TRANSVERSAL) {
             /* a tangential candidate: recorded, and covered around it */
-            st = add_special(r, pair, &pt, 0, opt, NULL);
+            st = record_tangential(r, pair, &pt, 2 * r->report.cell_size + 1e-6, 1, opt);
             ic_trace_point one;
             memset(&one, 0, sizeof one);
             memcpy(one.xyz, pt.xyz, sizeof one.xyz);
@@ -457,22 +516,15 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
             cover(cand, nc, pts, np2, radius);
         cand[i].covered = 1;
     }
-    /* unresolved cells that nothing found passes near */
+    /* unresolved cells that nothing found passes near: a tangential point is
+     * looked for in each (an isolated contact has no curve to find it by) */
     for (int i = 0; st == IC_OK && i < nu; i++) {
-        int near = 0;
-        for (int k = 0; k < r->nspecials && !near; k++) {
-            double d[3];
-            ic_axpy3(d, r->specials[k].xyz, -1.0, unres[i].xyz);
-            near = ic_norm3(d) <= unres[i].radius;
-        }
-        for (int c = 0; c < r->ncurves && !near; c++) {
-            ic_candidate probe;
-            memset(&probe, 0, sizeof probe);
-            memcpy(probe.xyz, unres[i].xyz, sizeof probe.xyz);
-            cover(&probe, 1, r->curves[c].points, r->curves[c].npoints, unres[i].radius);
-            near = probe.covered;
-        }
+        int near = found_near(r, &unres[i]);
         if (!near) {
+            st = tangential_in_cell(r, pair, &unres[i], opt);
+            near = found_near(r, &unres[i]);
+        }
+        if (st == IC_OK && !near) {
             if (r->report.uncovered_cells == 0 || r->report.uncovered_cells % 1000 == 0)
                 failure(&r->report,
                         "a cell around (%.6g, %.6g, %.6g) may hold an intersection that was not "

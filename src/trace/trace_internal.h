@@ -13,9 +13,11 @@ typedef struct {
 } ic_candidate;
 
 /* A leaf cell that intervals could not exclude but where Newton found no
- * point: its centre in space and a radius covering it. */
+ * point: its centre in space (and on the parametric sheets) and a radius
+ * covering it. */
 typedef struct {
     double xyz[3];
+    double params[2][2];
     double radius;
 } ic_unresolved;
 

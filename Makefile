@@ -48,7 +48,7 @@ demo: all
 bench: all
 	./$(BUILD)/bench/bench_surface
 	./$(BUILD)/bench/bench_local
-	./$(BUILD)/bench/bench_trace
+	./$(BUILD)/bench/bench_trace examples
 
 install: all
 	cmake --install $(BUILD) --prefix $(PREFIX)

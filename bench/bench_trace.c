@@ -1,7 +1,8 @@
 /* Benchmark of the marching core (make bench): time and points per curve at
  * tolerances 1e-6, 1e-10, 1e-12, with the largest distance of an output
- * point to either surface. Start points are given (start-point search comes
- * with the tracing issue). */
+ * point to either surface: first single curves from a given start point,
+ * then the whole intersection of the bundled examples (usage: bench_trace
+ * [EXAMPLES_DIR]). */
 #include <math.h>
 #include <stdio.h>
 
@@ -32,8 +33,77 @@ static int run(void *ctx)
     return 0;
 }
 
-int main(void)
+/* Largest distance of a traced point to either surface: |f|/|grad f| for an
+ * implicit surface, |R(params) - xyz| for a parametric one. */
+static double worst_distance(const ic_trace_result *r, ic_pair *pair)
 {
+    double worst = 0;
+    for (int i = 0; i < ic_trace_result_num_curves(r); i++) {
+        const ic_trace_curve *c = ic_trace_result_curve(r, i);
+        for (int k = 0; k < c->npoints; k++)
+            for (int s = 0; s < 2; s++) {
+                ic_surface *S = ic_pair_surface(pair, s);
+                const ic_trace_point *p = &c->points[k];
+                double d = INFINITY;
+                if (ic_surface_get_kind(S) == IC_PARAMETRIC) {
+                    double x[3];
+                    if (ic_surface_eval(S, x, p->params[s], NULL) == IC_OK)
+                        d = hypot(hypot(x[0] - p->xyz[0], x[1] - p->xyz[1]), x[2] - p->xyz[2]);
+                } else {
+                    ic_surface_geometry g;
+                    if (ic_surface_geometry_at(S, &g, p->xyz, NULL) == IC_OK)
+                        d = fabs(g.value) / g.normal_length;
+                }
+                worst = fmax(worst, d);
+            }
+    }
+    return worst;
+}
+
+/* Traces one bundled example at one tolerance and prints its row. */
+static int whole_example(const char *dir, const char *file, double tol)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s", dir, file);
+    ic_problem *p = NULL;
+    ic_pair *pair = NULL;
+    ic_trace_result *r = NULL;
+    ic_error err;
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    opt.tol = tol;
+    int rc = 1;
+    if (ic_problem_load(&p, path, &err) != IC_OK) {
+        fprintf(stderr, "%s: %s\n", path, err.message);
+        return 1;
+    }
+    opt.has_box = ic_problem_box(p, opt.box);
+    const int self = ic_problem_is_self(p);
+    if (ic_pair_new(&pair, ic_problem_surface(p, 0), self ? NULL : ic_problem_surface(p, 1),
+                    &err) == IC_OK) {
+        const double t0 = bench_now();
+        if (ic_trace(&r, pair, &opt, &err) == IC_OK) {
+            const double ms = (bench_now() - t0) * 1e3;
+            int points = 0;
+            for (int i = 0; i < ic_trace_result_num_curves(r); i++)
+                points += ic_trace_result_curve(r, i)->npoints;
+            printf("%-26s %6.0e %6d %6d %6d %10.1f %10.1e\n", file, tol,
+                   ic_trace_result_num_curves(r), points, ic_trace_result_num_specials(r), ms,
+                   worst_distance(r, pair));
+            rc = 0;
+        }
+    }
+    if (rc)
+        fprintf(stderr, "%s: %s\n", path, err.message);
+    ic_trace_result_free(r);
+    ic_pair_free(pair);
+    ic_problem_free(p);
+    return rc;
+}
+
+int main(int argc, char **argv)
+{
+    const char *dir = argc > 1 ? argv[1] : "examples";
     struct {
         const char *name, *f, *g;
         double at[3];
@@ -67,42 +137,16 @@ int main(void)
         ic_surface_free(A);
         ic_surface_free(B);
     }
-    /* the whole intersection: start-point search, every curve, the report */
-    printf("\n%-40s %8s %8s %14s\n", "whole intersection (box search, depth 6)", "tol", "curves",
-           "ms per trace");
-    struct {
-        const char *name, *f, *g;
-        double box;
-    } whole[] = {
-        {"Viviani (implicit/implicit)", "(x - 1)^2 + y^2 - 1", "x^2 + y^2 + z^2 - 4", 2.5},
-        {"ellipsoids Ex 5.1", "x^2/0.36 + y^2/0.64 + z^2 - 1",
-         "x^2/0.2025 + y^2/0.64 + z^2/1.5625 - 1", 1.5},
-        {"sphere/plane circle", "x^2 + y^2 + z^2 - 4", "z - 1", 3},
-    };
-    for (size_t c = 0; c < sizeof whole / sizeof whole[0]; c++) {
-        ic_surface *A = NULL, *B = NULL;
-        ic_pair *pair = NULL;
-        if (ic_surface_new_implicit(&A, whole[c].f, NULL, 0, NULL) ||
-            ic_surface_new_implicit(&B, whole[c].g, NULL, 0, NULL) || ic_pair_new(&pair, A, B, NULL))
-            return 1;
-        for (int k = 0; k < 3; k++) {
-            ic_trace_options opt;
-            ic_trace_defaults(&opt);
-            opt.tol = tols[k];
-            opt.has_box = 1;
-            for (int i = 0; i < 3; i++)
-                opt.box[i][0] = -whole[c].box, opt.box[i][1] = whole[c].box;
-            const double t0 = bench_now();
-            ic_trace_result *r = NULL;
-            if (ic_trace(&r, pair, &opt, NULL) != IC_OK)
+    /* the whole intersection of the bundled examples (every pairing):
+     * start-point search, every curve, the report */
+    printf("\n%-26s %6s %6s %6s %6s %10s %10s\n", "whole intersection (depth 6)", "tol", "curves",
+           "points", "special", "ms", "max dist");
+    const char *files[] = {"viviani-implicit.json", "viviani.json", "ellipsoids.json",
+                           "enneper-self.json", "seed002-branch.json", "sphere-plane-contact.json",
+                           "torus-sphere.json"};
+    for (size_t c = 0; c < sizeof files / sizeof files[0]; c++)
+        for (int k = 0; k < 3; k++)
+            if (whole_example(dir, files[c], tols[k]) != 0)
                 return 1;
-            const double ms = (bench_now() - t0) * 1e3;
-            printf("%-40s %8.0e %8d %14.1f\n", whole[c].name, tols[k], ic_trace_result_num_curves(r), ms);
-            ic_trace_result_free(r);
-        }
-        ic_pair_free(pair);
-        ic_surface_free(A);
-        ic_surface_free(B);
-    }
     return 0;
 }

@@ -72,7 +72,7 @@ static void test_circle(int parametric_sphere, double tol)
 
 /* cylinder x^2 + y^2 = 1 and the helicoid (v cos u, v sin u, u/2), u in
  * [-1, 7]: the helix from u = 0 leaves the domain at u = 7, arc length
- * 7 sqrt(5)/2; kappa = 0.8, tau = 0.4 everywhere */
+ * 7 sqrt(5)/2, where the curve ends exactly; kappa = 0.8, tau = 0.4 everywhere */
 static void test_helix(void)
 {
     const char *hel[3] = {"v*cos(u)", "v*sin(u)", "u/2"};
@@ -101,7 +101,12 @@ static void test_helix(void)
     const int n = ic_tracer_num_points(tr);
     const ic_trace_point *last = ic_tracer_point(tr, n - 1);
     const double L = 7 * sqrt(5.0) / 2;
-    CHECK(last && last->s <= L && last->s > L - opt.max_step, "helix length %g of %g", last->s, L);
+    /* ended on the boundary u = 7 exactly; s to the 1e-9 of z(s) below */
+    CHECK(last && last->params[1][0] == 7 && fabs(last->s - L) <= 1e-9,
+          "helix ends at u = %.17g, length %.17g of %.17g", last ? last->params[1][0] : 0,
+          last ? last->s : 0, L);
+    if (last)
+        printf("helix: ends exactly on u = 7, length error %.2g\n", fabs(last->s - L));
     double worst = 0;
     for (int i = 0; i < n; i++) {
         const ic_trace_point *p = ic_tracer_point(tr, i);
@@ -350,7 +355,8 @@ static double enneper_arc(double w0, double w1)
 }
 
 /* Self-intersection by the four-parameter search: the Enneper-type surface of
- * seed 000 Ex. 2 on [-5, 5]^2 has two double curves, in the planes y = 0
+ * seed 000 Ex. 2 on [-5, 5]^2 has two double curves, each ending where a
+ * preimage reaches the domain edge, in the planes y = 0
  * (preimages (w, +-v), v^2 = 3(1 + w^2), z = -3 - 2w^2) and x = 0 (its image
  * under (x, y, z) -> (-y, -x, -z): preimages (+-u, w), u^2 = 3(1 + w^2)). */
 static void test_whole_self(void)
@@ -389,9 +395,14 @@ static void test_whole_self(void)
         }
         /* the tracer's tolerance 1e-10 with margin for the x ~ 60 scale */
         CHECK(worst <= 1e-9, "Enneper curve %d: off the double curve by %g", i, worst);
+        /* the curve ends exactly where a preimage meets the domain edge:
+         * 3(1 + w^2) = 25, w = +-sqrt(22/3) */
         const ic_trace_point *p0 = &c->points[0], *p1 = &c->points[c->npoints - 1];
-        const double L = enneper_arc(p0->params[0][on_x0], p1->params[0][on_x0]);
-        /* arc length between the traced ends: the 1e-9 relative */
+        const double a = sqrt(22.0 / 3), L = enneper_arc(-a, a);
+        CHECK(fabs(fabs(p0->params[0][on_x0]) - a) <= 1e-12 && fabs(fabs(p1->params[0][on_x0]) - a) <= 1e-12,
+              "Enneper curve %d ends at w = %.17g, %.17g, not +-%.17g", i, p0->params[0][on_x0],
+              p1->params[0][on_x0], a);
+        /* the whole double curve's length: the 1e-9 relative */
         CHECK(c->shape == IC_SHAPE_PLANAR && c->ends[0] == IC_TRACE_LEFT_DOMAIN &&
                   c->ends[1] == IC_TRACE_LEFT_DOMAIN && fabs(c->length - L) <= 1e-9 * L,
               "Enneper curve %d: %s, length %.15g of %.15g", i, ic_shape_name(c->shape), c->length,

@@ -183,23 +183,110 @@ static double step_length(const ic_tracer *tr)
     return h;
 }
 
-static int outside(const ic_tracer *tr, const ic_local_point *pt, ic_trace_event *ev)
+/* A boundary the curve crosses: a parameter of a sheet, or a coordinate of
+ * the box (sheet -1), and the bound. */
+typedef struct {
+    int sheet, index;
+    double bound;
+} boundary;
+
+static double coordinate(const ic_local_point *pt, const boundary *b)
+{
+    return b->sheet < 0 ? pt->xyz[b->index] : pt->params[b->sheet][b->index];
+}
+
+static int outside(const ic_tracer *tr, const ic_local_point *pt, ic_trace_event *ev,
+                   boundary *b)
 {
     for (int s = 0; s < 2; s++)
         if (tr->par[s])
-            for (int i = 0; i < 2; i++)
-                if (!tr->periodic[s][i] && (pt->params[s][i] < tr->domain[s][i][0] ||
-                                            pt->params[s][i] > tr->domain[s][i][1])) {
+            for (int i = 0; i < 2; i++) {
+                const double *d = tr->domain[s][i], x = pt->params[s][i];
+                if (!tr->periodic[s][i] && (x < d[0] || x > d[1])) {
                     *ev = IC_TRACE_LEFT_DOMAIN;
+                    *b = (boundary){s, i, x < d[0] ? d[0] : d[1]};
                     return 1;
                 }
+            }
     if (tr->opt.has_box)
-        for (int k = 0; k < 3; k++)
-            if (pt->xyz[k] < tr->opt.box[k][0] || pt->xyz[k] > tr->opt.box[k][1]) {
+        for (int k = 0; k < 3; k++) {
+            const double *d = tr->opt.box[k], x = pt->xyz[k];
+            if (x < d[0] || x > d[1]) {
                 *ev = IC_TRACE_LEFT_BOX;
+                *b = (boundary){-1, k, x < d[0] ? d[0] : d[1]};
                 return 1;
             }
+        }
     return 0;
+}
+
+/* The corrected point after a step of length h (0 if the corrector fails). */
+static int corrected(const ic_tracer *tr, double h, ic_local_point *next)
+{
+    double X[3], params[2][2], flat[4];
+    predict(tr, h, X, params);
+    int np = 0;
+    for (int s = 0; s < 2; s++)
+        if (tr->par[s]) {
+            flat[np++] = params[s][0];
+            flat[np++] = params[s][1];
+        }
+    ic_local_options lo = tr->opt.local;
+    return (np ? ic_local_locate_params(tr->pair, next, flat, np, &lo, NULL)
+               : ic_local_locate(tr->pair, next, X, &lo, NULL)) == IC_OK;
+}
+
+/* Ends the curve exactly on the boundary it crosses within the step h: the
+ * step hb whose corrected point has the boundary's coordinate, by regula
+ * falsi (Illinois) on hb; a corner (a second boundary crossed first) moves
+ * the target. The coordinate is then set to the bound (a rounding-level
+ * change). Returns 0 with *out and *hb, or -1 (no convergence, or a
+ * degenerate point there: the curve then ends at its last point). */
+static int land_on_boundary(const ic_tracer *tr, double h, boundary b, ic_local_point *out,
+                            double *hb)
+{
+    for (int corner = 0; corner < 4; corner++) {
+        double a = 0, fa = coordinate(&tr->cur, &b) - b.bound, c = h, fc;
+        ic_local_point p;
+        if (!corrected(tr, c, &p))
+            return -1;
+        fc = coordinate(&p, &b) - b.bound;
+        if (fa * fc > 0)
+            return -1;
+        int side = 0, done = 0;
+        for (int it = 0; it < 100 && !done; it++) {
+            const double m = (a * fc - c * fa) / (fc - fa);
+            if (!corrected(tr, m, &p))
+                return -1;
+            const double fm = coordinate(&p, &b) - b.bound;
+            done = fabs(fm) <= 1e-14 * (1 + fabs(b.bound)) || c - a <= 1e-15 * h;
+            if (fm * fc > 0) {
+                c = m, fc = fm;
+                if (side == 1)
+                    fa *= 0.5;
+                side = 1;
+            } else {
+                a = m, fa = fm;
+                if (side == -1)
+                    fc *= 0.5;
+                side = -1;
+            }
+            *hb = m;
+            *out = p;
+        }
+        if (!done)
+            return -1;
+        if (b.sheet < 0)
+            out->xyz[b.index] = b.bound;
+        else
+            out->params[b.sheet][b.index] = b.bound;
+        ic_trace_event ev;
+        boundary other;
+        if (!outside(tr, out, &ev, &other))
+            return 0;
+        b = other, h = *hb;
+    }
+    return -1;
 }
 
 /* Has the step from cur over length h (to `next`) passed the start point?
@@ -294,8 +381,20 @@ ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
             *event = IC_TRACE_CLOSED;
             return IC_OK;
         }
-        if (outside(tr, &next, event)) {
+        boundary bd;
+        if (outside(tr, &next, event, &bd)) {
             tr->done = 1;
+            ic_local_point edge;
+            ic_local_result res;
+            double hb;
+            int tangential;
+            if (land_on_boundary(tr, h, bd, &edge, &hb) == 0 &&
+                apparatus(tr, &res, &edge, &tangential, NULL) == IC_OK && !tangential) {
+                tr->cur = edge;
+                tr->res = res;
+                tr->s += hb;
+                return record(tr, err);
+            }
             return IC_OK;
         }
         ic_local_result res;

@@ -404,6 +404,38 @@ static ic_status join_curves(ic_trace_result *r, double shape_tol)
     return IC_OK;
 }
 
+/* Drops a curve that runs along another, longer one all the way (traced
+ * twice from two start points: it happens where one trace stopped early, at a
+ * degenerate point of a parametrization, before covering the other start). */
+static void drop_duplicate_arcs(ic_trace_result *r, double radius)
+{
+    for (int a = 0; a < r->ncurves; a++) {
+        const ic_trace_curve *ca = &r->curves[a];
+        int inside = 0;
+        for (int b = 0; b < r->ncurves && !inside; b++) {
+            const ic_trace_curve *cb = &r->curves[b];
+            if (b == a || cb->length < ca->length)
+                continue;
+            inside = 1;
+            for (int k = 0; k < ca->npoints && inside; k++) {
+                ic_candidate probe;
+                memset(&probe, 0, sizeof probe);
+                memcpy(probe.xyz, ca->points[k].xyz, sizeof probe.xyz);
+                cover(&probe, 1, cb->points, cb->npoints, radius);
+                inside = probe.covered;
+            }
+        }
+        if (!inside)
+            continue;
+        free(r->storage[a]);
+        const int last = --r->ncurves;
+        r->curves[a] = r->curves[last];
+        r->storage[a] = r->storage[last];
+        r->at[a][0] = r->at[last][0], r->at[a][1] = r->at[last][1];
+        a--;
+    }
+}
+
 /* Whether a traced curve or a recorded point passes within the cell's radius. */
 static int found_near(const ic_trace_result *r, const ic_unresolved *u)
 {
@@ -533,6 +565,8 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
             r->report.uncovered_cells++;
         }
     }
+    if (st == IC_OK)
+        drop_duplicate_arcs(r, radius);
     if (st == IC_OK && join_curves(r, opt->shape_tol) != IC_OK)
         st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory joining curves");
     ic_tracer_free(tr);

@@ -4,6 +4,7 @@
 
 #include "harness.h"
 #include "intercurve/trace.h"
+#include "curve_lengths.h"
 
 static double dist_implicit(ic_surface *s, const double *x)
 {
@@ -240,21 +241,6 @@ static void release(ic_trace_result *r, ic_surface *A, ic_surface *B, ic_pair *p
     ic_surface_free(B);
 }
 
-/* The lobe of Viviani's curve: the integral of sqrt(1 + cos^2(t/2)) over
- * [0, 2 pi] by composite Simpson in long double (independent of the tracer). */
-static double viviani_lobe(void)
-{
-    const int n = 20000;
-    const long double h = 2 * 3.14159265358979323846264338327950288L / n;
-    long double sum = 0;
-    for (int i = 0; i <= n; i++) {
-        const long double c = cosl(i * h / 2);
-        const long double f = sqrtl(1 + c * c);
-        sum += (i == 0 || i == n ? 1 : i % 2 ? 4 : 2) * f;
-    }
-    return (double)(sum * h / 3);
-}
-
 static void test_whole(void)
 {
     ic_surface *A, *B;
@@ -338,20 +324,6 @@ static void test_whole(void)
               ic_trace_result_num_curves(r) == 0 && ic_trace_result_num_specials(r) == 0,
           "an untraced tangential circle is visible in the report, as a tangential curve");
     release(r, A, B, pair);
-}
-
-/* Length of the Enneper double curve (4w + 8w^3/3, 0, -3 - 2w^2) between w0 and
- * w1: |c'(w)| = sqrt((4 + 8w^2)^2 + 16w^2), Simpson in long double. */
-static double enneper_arc(double w0, double w1)
-{
-    const int n = 20000;
-    const long double h = ((long double)w1 - w0) / n;
-    long double sum = 0;
-    for (int i = 0; i <= n; i++) {
-        const long double w = w0 + i * h, a = 4 + 8 * w * w;
-        sum += (i == 0 || i == n ? 1 : i % 2 ? 4 : 2) * sqrtl(a * a + 16 * w * w);
-    }
-    return (double)fabsl(sum * h / 3);
 }
 
 /* Self-intersection by the four-parameter search: the Enneper-type surface of

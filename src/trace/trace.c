@@ -252,6 +252,9 @@ static ic_status trace_curve(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
     if (st != IC_OK)
         failure(&r->report, "curve from (%g, %g, %g): %s", pt->xyz[0], pt->xyz[1], pt->xyz[2],
                 err ? err->message : "failed");
+    if (e1 == IC_TRACE_BUDGET)
+        failure(&r->report, "curve from (%g, %g, %g): stopped at the budget of %d points", pt->xyz[0],
+                pt->xyz[1], pt->xyz[2], opt->max_points);
     int n1 = ic_tracer_num_points(tr);
     ic_trace_point *fwd = malloc((size_t)(n1 + 1) * sizeof *fwd);
     if (!fwd)
@@ -271,6 +274,9 @@ static ic_status trace_curve(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
     if (st != IC_OK)
         failure(&r->report, "curve from (%g, %g, %g), backwards: %s", pt->xyz[0], pt->xyz[1],
                 pt->xyz[2], err ? err->message : "failed");
+    if (e0 == IC_TRACE_BUDGET)
+        failure(&r->report, "curve from (%g, %g, %g), backwards: stopped at the budget of %d points",
+                pt->xyz[0], pt->xyz[1], pt->xyz[2], opt->max_points);
     int n0 = ic_tracer_num_points(tr);
     ic_trace_point *back = malloc((size_t)(n0 + 1) * sizeof *back);
     if (!back) {

@@ -314,15 +314,30 @@ static void test_whole(void)
         }
     }
     release(r, A, B, pair);
-    /* a tangential circle (torus touching a sphere) is not traced yet: the
-     * report must show that something was left unfound */
+    /* a tangential circle (seed 001 Ex. 5.2: the torus of radii 2 and 1 touching
+     * the unit sphere along x^2 + y^2 = 1, z = 0): found by the collinear-normals
+     * search, traced as a tangential curve, shape circle, length 2 pi */
     r = trace_pair("(x^2 + y^2 + z^2 + 3)^2 - 16*(x^2 + y^2)", "x^2 + y^2 + z^2 - 1", 3.5, &A, &B,
                    &pair, &st);
-    CHECK(st == IC_OK && ic_trace_result_report(r)->uncovered_cells > 0 &&
-              ic_trace_result_report(r)->nfailures > 0 &&
-              strstr(ic_trace_result_report(r)->failures[0], "tangential curve passes through") &&
-              ic_trace_result_num_curves(r) == 0 && ic_trace_result_num_specials(r) == 0,
-          "an untraced tangential circle is visible in the report, as a tangential curve");
+    CHECK(st == IC_OK && ic_trace_result_num_curves(r) == 1 && ic_trace_result_num_specials(r) == 0,
+          "Ex 5.2: one curve, no isolated point");
+    if (st == IC_OK && ic_trace_result_num_curves(r) == 1) {
+        const ic_trace_curve *c = ic_trace_result_curve(r, 0);
+        const double L = 2 * 3.141592653589793;
+        double worst = 0;
+        for (int i = 0; i < c->npoints; i++) {
+            const ic_trace_point *p = &c->points[i];
+            worst = fmax(worst, fabs(hypot(p->xyz[0], p->xyz[1]) - 1) + fabs(p->xyz[2]));
+            worst = fmax(worst, fabs(p->kappa - 1) + fabs(p->tau));
+        }
+        /* the tangential locator's 1e-12 residual; the length to the 1e-9 */
+        CHECK(c->tangential && c->closed && c->shape == IC_SHAPE_CIRCLE &&
+                  fabs(c->length - L) <= 1e-9 * L && worst <= 1e-10,
+              "Ex 5.2: tangential %d, closed %d, %s, length %.17g of 2 pi, off %g", c->tangential,
+              c->closed, ic_shape_name(c->shape), c->length, worst);
+        printf("Ex 5.2 tangential circle: %d points, length error %.2g, off %.2g\n", c->npoints,
+               fabs(c->length - L) / L, worst);
+    }
     release(r, A, B, pair);
 }
 
@@ -504,6 +519,57 @@ static void test_isolated_contacts(void)
     }
 }
 
+/* Seed 002 Ex. 3: the plane z = 0 and the torus of radii 2 and 1 centred at
+ * (-1/5, 0, 1), both parametric, touch along the circle (x + 1/5)^2 + y^2 = 4,
+ * z = 0: one closed tangential circle of length 4 pi. */
+static void test_tangential_parametric(void)
+{
+    const char *plane[3] = {"8*u - 1", "15*v - 15/2", "0"};
+    const char *torus[3] = {"cos(2*pi*u)*(2 + cos(2*pi*v)) - 1/5", "sin(2*pi*u)*(2 + cos(2*pi*v))",
+                            "1 + sin(2*pi*v)"};
+    const double dp[2][2] = {{-0.5, 1}, {0, 1}}, dt[2][2] = {{0, 1}, {0, 1}};
+    const int pt[2] = {1, 1};
+    ic_surface *A = NULL, *B = NULL;
+    ic_pair *pair = NULL;
+    ic_trace_result *r = NULL;
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    ic_error err;
+    ic_status st = ic_surface_new_parametric(&A, plane, NULL, NULL, 0, NULL, &err);
+    if (st == IC_OK)
+        st = ic_surface_set_domain(A, dp, NULL, &err);
+    if (st == IC_OK)
+        st = ic_surface_new_parametric(&B, torus, NULL, NULL, 0, NULL, &err);
+    if (st == IC_OK)
+        st = ic_surface_set_domain(B, dt, pt, &err);
+    if (st == IC_OK)
+        st = ic_pair_new(&pair, A, B, &err);
+    if (st == IC_OK)
+        st = ic_trace(&r, pair, &opt, &err);
+    CHECK(st == IC_OK && ic_trace_result_num_curves(r) == 1, "seed 002 Ex. 3: one curve (%s)",
+          st == IC_OK ? "traced" : err.message);
+    if (st == IC_OK && ic_trace_result_num_curves(r) == 1) {
+        const ic_trace_curve *c = ic_trace_result_curve(r, 0);
+        const double L = 4 * 3.141592653589793;
+        double worst = 0;
+        for (int i = 0; i < c->npoints; i++) {
+            const double *x = c->points[i].xyz;
+            worst = fmax(worst, fabs(hypot(x[0] + 0.2, x[1]) - 2) + fabs(x[2]));
+            worst = fmax(worst, fabs(c->points[i].kappa - 0.5) + fabs(c->points[i].tau));
+        }
+        CHECK(c->tangential && c->closed && c->shape == IC_SHAPE_CIRCLE &&
+                  fabs(c->length - L) <= 1e-9 * L && worst <= 1e-10,
+              "seed 002 Ex. 3: tangential %d, closed %d, %s, length %.17g of 4 pi, off %g",
+              c->tangential, c->closed, ic_shape_name(c->shape), c->length, worst);
+        printf("seed 002 Ex. 3 tangential circle: %d points, length error %.2g, off %.2g\n",
+               c->npoints, fabs(c->length - L) / L, worst);
+    }
+    ic_trace_result_free(r);
+    ic_pair_free(pair);
+    ic_surface_free(A);
+    ic_surface_free(B);
+}
+
 int main(void)
 {
     test_circle(0, 1e-10);
@@ -514,6 +580,7 @@ int main(void)
     test_tangential_stop();
     test_whole_self();
     test_isolated_contacts();
+    test_tangential_parametric();
     test_whole_parametric();
     test_whole();
     return harness_finish("test_trace");

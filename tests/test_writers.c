@@ -95,7 +95,7 @@ static void check_csv(const traced *t, const char *name)
             const int fd = p->frame_defined;
             int ok = atoi(fld[0]) == i && field_is(fld[1], p->s, 1) &&
                      field_is(fld[18], p->kappa, 1) && field_is(fld[19], p->tau, fd) &&
-                     strcmp(fld[20], ic_point_type_name(ic_trace_point_type(t->res, p))) == 0;
+                     strcmp(fld[20], ic_point_type_name(ic_trace_point_type(t->res, c, p))) == 0;
             for (int j = 0; j < 3; j++)
                 ok = ok && field_is(fld[2 + j], p->xyz[j], 1) && field_is(fld[9 + j], p->t[j], 1) &&
                      field_is(fld[12 + j], p->n[j], fd) && field_is(fld[15 + j], p->b[j], fd);

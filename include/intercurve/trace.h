@@ -101,6 +101,7 @@ typedef struct {
     const ic_trace_point *points;
     double length;
     ic_trace_event ends[2];   /**< how the two ends stopped (both CLOSED for a loop) */
+    int tangential;           /**< 1: the surfaces touch all along it (a tangential curve) */
     ic_shape shape;
     double shape_tol;         /**< relative tolerance of the shape test */
 } ic_trace_curve;

@@ -12,9 +12,11 @@
 
 #include "intercurve/trace.h"
 
-/** The classification of a curve point: a recorded special point's type where
- *  the point is one (a tangential curve end), transversal otherwise. */
-ic_point_type ic_trace_point_type(const ic_trace_result *res, const ic_trace_point *p);
+/** The classification of a point of curve c: a recorded special point's type
+ *  where the point is one (a tangential curve end), tangential-curve along a
+ *  tangential curve, transversal otherwise. */
+ic_point_type ic_trace_point_type(const ic_trace_result *res, const ic_trace_curve *c,
+                                  const ic_trace_point *p);
 
 /** CSV, one row per curve point:
  *  curve,s,x,y,z,u,v,p,q,tx,ty,tz,nx,ny,nz,bx,by,bz,kappa,tau,type;

@@ -31,7 +31,8 @@ static const char TRACE_HELP[] =
     "  intercurve trace examples/viviani-implicit.json -o viviani.json\n"
     "  intercurve trace examples/viviani-implicit.json --format vtk -o viviani.vtk\n";
 
-static cJSON *point_json(const ic_trace_point *p, const ic_trace_result *res, const ic_pair *pair)
+static cJSON *point_json(const ic_trace_point *p, const ic_trace_curve *c,
+                         const ic_trace_result *res, const ic_pair *pair)
 {
     cJSON *o = cJSON_CreateObject();
     cJSON_AddItemToObject(o, "s", ic_json_number_or_null(p->s));
@@ -48,7 +49,7 @@ static cJSON *point_json(const ic_trace_point *p, const ic_trace_result *res, co
     cJSON_AddItemToObject(o, "kappa", ic_json_number_or_null(p->kappa));
     cJSON_AddItemToObject(o, "tau", p->frame_defined ? ic_json_number_or_null(p->tau) : cJSON_CreateNull());
     cJSON_AddItemToObject(o, "angle", ic_json_number_or_null(p->angle));
-    cJSON_AddStringToObject(o, "type", ic_point_type_name(ic_trace_point_type(res, p)));
+    cJSON_AddStringToObject(o, "type", ic_point_type_name(ic_trace_point_type(res, c, p)));
     return o;
 }
 
@@ -60,7 +61,7 @@ static cJSON *result_json(const ic_trace_result *r, const ic_pair *pair)
         const ic_trace_curve *c = ic_trace_result_curve(r, i);
         cJSON *o = cJSON_CreateObject();
         cJSON_AddBoolToObject(o, "closed", c->closed);
-        cJSON_AddStringToObject(o, "type", "transversal");
+        cJSON_AddStringToObject(o, "type", c->tangential ? "tangential" : "transversal");
         cJSON_AddStringToObject(o, "shape", ic_shape_name(c->shape));
         cJSON_AddNumberToObject(o, "shape_tolerance", c->shape_tol);
         cJSON_AddItemToObject(o, "length", ic_json_number_or_null(c->length));
@@ -70,7 +71,7 @@ static cJSON *result_json(const ic_trace_result *r, const ic_pair *pair)
         cJSON_AddItemToObject(o, "ends", ends);
         cJSON *pts = cJSON_CreateArray();
         for (int k = 0; k < c->npoints; k++)
-            cJSON_AddItemToArray(pts, point_json(&c->points[k], r, pair));
+            cJSON_AddItemToArray(pts, point_json(&c->points[k], c, r, pair));
         cJSON_AddItemToObject(o, "points", pts);
         cJSON_AddItemToArray(curves, o);
     }

@@ -6,7 +6,8 @@
 #include <math.h>
 #include <string.h>
 
-ic_point_type ic_trace_point_type(const ic_trace_result *res, const ic_trace_point *p)
+ic_point_type ic_trace_point_type(const ic_trace_result *res, const ic_trace_curve *c,
+                                  const ic_trace_point *p)
 {
     for (int i = 0; i < ic_trace_result_num_specials(res); i++) {
         const ic_trace_special *sp = ic_trace_result_special(res, i);
@@ -16,7 +17,7 @@ ic_point_type ic_trace_point_type(const ic_trace_result *res, const ic_trace_poi
         if (d <= 1e-12 * (1 + fabs(p->xyz[0]) + fabs(p->xyz[1]) + fabs(p->xyz[2])))
             return sp->type;
     }
-    return IC_POINT_TRANSVERSAL;
+    return c && c->tangential ? IC_POINT_TANGENTIAL_CURVE : IC_POINT_TRANSVERSAL;
 }
 
 static ic_status io_failed(ic_error *err, const char *what)
@@ -61,7 +62,7 @@ ic_status ic_trace_write_csv(FILE *f, const ic_trace_result *res, const ic_pair 
             csv_vector(f, p->b, p->frame_defined);
             csv_number(f, p->kappa, 1);
             csv_number(f, p->tau, p->frame_defined);
-            fprintf(f, ",%s\n", ic_point_type_name(ic_trace_point_type(res, p)));
+            fprintf(f, ",%s\n", ic_point_type_name(ic_trace_point_type(res, c, p)));
         }
     }
     /* points found on their own (and the curve ends again): no curve, no frame */

@@ -82,6 +82,11 @@ ic_status ic_closed_seed003(ic_branch *br, const ic_sheet sh[2], ic_paper_values
 
 /* x with t . x = r[0], N_A . x = r[1], N_B . x = r[2] (unit t normal to
  * both): x = (r0 N_A x N_B + r1 N_B x t + r2 t x N_A) / det[t; N_A; N_B]. */
+/* The parameters of the point of parametric sheet `which` nearest to X, by
+ * damped Newton on |R(u, v) - X|^2 from uv (updated); *dist the distance. */
+ic_status ic_local_project(ic_pair *pair, int which, double uv[2], const double X[3],
+                           const ic_local_options *opt, double *dist);
+
 void ic_solve_frame(double *x, const double *t, const double *NA, const double *NB,
                     const double *r);
 /* c', c'', c''' (arc length) of a curve from its derivatives b1, b2, b3 with

@@ -151,6 +151,12 @@ static ic_status closest_newton(ic_pair *pair, ic_surface *s, double *uv, double
     return IC_OK;
 }
 
+ic_status ic_local_project(ic_pair *pair, int which, double uv[2], const double X[3],
+                           const ic_local_options *opt, double *dist)
+{
+    return closest_newton(pair, ic_pair_surface(pair, which), uv, dist, X, opt, NULL);
+}
+
 static double param_distance(const double *a, const double *b, const double domain[2][2],
                              const int periodic[2])
 {

@@ -5,6 +5,7 @@
  */
 #include "intercurve/trace.h"
 #include "common/vec3.h"
+#include "tangential_curve.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -24,6 +25,7 @@ struct ic_tracer {
     ic_trace_point *pts;
     int n, cap;
     int done;
+    int tcurve;             /* marching along a tangential curve */
 };
 
 const char *ic_trace_event_name(ic_trace_event ev)
@@ -140,7 +142,10 @@ ic_status ic_tracer_start(ic_tracer *tr, const ic_local_point *start, int direct
     ic_status st = apparatus(tr, &tr->res, start, &tangential, err);
     if (st != IC_OK)
         return st;
-    if (tangential)
+    /* a point of a tangential curve starts a march along it; other
+     * tangential points are ends, not starts */
+    tr->tcurve = tangential && tr->res.type == IC_POINT_TANGENTIAL_CURVE && tr->res.nbranches >= 1;
+    if (tangential && !tr->tcurve)
         return ic_error_set(err, IC_ERR_UNABLE, 0, "a curve cannot start at a tangential point");
     memcpy(tr->start_xyz, start->xyz, sizeof tr->start_xyz);
     march_t(tr, &tr->res, tr->start_t);
@@ -220,11 +225,15 @@ static int outside(const ic_tracer *tr, const ic_local_point *pt, ic_trace_event
     return 0;
 }
 
-/* The corrected point after a step of length h (0 if the corrector fails). */
-static int corrected(const ic_tracer *tr, double h, ic_local_point *next)
+/* The corrected point after a step of length h (0 if the corrector fails);
+ * X receives the predicted point. */
+static int corrected(const ic_tracer *tr, double h, ic_local_point *next, double *X)
 {
-    double X[3], params[2][2], flat[4];
+    double params[2][2], flat[4];
     predict(tr, h, X, params);
+    if (tr->tcurve)
+        return ic_tcurve_correct(tr->pair, tr->par, X, params, fmax(1e3 * tr->opt.tol, 1e-3 * h),
+                                 &tr->opt.local, next) == IC_OK;
     int np = 0;
     for (int s = 0; s < 2; s++)
         if (tr->par[s]) {
@@ -248,7 +257,8 @@ static int land_on_boundary(const ic_tracer *tr, double h, boundary b, ic_local_
     for (int corner = 0; corner < 4; corner++) {
         double a = 0, fa = coordinate(&tr->cur, &b) - b.bound, c = h, fc;
         ic_local_point p;
-        if (!corrected(tr, c, &p))
+        double X[3];
+        if (!corrected(tr, c, &p, X))
             return -1;
         fc = coordinate(&p, &b) - b.bound;
         if (fa * fc > 0)
@@ -256,7 +266,7 @@ static int land_on_boundary(const ic_tracer *tr, double h, boundary b, ic_local_
         int side = 0, done = 0;
         for (int it = 0; it < 100 && !done; it++) {
             const double m = (a * fc - c * fa) / (fc - fa);
-            if (!corrected(tr, m, &p))
+            if (!corrected(tr, m, &p, X))
                 return -1;
             const double fm = coordinate(&p, &b) - b.bound;
             done = fabs(fm) <= 1e-14 * (1 + fabs(b.bound)) || c - a <= 1e-15 * h;
@@ -337,24 +347,14 @@ ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
         return IC_OK;
     }
     double h = step_length(tr);
-    ic_local_options lo = tr->opt.local;
     int near_tangential = 0;
     for (int attempt = 0; attempt < 60; attempt++, h *= 0.5) {
         if (h < tr->opt.min_step || (near_tangential && h < 1e-9 * (1 + ic_norm3(tr->cur.xyz))))
             break;
-        double X[3], params[2][2];
-        predict(tr, h, X, params);
+        double X[3];
         ic_local_point next;
-        double flat[4];
-        int np = 0;
-        for (int s = 0; s < 2; s++)
-            if (tr->par[s]) {
-                flat[np++] = params[s][0];
-                flat[np++] = params[s][1];
-            }
-        ic_status st = np ? ic_local_locate_params(tr->pair, &next, flat, np, &lo, NULL)
-                          : ic_local_locate(tr->pair, &next, X, &lo, NULL);
-        if (st != IC_OK)
+        ic_status st;
+        if (!corrected(tr, h, &next, X))
             continue;
         /* the corrector moves the point in the normal plane: accept small
          * corrections that move forward */
@@ -403,6 +403,12 @@ ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
         if (st != IC_OK)
             continue;
         double tn[3];
+        if (tr->tcurve) { /* stay on the tangential curve, oriented along it */
+            tangential = res.type != IC_POINT_TANGENTIAL_CURVE || res.nbranches < 1;
+            march_t(tr, &res, tn);
+            if (!tangential && ic_dot3(tn, t) < 0)
+                ic_tcurve_flip(&res.branches[0]);
+        }
         march_t(tr, &res, tn);
         if (tangential || ic_dot3(tn, t) <= 0) {
             /* a tangential point ahead (or passed: t = N_A x N_B flips across a

@@ -48,13 +48,16 @@ static void failure(ic_trace_report *rep, const char *fmt, ...)
 
 /* Seed 001 corollaries 3.1-3.5 on the sampled kappa and tau, relative to the
  * largest curvature (lines: to the total turning kappa L). */
-static ic_shape classify(const ic_trace_point *p, int n, double length, double tol)
+/* The shape; along a transversal curve the points near tangency are skipped
+ * (their torsion is unreliable), along a tangential curve none is (its
+ * apparatus comes from the height-difference method). */
+static ic_shape classify(const ic_trace_point *p, int n, double length, double tol, int tangential)
 {
     double kmax = 0, kmin = INFINITY, tmax = -INFINITY, tmin = INFINITY, rmax = -INFINITY,
            rmin = INFINITY;
     int framed = 0;
     for (int i = 0; i < n; i++) {
-        if (p[i].angle < SHAPE_MIN_ANGLE)
+        if (p[i].angle < SHAPE_MIN_ANGLE && !tangential)
             continue;
         kmax = fmax(kmax, p[i].kappa);
         kmin = fmin(kmin, p[i].kappa);
@@ -187,7 +190,7 @@ static ic_status add_curve(ic_trace_result *r, ic_trace_point *pts, int n, int c
     c->ends[0] = e0;
     c->ends[1] = e1;
     c->shape_tol = shape_tol;
-    c->shape = classify(pts, n, c->length, shape_tol);
+    c->shape = classify(pts, n, c->length, shape_tol, 0);
     return IC_OK;
 }
 
@@ -405,7 +408,7 @@ static ic_status join_curves(ic_trace_result *r, double shape_tol)
         ic_trace_curve *c = &r->curves[i];
         c->points = r->storage[i];
         c->length = c->points[c->npoints - 1].s - c->points[0].s;
-        c->shape = classify(c->points, c->npoints, c->length, shape_tol);
+        c->shape = classify(c->points, c->npoints, c->length, shape_tol, c->tangential);
     }
     return IC_OK;
 }
@@ -465,11 +468,13 @@ static int found_near(const ic_trace_result *r, const ic_unresolved *u)
 /* Records a tangential point near `near`: located to full precision on the
  * collinear-normals condition (ic_local_locate_tangential, within reach) and
  * classified. Where the location fails, the point is dropped, or kept as
- * approximate when keep_unrefined. A point of a tangential curve is reported
- * as a failure instead: such curves are not traced yet. */
-static ic_status record_tangential(ic_trace_result *r, ic_pair *pair, const ic_local_point *near,
-                                   double reach, int keep_unrefined, const ic_trace_options *opt)
+ * approximate when keep_unrefined. A point of a tangential curve starts the
+ * trace of that curve instead (*curve: its index, else -1). */
+static ic_status record_tangential(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
+                                   const ic_local_point *near, double reach, int keep_unrefined,
+                                   const ic_trace_options *opt, int *curve)
 {
+    *curve = -1;
     ic_local_point pt;
     ic_local_options lo = opt->local;
     int approximate = 0;
@@ -480,10 +485,24 @@ static ic_status record_tangential(ic_trace_result *r, ic_pair *pair, const ic_l
         approximate = 1;
     }
     ic_local_result res;
-    if (ic_local_apparatus(pair, &res, &pt, 2, IC_METHOD_AUTO, &lo, NULL) == IC_OK &&
-        res.type == IC_POINT_TANGENTIAL_CURVE) {
-        failure(&r->report, "a tangential curve passes through (%.6g, %.6g, %.6g): not traced yet",
-                pt.xyz[0], pt.xyz[1], pt.xyz[2]);
+    if (!approximate &&
+        ic_local_apparatus(pair, &res, &pt, opt->order, IC_METHOD_JET, &lo, NULL) == IC_OK &&
+        res.type == IC_POINT_TANGENTIAL_CURVE && res.nbranches >= 1) {
+        ic_trace_point *pts;
+        int n;
+        ic_error e2;
+        const ic_status st = trace_curve(r, tr, pair, &pt, opt, &pts, &n, &e2);
+        if (st == IC_ERR_NOMEM)
+            return st;
+        if (st != IC_OK) {
+            failure(&r->report, "the tangential curve through (%.6g, %.6g, %.6g): %s", pt.xyz[0],
+                    pt.xyz[1], pt.xyz[2], e2.message);
+            return IC_OK;
+        }
+        *curve = r->ncurves - 1;
+        ic_trace_curve *c = &r->curves[*curve];
+        c->tangential = 1;
+        c->shape = classify(c->points, c->npoints, c->length, opt->shape_tol, 1);
         return IC_OK;
     }
     return add_special(r, pair, &pt, approximate, opt, NULL);
@@ -491,14 +510,15 @@ static ic_status record_tangential(ic_trace_result *r, ic_pair *pair, const ic_l
 
 /* Looks for a tangential point in an unresolved cell: this is how isolated
  * contacts, which have no curve to lead to them, are found. */
-static ic_status tangential_in_cell(ic_trace_result *r, ic_pair *pair, const ic_unresolved *u,
-                                    const ic_trace_options *opt)
+static ic_status tangential_in_cell(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
+                                    const ic_unresolved *u, const ic_trace_options *opt)
 {
+    int curve;
     ic_local_point near;
     memset(&near, 0, sizeof near);
     memcpy(near.xyz, u->xyz, sizeof near.xyz);
     memcpy(near.params, u->params, sizeof near.params);
-    return record_tangential(r, pair, &near, u->radius, 0, opt);
+    return record_tangential(r, tr, pair, &near, u->radius, 0, opt, &curve);
 }
 
 ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options *opt,
@@ -539,12 +559,16 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
         ic_local_result res;
         if (ic_local_apparatus(pair, &res, &pt, 2, IC_METHOD_JET, &lo, &e2) != IC_OK ||
             res.type != IC_POINT_TRANSVERSAL) {
-            /* a tangential candidate: recorded, and covered around it */
-            st = record_tangential(r, pair, &pt, 2 * r->report.cell_size + 1e-6, 1, opt);
+            /* a tangential candidate: recorded (or its tangential curve
+             * traced), and covered around it */
+            int curve;
+            st = record_tangential(r, tr, pair, &pt, 2 * r->report.cell_size + 1e-6, 1, opt, &curve);
             ic_trace_point one;
             memset(&one, 0, sizeof one);
             memcpy(one.xyz, pt.xyz, sizeof one.xyz);
             cover(cand, nc, &one, 1, fmax(radius, 2 * r->report.cell_size));
+            if (curve >= 0)
+                cover(cand, nc, r->curves[curve].points, r->curves[curve].npoints, radius);
             continue;
         }
         ic_trace_point *pts = NULL;
@@ -559,7 +583,7 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
     for (int i = 0; st == IC_OK && i < nu; i++) {
         int near = found_near(r, &unres[i]);
         if (!near) {
-            st = tangential_in_cell(r, pair, &unres[i], opt);
+            st = tangential_in_cell(r, tr, pair, &unres[i], opt);
             near = found_near(r, &unres[i]);
         }
         if (st == IC_OK && !near) {

@@ -35,4 +35,15 @@ static inline double enneper_arc(double w0, double w1)
     return (double)fabsl(sum * h / 3);
 }
 
+/* Composite Simpson of a speed |c'(t)| over [a, b] in long double, 20000 panels. */
+static inline double simpson_length(long double (*speed)(long double), long double a, long double b)
+{
+    const int n = 20000;
+    const long double h = (b - a) / n;
+    long double sum = 0;
+    for (int i = 0; i <= n; i++)
+        sum += (i == 0 || i == n ? 1 : i % 2 ? 4 : 2) * speed(a + i * h);
+    return (double)(sum * h / 3);
+}
+
 #endif

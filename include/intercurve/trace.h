@@ -128,6 +128,10 @@ typedef struct {
      *  traced curve or recorded point passes near: an intersection may hide
      *  there unfound (a tangential curve, for one); listed in failures */
     int uncovered_cells;
+    /** leaf cells not excluded where Newton converged outside the cell, and
+     *  that nothing found passes near: not proven empty (a loop smaller than
+     *  a cell could hide there; no normal-cone test yet) */
+    int unproven_cells;
     int nfailures;
     char failures[IC_TRACE_MAX_FAILURES][240];
 } ic_trace_report;

@@ -98,6 +98,7 @@ static cJSON *result_json(const ic_trace_result *r, const ic_pair *pair)
     cJSON_AddNumberToObject(ro, "smallest_cell", rep->cell_size);
     cJSON_AddNumberToObject(ro, "start_candidates", rep->candidates);
     cJSON_AddNumberToObject(ro, "uncovered_cells", rep->uncovered_cells);
+    cJSON_AddNumberToObject(ro, "unproven_cells", rep->unproven_cells);
     cJSON *f = cJSON_CreateArray();
     for (int i = 0; i < rep->nfailures; i++)
         cJSON_AddItemToArray(f, cJSON_CreateString(rep->failures[i]));

@@ -322,9 +322,10 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_can
             memcpy(cand.xyz, x, sizeof x);
             if (push_candidate(&list, &cand) != 0)
                 st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory searching start points");
-        } else if (!converged) { /* a curve may pass here unfound (a tangential one) */
+        } else { /* no start point in this cell: a curve may pass here unfound */
             ic_unresolved u;
             memset(&u, 0, sizeof u);
+            u.converged_elsewhere = converged;
             double t[9];
             if (mixed || both) {
                 const double uvc[2] = {0.5 * (c.lo[0] + c.hi[0]), 0.5 * (c.lo[1] + c.hi[1])};

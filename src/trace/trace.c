@@ -586,7 +586,9 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
             st = tangential_in_cell(r, tr, pair, &unres[i], opt);
             near = found_near(r, &unres[i]);
         }
-        if (st == IC_OK && !near) {
+        if (st == IC_OK && !near && unres[i].converged_elsewhere) {
+            r->report.unproven_cells++;
+        } else if (st == IC_OK && !near) {
             if (r->report.uncovered_cells == 0 || r->report.uncovered_cells % 1000 == 0)
                 failure(&r->report,
                         "a cell around (%.6g, %.6g, %.6g) may hold an intersection that was not "

@@ -19,6 +19,7 @@ typedef struct {
     double xyz[3];
     double params[2][2];
     double radius;
+    int converged_elsewhere; /* Newton from the centre left the cell */
 } ic_unresolved;
 
 /* Start candidates by subdivision (search.c); fills the report's search part.

@@ -143,7 +143,8 @@ int main(int argc, char **argv)
            "points", "special", "ms", "max dist");
     const char *files[] = {"viviani-implicit.json", "viviani.json", "ellipsoids.json",
                            "enneper-self.json", "seed002-branch.json", "sphere-plane-contact.json",
-                           "torus-sphere.json"};
+                           "torus-sphere.json", "seed002-tangential.json", "cylinders.json",
+                           "cylinders-equal.json", "small-loop.json"};
     for (size_t c = 0; c < sizeof files / sizeof files[0]; c++)
         for (int k = 0; k < 3; k++)
             if (whole_example(dir, files[c], tols[k]) != 0)

@@ -8,6 +8,7 @@
 #include "curve_lengths.h"
 #include "harness.h"
 #include "intercurve.h"
+#include "traced_example.h"
 
 #define PI_L 3.14159265358979323846264338327950288L
 
@@ -23,39 +24,6 @@ static long double ellipse_speed(long double t)
 {
     const long double s = sinl(t), c = cosl(t);
     return sqrtl(s * s + 2 * c * c);
-}
-
-typedef struct {
-    ic_problem *problem;
-    ic_pair *pair;
-    ic_trace_result *res;
-} traced;
-
-static int trace_file(traced *t, const char *dir, const char *name)
-{
-    char path[512];
-    snprintf(path, sizeof path, "%s/examples/%s", dir, name);
-    ic_error err;
-    ic_trace_options opt;
-    ic_trace_defaults(&opt);
-    memset(t, 0, sizeof *t);
-    ic_status st = ic_problem_load(&t->problem, path, &err);
-    if (st == IC_OK) {
-        opt.has_box = ic_problem_box(t->problem, opt.box);
-        st = ic_pair_new(&t->pair, ic_problem_surface(t->problem, 0),
-                         ic_problem_surface(t->problem, 1), &err);
-    }
-    if (st == IC_OK)
-        st = ic_trace(&t->res, t->pair, &opt, &err);
-    CHECK(st == IC_OK, "%s: %s", name, err.message);
-    return st == IC_OK ? 0 : -1;
-}
-
-static void release(traced *t)
-{
-    ic_trace_result_free(t->res);
-    ic_pair_free(t->pair);
-    ic_problem_free(t->problem);
 }
 
 /* n closed curves, each of length L to the 1e-9 relative, of the shape. */
@@ -78,13 +46,13 @@ int main(int argc, char **argv)
 {
     const char *dir = argc > 1 ? argv[1] : ".";
     traced t;
-    if (trace_file(&t, dir, "cylinders.json") == 0) {
+    if (trace_example(&t, dir, "cylinders.json") == 0) {
         check_curves(&t, "cylinders 1 and 0.7", 2, simpson_length(loop_speed, 0, 2 * PI_L),
                      IC_SHAPE_GENERAL);
         CHECK(ic_trace_result_num_specials(t.res) == 0, "cylinders 1 and 0.7: no singular point");
     }
     release(&t);
-    if (trace_file(&t, dir, "cylinders-equal.json") == 0) {
+    if (trace_example(&t, dir, "cylinders-equal.json") == 0) {
         check_curves(&t, "equal cylinders", 2, simpson_length(ellipse_speed, 0, 2 * PI_L),
                      IC_SHAPE_PLANAR);
         int at_x = 0;
@@ -98,7 +66,7 @@ int main(int argc, char **argv)
               "equal cylinders: branch points at (+-1, 0, 0)");
     }
     release(&t);
-    if (trace_file(&t, dir, "small-loop.json") == 0) {
+    if (trace_example(&t, dir, "small-loop.json") == 0) {
         /* the bead of radius 0.01 cut 0.005 off centre: radius sqrt(7.5e-5); the
          * tracer's 1e-10 is absolute, so on this short curve (0.054) it is
          * larger relative to the length (measured 1.8e-11) */

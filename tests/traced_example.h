@@ -1,0 +1,46 @@
+/* A bundled example traced whole, for the tests that read examples/
+ * (test_writers, test_trace_examples): load, pair, trace, release. */
+#ifndef IC_TEST_TRACED_EXAMPLE_H
+#define IC_TEST_TRACED_EXAMPLE_H
+
+#include <stdio.h>
+#include <string.h>
+
+#include "harness.h"
+#include "intercurve.h"
+
+typedef struct {
+    ic_problem *problem;
+    ic_pair *pair;
+    ic_trace_result *res;
+} traced;
+
+static inline int trace_example(traced *t, const char *dir, const char *name)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/examples/%s", dir, name);
+    ic_error err;
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    memset(t, 0, sizeof *t);
+    ic_status st = ic_problem_load(&t->problem, path, &err);
+    if (st == IC_OK) {
+        opt.has_box = ic_problem_box(t->problem, opt.box);
+        const int self = ic_problem_is_self(t->problem);
+        st = ic_pair_new(&t->pair, ic_problem_surface(t->problem, 0),
+                         self ? NULL : ic_problem_surface(t->problem, 1), &err);
+    }
+    if (st == IC_OK)
+        st = ic_trace(&t->res, t->pair, &opt, &err);
+    CHECK(st == IC_OK, "%s: %s", name, err.message);
+    return st == IC_OK ? 0 : -1;
+}
+
+static inline void release(traced *t)
+{
+    ic_trace_result_free(t->res);
+    ic_pair_free(t->pair);
+    ic_problem_free(t->problem);
+}
+
+#endif

@@ -118,6 +118,23 @@ static ic_status record(ic_tracer *tr, ic_error *err)
     return IC_OK;
 }
 
+/* The angle between the normal lines at pt (as ic_local_apparatus measures
+ * it), from first derivatives only; -1 where a surface is singular. */
+static double normals_angle(const ic_tracer *tr, const ic_local_point *pt)
+{
+    double N[2][3];
+    for (int s = 0; s < 2; s++) {
+        ic_surface_geometry g;
+        if (ic_surface_geometry_at(ic_pair_surface(tr->pair, s), &g,
+                                   tr->par[s] ? pt->params[s] : pt->xyz, NULL) != IC_OK)
+            return -1;
+        memcpy(N[s], g.normal, sizeof N[s]);
+    }
+    double cr[3];
+    ic_cross3(cr, N[0], N[1]);
+    return atan2(ic_norm3(cr), fabs(ic_dot3(N[0], N[1])));
+}
+
 /* The apparatus at a point; IC_TRACE_TANGENTIAL if it is tangential. */
 static ic_status apparatus(ic_tracer *tr, ic_local_result *res, const ic_local_point *pt,
                            int *tangential, ic_error *err)
@@ -396,6 +413,13 @@ ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
                 return record(tr, err);
             }
             return IC_OK;
+        }
+        /* a tangential point ahead on a transversal curve: the step is
+         * shortened without the (costly) classification there */
+        const double angle = tr->tcurve ? -1 : normals_angle(tr, &next);
+        if (angle >= 0 && angle < tr->opt.local.tangential_angle) {
+            near_tangential = 1;
+            continue;
         }
         ic_local_result res;
         int tangential;

@@ -15,7 +15,8 @@ typedef struct {
     const double *P;
     const ic_jet_space *sp_p;
     const ic_jet_space *sp;
-    int Kc;                 /* min(K_p, K) */
+    int Kc;                 /* min(K_p, K, D) */
+    int D;                  /* the highest output degree wanted */
     const double *delta[IC_JET_MAX_VARS];
     const double *powers;   /* powers of the last delta, [Kc + 1][n] */
     double *work;           /* 2 buffers per nesting level */
@@ -37,7 +38,7 @@ static void compose_level(const compose_ctx *cx, double *out, int level, int *al
                 continue;
             const double *pw = cx->powers + (size_t)a * (size_t)sp->n;
             /* delta^a has no terms below degree a */
-            for (int i = sp->deg_start[a]; i < sp->n; i++)
+            for (int i = sp->deg_start[a]; i < sp->deg_start[cx->D + 1]; i++)
                 out[i] += coef * pw[i];
         }
         return;
@@ -48,19 +49,23 @@ static void compose_level(const compose_ctx *cx, double *out, int level, int *al
     alpha[level] = budget;
     compose_level(cx, out, level + 1, alpha, used + budget);
     for (int a = budget - 1; a >= 0; a--) {
-        ic_jet_mul(tmp, out, cx->delta[level], sp);
+        ic_jet_mul_upto(tmp, out, cx->delta[level], sp, cx->D);
         alpha[level] = a;
         compose_level(cx, sub, level + 1, alpha, used + a);
         ic_jet_add(out, tmp, sub, sp);
     }
 }
 
-void ic_jet_compose(double *out, const double *P, const ic_jet_space *sp_p,
-                    const double *const *g, const ic_jet_space *sp, double *scratch)
+/* The composition on the output degrees <= D (the rest zero): every delta
+ * has no constant term, so the terms of P above degree D do not matter. */
+static void compose_upto(double *out, const double *P, const ic_jet_space *sp_p,
+                         const double *const *g, const ic_jet_space *sp, double *scratch, int D)
 {
     const int n = sp->n, p = sp_p->m;
-    compose_ctx cx = {.P = P, .sp_p = sp_p, .sp = sp};
+    compose_ctx cx = {.P = P, .sp_p = sp_p, .sp = sp, .D = D};
     cx.Kc = sp_p->K < sp->K ? sp_p->K : sp->K;
+    if (cx.Kc > D)
+        cx.Kc = D;
     double *buf = scratch;
     for (int i = 0; i < p; i++) {
         ic_jet_copy(buf, g[i], sp);
@@ -71,11 +76,18 @@ void ic_jet_compose(double *out, const double *P, const ic_jet_space *sp_p,
     double *powers = buf;
     ic_jet_set_const(powers, 1.0, sp);
     for (int a = 1; a <= cx.Kc; a++)
-        ic_jet_mul(powers + (size_t)a * n, powers + (size_t)(a - 1) * n, cx.delta[p - 1], sp);
+        ic_jet_mul_upto(powers + (size_t)a * n, powers + (size_t)(a - 1) * n, cx.delta[p - 1], sp,
+                        D);
     cx.powers = powers;
     cx.work = powers + (size_t)(cx.Kc + 1) * n;
     int alpha[IC_JET_MAX_VARS] = {0};
     compose_level(&cx, out, 0, alpha, 0);
+}
+
+void ic_jet_compose(double *out, const double *P, const ic_jet_space *sp_p,
+                    const double *const *g, const ic_jet_space *sp, double *scratch)
+{
+    compose_upto(out, P, sp_p, g, sp, scratch, sp->K);
 }
 
 /* g_1 = y / f_1; then for k = 2..K the degree-k coefficient of f(g) - f(0)
@@ -94,7 +106,7 @@ ic_status ic_jet_revert(double *g, const double *f, const ic_jet_space *sp, doub
     double *h = scratch;
     const double *gs[1] = {g};
     for (int k = 2; k <= sp->K; k++) {
-        ic_jet_compose(h, f, sp, gs, sp, scratch + sp->n);
+        compose_upto(h, f, sp, gs, sp, scratch + sp->n, k);
         g[k] = -h[k] / f[1];
     }
     return IC_OK;
@@ -125,8 +137,8 @@ ic_status ic_jet_revert2(double *const g[2], const double *const f[2], const ic_
     double *h0 = scratch, *h1 = scratch + sp->n, *rest = scratch + 2 * sp->n;
     const double *gs[2] = {g[0], g[1]};
     for (int k = 2; k <= sp->K; k++) {
-        ic_jet_compose(h0, f[0], sp, gs, sp, rest);
-        ic_jet_compose(h1, f[1], sp, gs, sp, rest);
+        compose_upto(h0, f[0], sp, gs, sp, rest, k);
+        compose_upto(h1, f[1], sp, gs, sp, rest, k);
         /* G_k -= L^{-1} H_k on the degree-k part */
         for (int i = sp->deg_start[k]; i < sp->deg_start[k + 1]; i++) {
             g[0][i] -= i00 * h0[i] + i01 * h1[i];

@@ -36,6 +36,18 @@ static inline void ic_jet_hacc(const ic_jet_space *sp, double *out, const double
     }
 }
 
+/* c = a b on the degrees <= D only (the higher parts of c are zeroed): the
+ * series reversions need one more degree per step, not the whole product. */
+static inline void ic_jet_mul_upto(double *c, const double *a, const double *b,
+                                   const ic_jet_space *sp, int D)
+{
+    for (int i = 0; i < sp->n; i++)
+        c[i] = 0.0;
+    for (int j = 0; j <= D; j++)
+        for (int k = 0; j + k <= D; k++)
+            ic_jet_hacc(sp, c, a, j, b, k, 1.0);
+}
+
 /* Operations on the homogeneous part of degree d. */
 static inline void ic_jet_part_zero(const ic_jet_space *sp, double *c, int d)
 {

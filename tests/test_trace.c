@@ -570,6 +570,51 @@ static void test_tangential_parametric(void)
     ic_surface_free(B);
 }
 
+/* Branches out of a singular point with no start candidate on them: the
+ * equal cylinders x^2 + y^2 = 1, x^2 + z^2 = 1 in the box x in [0.9, 1.5] at
+ * search depth 1 give no start point at all; the branch point (1, 0, 0) is
+ * found by the collinear-normals search, and its four half-branches are
+ * traced from it: two arcs x = cos t, y = sin t, z = +-sin t, |t| <= acos 0.9,
+ * of length 1.254623540824008 (mpmath quad of sqrt(sin^2 t + 2 cos^2 t)). */
+static void test_branch_completion(void)
+{
+    ic_surface *A = NULL, *B = NULL;
+    ic_pair *pair = NULL;
+    ic_trace_result *r = NULL;
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    opt.depth = 1;
+    opt.has_box = 1;
+    const double box[3][2] = {{0.9, 1.5}, {-1.5, 1.5}, {-1.5, 1.5}};
+    memcpy(opt.box, box, sizeof box);
+    ic_error err;
+    ic_status st = ic_surface_new_implicit(&A, "x^2 + y^2 - 1", NULL, 0, &err);
+    if (st == IC_OK)
+        st = ic_surface_new_implicit(&B, "x^2 + z^2 - 1", NULL, 0, &err);
+    if (st == IC_OK)
+        st = ic_pair_new(&pair, A, B, &err);
+    if (st == IC_OK)
+        st = ic_trace(&r, pair, &opt, &err);
+    CHECK(st == IC_OK && ic_trace_result_report(r)->candidates == 0 &&
+              ic_trace_result_num_specials(r) == 1 && ic_trace_result_num_curves(r) == 2,
+          "branch completion: no candidate, one branch point, two arcs (%s)",
+          st == IC_OK ? "traced" : err.message);
+    const double L = 1.254623540824008;
+    for (int i = 0; st == IC_OK && i < ic_trace_result_num_curves(r); i++) {
+        const ic_trace_curve *c = ic_trace_result_curve(r, i);
+        /* the 1e-9 relative; both ends exactly on x = 0.9 */
+        CHECK(c->ends[0] == IC_TRACE_LEFT_BOX && c->ends[1] == IC_TRACE_LEFT_BOX &&
+                  c->points[0].xyz[0] == 0.9 && c->points[c->npoints - 1].xyz[0] == 0.9 &&
+                  fabs(c->length - L) <= 1e-9 * L,
+              "arc %d: length %.17g of %.17g", i, c->length, L);
+        printf("branch completion, arc %d: length error %.2g\n", i, fabs(c->length - L) / L);
+    }
+    ic_trace_result_free(r);
+    ic_pair_free(pair);
+    ic_surface_free(A);
+    ic_surface_free(B);
+}
+
 int main(void)
 {
     test_circle(0, 1e-10);
@@ -581,6 +626,7 @@ int main(void)
     test_whole_self();
     test_isolated_contacts();
     test_tangential_parametric();
+    test_branch_completion();
     test_whole_parametric();
     test_whole();
     return harness_finish("test_trace");

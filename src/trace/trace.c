@@ -19,6 +19,7 @@ struct ic_trace_result {
     int (*at)[2];             /* the exact tangential point at each end, or -1 */
     int ncurves, capc;
     ic_trace_special *specials;
+    ic_local_point *special_pts; /* the located points, for their branches */
     int nspecials, caps;
     ic_trace_report report;
 };
@@ -136,11 +137,16 @@ static ic_status add_special(ic_trace_result *r, ic_pair *pair, const ic_local_p
     if (r->nspecials == r->caps) {
         const int cap = r->caps ? 2 * r->caps : 8;
         ic_trace_special *p = realloc(r->specials, (size_t)cap * sizeof *p);
-        if (!p)
+        if (p)
+            r->specials = p;
+        ic_local_point *q = realloc(r->special_pts, (size_t)cap * sizeof *q);
+        if (q)
+            r->special_pts = q;
+        if (!p || !q)
             return IC_ERR_NOMEM;
-        r->specials = p;
         r->caps = cap;
     }
+    r->special_pts[r->nspecials] = *pt;
     ic_trace_special *s = &r->specials[r->nspecials++];
     memcpy(s->xyz, pt->xyz, sizeof s->xyz);
     s->approximate = approximate;
@@ -508,6 +514,68 @@ static ic_status record_tangential(ic_trace_result *r, ic_tracer *tr, ic_pair *p
     return add_special(r, pair, &pt, approximate, opt, NULL);
 }
 
+/* Distance from x to the nearest traced curve (polyline), or INFINITY. */
+static double distance_to_curves(const ic_trace_result *r, const double *x)
+{
+    double best = INFINITY;
+    for (int c = 0; c < r->ncurves; c++) {
+        const ic_trace_curve *cv = &r->curves[c];
+        for (int k = 0; k + 1 < cv->npoints; k++)
+            best = fmin(best, segment_distance(x, cv->points[k].xyz, cv->points[k + 1].xyz));
+    }
+    return best;
+}
+
+/* Every branch out of every recorded singular point is traced, even when no
+ * start candidate lay on it: a point a little way along each branch (second
+ * order), in both directions, that no traced curve passes near, starts a
+ * curve, which then ends at the singular point and is joined through it. */
+static ic_status complete_branches(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
+                                   const ic_trace_options *opt)
+{
+    ic_local_options lo = opt->local;
+    for (int k = 0; k < r->nspecials; k++) {
+        if (r->specials[k].approximate || r->specials[k].nbranches < 1)
+            continue;
+        const ic_local_point at = r->special_pts[k];
+        ic_local_result res;
+        if (ic_local_apparatus(pair, &res, &at, 2, IC_METHOD_AUTO, &lo, NULL) != IC_OK)
+            continue;
+        for (int b = 0; b < res.nbranches; b++)
+            for (int sgn = -1; sgn <= 1; sgn += 2) {
+                const ic_branch *br = &res.branches[b];
+                const double delta = fmin(20 * opt->chord, 0.2 / fmax(br->kappa, 1e-300));
+                double q[3];
+                ic_axpy3(q, at.xyz, sgn * delta, br->t);
+                if (br->frame_defined)
+                    ic_axpy3(q, q, 0.5 * delta * delta * br->kappa, br->n);
+                if (distance_to_curves(r, q) <= 0.25 * delta)
+                    continue;
+                ic_local_point pt;
+                ic_local_result there;
+                double d[3], e[3];
+                if (ic_local_locate(pair, &pt, q, &lo, NULL) != IC_OK ||
+                    ic_local_apparatus(pair, &there, &pt, 2, IC_METHOD_JET, &lo, NULL) != IC_OK ||
+                    there.type != IC_POINT_TRANSVERSAL)
+                    continue;
+                ic_axpy3(d, pt.xyz, -1.0, q);
+                ic_axpy3(e, pt.xyz, -1.0, at.xyz);
+                if (ic_norm3(d) > 0.25 * delta || ic_norm3(e) < 0.5 * delta)
+                    continue; /* the locator went elsewhere */
+                ic_trace_point *pts;
+                int n;
+                ic_error e2;
+                const ic_status st = trace_curve(r, tr, pair, &pt, opt, &pts, &n, &e2);
+                if (st == IC_ERR_NOMEM)
+                    return st;
+                if (st != IC_OK)
+                    failure(&r->report, "branch %d out of (%.6g, %.6g, %.6g): %s", b, at.xyz[0],
+                            at.xyz[1], at.xyz[2], e2.message);
+            }
+    }
+    return IC_OK;
+}
+
 /* Looks for a tangential point in an unresolved cell: this is how isolated
  * contacts, which have no curve to lead to them, are found. */
 static ic_status tangential_in_cell(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
@@ -579,16 +647,19 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
         cand[i].covered = 1;
     }
     /* unresolved cells that nothing found passes near: a tangential point is
-     * looked for in each (an isolated contact has no curve to find it by) */
-    for (int i = 0; st == IC_OK && i < nu; i++) {
-        int near = found_near(r, &unres[i]);
-        if (!near) {
+     * looked for in each (an isolated contact has no curve to find it by);
+     * then every branch out of the singular points found so far is traced;
+     * what is still far from everything found is counted */
+    for (int i = 0; st == IC_OK && i < nu; i++)
+        if (!found_near(r, &unres[i]))
             st = tangential_in_cell(r, tr, pair, &unres[i], opt);
-            near = found_near(r, &unres[i]);
-        }
-        if (st == IC_OK && !near && unres[i].converged_elsewhere) {
+    if (st == IC_OK)
+        st = complete_branches(r, tr, pair, opt);
+    for (int i = 0; st == IC_OK && i < nu; i++) {
+        const int near = found_near(r, &unres[i]);
+        if (!near && unres[i].converged_elsewhere) {
             r->report.unproven_cells++;
-        } else if (st == IC_OK && !near) {
+        } else if (!near) {
             if (r->report.uncovered_cells == 0 || r->report.uncovered_cells % 1000 == 0)
                 failure(&r->report,
                         "a cell around (%.6g, %.6g, %.6g) may hold an intersection that was not "
@@ -622,6 +693,7 @@ void ic_trace_result_free(ic_trace_result *r)
     free(r->curves);
     free(r->at);
     free(r->specials);
+    free(r->special_pts);
     free(r);
 }
 

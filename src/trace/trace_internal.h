@@ -28,4 +28,46 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_can
                               int *n, ic_unresolved **unres, int *nunres, ic_trace_report *rep,
                               ic_error *err);
 
+/* The result of ic_trace (trace.c, join.c, singular.c). */
+struct ic_trace_result {
+    ic_trace_curve *curves;
+    ic_trace_point **storage; /* the points of each curve */
+    int (*at)[2];             /* the exact tangential point at each end, or -1 */
+    int ncurves, capc;
+    ic_trace_special *specials;
+    ic_local_point *special_pts; /* the located points, for their branches */
+    int nspecials, caps;
+    ic_trace_report report;
+};
+
+/* trace.c: the report's failure list (at most IC_TRACE_MAX_FAILURES). */
+void ic_trace_failure(ic_trace_report *rep, const char *fmt, ...) IC_PRINTF(2, 3);
+double ic_trace_segment_distance(const double *p, const double *a, const double *b);
+/* Marks the candidates within radius of the polyline pts as covered. */
+void ic_trace_cover(ic_candidate *c, int n, const ic_trace_point *pts, int np, double radius);
+/* Records a located tangential point (once), classified; *index its slot. */
+ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local_point *pt,
+                               int approximate, const ic_trace_options *opt, int *index);
+/* Traces the curve through pt in both directions into a new curve of r. */
+ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
+                             const ic_local_point *pt, const ic_trace_options *opt,
+                             ic_trace_point **pts_out, int *n_out, ic_error *err);
+
+/* shape.c */
+ic_shape ic_trace_shape(const ic_trace_point *p, int n, double length, double tol, int tangential);
+
+/* join.c */
+ic_status ic_trace_join_curves(ic_trace_result *r, double shape_tol);
+void ic_trace_drop_duplicates(ic_trace_result *r, double radius);
+
+/* singular.c */
+int ic_trace_found_near(const ic_trace_result *r, const ic_unresolved *u);
+ic_status ic_trace_record_tangential(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
+                                     const ic_local_point *near, double reach, int keep_unrefined,
+                                     const ic_trace_options *opt, int *curve);
+ic_status ic_trace_complete_branches(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
+                                     const ic_trace_options *opt);
+ic_status ic_trace_tangential_in_cell(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
+                                      const ic_unresolved *u, const ic_trace_options *opt);
+
 #endif

@@ -1,0 +1,147 @@
+/* Singular points in the whole trace: tangential points located and
+ * classified, isolated contacts found in the unresolved cells, tangential
+ * curves started, every branch out of a singular point followed. */
+#include "trace_internal.h"
+#include "common/vec3.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Whether a traced curve or a recorded point passes within the cell's radius. */
+int ic_trace_found_near(const ic_trace_result *r, const ic_unresolved *u)
+{
+    for (int k = 0; k < r->nspecials; k++) {
+        double d[3];
+        ic_axpy3(d, r->specials[k].xyz, -1.0, u->xyz);
+        if (ic_norm3(d) <= u->radius)
+            return 1;
+    }
+    for (int c = 0; c < r->ncurves; c++) {
+        ic_candidate probe;
+        memset(&probe, 0, sizeof probe);
+        memcpy(probe.xyz, u->xyz, sizeof probe.xyz);
+        ic_trace_cover(&probe, 1, r->curves[c].points, r->curves[c].npoints, u->radius);
+        if (probe.covered)
+            return 1;
+    }
+    return 0;
+}
+
+/* Records a tangential point near `near`: located to full precision on the
+ * collinear-normals condition (ic_local_locate_tangential, within reach) and
+ * classified. Where the location fails, the point is dropped, or kept as
+ * approximate when keep_unrefined. A point of a tangential curve starts the
+ * trace of that curve instead (*curve: its index, else -1). */
+ic_status ic_trace_record_tangential(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
+                                   const ic_local_point *near, double reach, int keep_unrefined,
+                                   const ic_trace_options *opt, int *curve)
+{
+    *curve = -1;
+    ic_local_point pt;
+    ic_local_options lo = opt->local;
+    int approximate = 0;
+    if (ic_local_locate_tangential(pair, &pt, near, reach, &lo, NULL) != IC_OK) {
+        if (!keep_unrefined)
+            return IC_OK;
+        pt = *near;
+        approximate = 1;
+    }
+    ic_local_result res;
+    if (!approximate &&
+        ic_local_apparatus(pair, &res, &pt, opt->order, IC_METHOD_JET, &lo, NULL) == IC_OK &&
+        res.type == IC_POINT_TANGENTIAL_CURVE && res.nbranches >= 1) {
+        ic_trace_point *pts;
+        int n;
+        ic_error e2;
+        const ic_status st = ic_trace_both_ways(r, tr, pair, &pt, opt, &pts, &n, &e2);
+        if (st == IC_ERR_NOMEM)
+            return st;
+        if (st != IC_OK) {
+            ic_trace_failure(&r->report, "the tangential curve through (%.6g, %.6g, %.6g): %s", pt.xyz[0],
+                    pt.xyz[1], pt.xyz[2], e2.message);
+            return IC_OK;
+        }
+        *curve = r->ncurves - 1;
+        ic_trace_curve *c = &r->curves[*curve];
+        c->tangential = 1;
+        c->shape = ic_trace_shape(c->points, c->npoints, c->length, opt->shape_tol, 1);
+        return IC_OK;
+    }
+    return ic_trace_add_special(r, pair, &pt, approximate, opt, NULL);
+}
+
+/* Distance from x to the nearest traced curve (polyline), or INFINITY. */
+static double distance_to_curves(const ic_trace_result *r, const double *x)
+{
+    double best = INFINITY;
+    for (int c = 0; c < r->ncurves; c++) {
+        const ic_trace_curve *cv = &r->curves[c];
+        for (int k = 0; k + 1 < cv->npoints; k++)
+            best = fmin(best, ic_trace_segment_distance(x, cv->points[k].xyz, cv->points[k + 1].xyz));
+    }
+    return best;
+}
+
+/* Every branch out of every recorded singular point is traced, even when no
+ * start candidate lay on it: a point a little way along each branch (second
+ * order), in both directions, that no traced curve passes near, starts a
+ * curve, which then ends at the singular point and is joined through it. */
+ic_status ic_trace_complete_branches(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
+                                   const ic_trace_options *opt)
+{
+    ic_local_options lo = opt->local;
+    for (int k = 0; k < r->nspecials; k++) {
+        if (r->specials[k].approximate || r->specials[k].nbranches < 1)
+            continue;
+        const ic_local_point at = r->special_pts[k];
+        ic_local_result res;
+        if (ic_local_apparatus(pair, &res, &at, 2, IC_METHOD_AUTO, &lo, NULL) != IC_OK)
+            continue;
+        for (int b = 0; b < res.nbranches; b++)
+            for (int sgn = -1; sgn <= 1; sgn += 2) {
+                const ic_branch *br = &res.branches[b];
+                const double delta = fmin(20 * opt->chord, 0.2 / fmax(br->kappa, 1e-300));
+                double q[3];
+                ic_axpy3(q, at.xyz, sgn * delta, br->t);
+                if (br->frame_defined)
+                    ic_axpy3(q, q, 0.5 * delta * delta * br->kappa, br->n);
+                if (distance_to_curves(r, q) <= 0.25 * delta)
+                    continue;
+                ic_local_point pt;
+                ic_local_result there;
+                double d[3], e[3];
+                if (ic_local_locate(pair, &pt, q, &lo, NULL) != IC_OK ||
+                    ic_local_apparatus(pair, &there, &pt, 2, IC_METHOD_JET, &lo, NULL) != IC_OK ||
+                    there.type != IC_POINT_TRANSVERSAL)
+                    continue;
+                ic_axpy3(d, pt.xyz, -1.0, q);
+                ic_axpy3(e, pt.xyz, -1.0, at.xyz);
+                if (ic_norm3(d) > 0.25 * delta || ic_norm3(e) < 0.5 * delta)
+                    continue; /* the locator went elsewhere */
+                ic_trace_point *pts;
+                int n;
+                ic_error e2;
+                const ic_status st = ic_trace_both_ways(r, tr, pair, &pt, opt, &pts, &n, &e2);
+                if (st == IC_ERR_NOMEM)
+                    return st;
+                if (st != IC_OK)
+                    ic_trace_failure(&r->report, "branch %d out of (%.6g, %.6g, %.6g): %s", b, at.xyz[0],
+                            at.xyz[1], at.xyz[2], e2.message);
+            }
+    }
+    return IC_OK;
+}
+
+/* Looks for a tangential point in an unresolved cell: this is how isolated
+ * contacts, which have no curve to lead to them, are found. */
+ic_status ic_trace_tangential_in_cell(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
+                                    const ic_unresolved *u, const ic_trace_options *opt)
+{
+    int curve;
+    ic_local_point near;
+    memset(&near, 0, sizeof near);
+    memcpy(near.xyz, u->xyz, sizeof near.xyz);
+    memcpy(near.params, u->params, sizeof near.params);
+    return ic_trace_record_tangential(r, tr, pair, &near, u->radius, 0, opt, &curve);
+}

@@ -108,15 +108,22 @@ int main(int argc, char **argv)
         const char *name, *f, *g;
         double at[3];
     } cases[] = {
-        {"sphere/plane circle (closed)", "x^2 + y^2 + z^2 - 4", "z - 1", {1.7320508075688772, 0, 1}},
-        {"ellipsoids Ex 5.1 half-ellipse", "x^2/0.36 + y^2/0.64 + z^2 - 1",
-         "x^2/0.2025 + y^2/0.64 + z^2/1.5625 - 1", {0.16875, 0.69282032302755092, 0.41339864718575637}},
-        {"Viviani lobe to the branch point", "(x - 1)^2 + y^2 - 1", "x^2 + y^2 + z^2 - 4",
+        {"sphere/plane circle (closed)",
+         "x^2 + y^2 + z^2 - 4",
+         "z - 1",
+         {1.7320508075688772, 0, 1}},
+        {"ellipsoids Ex 5.1 half-ellipse",
+         "x^2/0.36 + y^2/0.64 + z^2 - 1",
+         "x^2/0.2025 + y^2/0.64 + z^2/1.5625 - 1",
+         {0.16875, 0.69282032302755092, 0.41339864718575637}},
+        {"Viviani lobe to the branch point",
+         "(x - 1)^2 + y^2 - 1",
+         "x^2 + y^2 + z^2 - 4",
          {1.5, 0.8660254037844386, 1}},
     };
     const double tols[3] = {1e-6, 1e-10, 1e-12};
-    printf("%-34s %8s %8s %12s %10s\n", "curve (implicit/implicit)", "tol", "points", "us per curve",
-           "length");
+    printf("%-34s %8s %8s %12s %10s\n", "curve (implicit/implicit)", "tol", "points",
+           "us per curve", "length");
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
         ic_surface *A = NULL, *B = NULL;
         job j = {0};
@@ -141,10 +148,12 @@ int main(int argc, char **argv)
      * start-point search, every curve, the report */
     printf("\n%-26s %6s %6s %6s %6s %10s %10s\n", "whole intersection (depth 6)", "tol", "curves",
            "points", "special", "ms", "max dist");
-    const char *files[] = {"viviani-implicit.json", "viviani.json", "ellipsoids.json",
-                           "enneper-self.json", "seed002-branch.json", "sphere-plane-contact.json",
-                           "torus-sphere.json", "seed002-tangential.json", "cylinders.json",
-                           "cylinders-equal.json", "small-loop.json"};
+    const char *files[] = {"viviani-implicit.json", "viviani.json",
+                           "ellipsoids.json",       "enneper-self.json",
+                           "seed002-branch.json",   "sphere-plane-contact.json",
+                           "torus-sphere.json",     "seed002-tangential.json",
+                           "cylinders.json",        "cylinders-equal.json",
+                           "small-loop.json"};
     for (size_t c = 0; c < sizeof files / sizeof files[0]; c++)
         for (int k = 0; k < 3; k++)
             if (whole_example(dir, files[c], tols[k]) != 0)

@@ -24,7 +24,8 @@ static void test_circle(int parametric_sphere, double tol)
     ic_surface *A = NULL, *B = NULL;
     const char *sph[3] = {"2*cos(u)*cos(v)", "2*sin(u)*cos(v)", "2*sin(v)"};
     if (parametric_sphere) {
-        const double dom[2][2] = {{-3.141592653589793, 3.141592653589793}, {-1.5707963267948966, 1.5707963267948966}};
+        const double dom[2][2] = {{-3.141592653589793, 3.141592653589793},
+                                  {-1.5707963267948966, 1.5707963267948966}};
         const int per[2] = {1, 0};
         if (ic_surface_new_parametric(&A, sph, NULL, NULL, 0, NULL, NULL) ||
             ic_surface_set_domain(A, dom, per, NULL))
@@ -46,8 +47,9 @@ static void test_circle(int parametric_sphere, double tol)
     ic_trace_event ev = IC_TRACE_FAILED;
     CHECK(ic_local_locate(pair, &pt, X0, &opt.local, &err) == IC_OK, "locate: %s", err.message);
     CHECK(ic_tracer_start(tr, &pt, 1, &err) == IC_OK, "start: %s", err.message);
-    CHECK(ic_tracer_run(tr, &ev, &err) == IC_OK && ev == IC_TRACE_CLOSED, "circle (%s, tol %g): %s %s",
-          parametric_sphere ? "param" : "implicit", tol, ic_trace_event_name(ev), err.message);
+    CHECK(ic_tracer_run(tr, &ev, &err) == IC_OK && ev == IC_TRACE_CLOSED,
+          "circle (%s, tol %g): %s %s", parametric_sphere ? "param" : "implicit", tol,
+          ic_trace_event_name(ev), err.message);
     const int n = ic_tracer_num_points(tr);
     const double L = 2 * 3.141592653589793 * sqrt(3.0);
     const ic_trace_point *last = ic_tracer_point(tr, n - 1);
@@ -58,7 +60,8 @@ static void test_circle(int parametric_sphere, double tol)
     double worst_on = 0, worst_k = 0;
     for (int i = 0; i < n; i++) {
         const ic_trace_point *p = ic_tracer_point(tr, i);
-        worst_on = fmax(worst_on, fmax(fabs(p->xyz[2] - 1), fabs(hypot(p->xyz[0], p->xyz[1]) - sqrt(3.0))));
+        worst_on = fmax(worst_on,
+                        fmax(fabs(p->xyz[2] - 1), fabs(hypot(p->xyz[0], p->xyz[1]) - sqrt(3.0))));
         worst_k = fmax(worst_k, fmax(fabs(p->kappa - 1 / sqrt(3.0)), fabs(p->tau)));
     }
     CHECK(worst_on <= 1e-12, "points on the circle to %g", worst_on);
@@ -92,7 +95,8 @@ static void test_helix(void)
     ic_error err;
     const double params[2] = {0, 1};
     ic_trace_event ev = IC_TRACE_FAILED;
-    CHECK(ic_local_locate_params(pair, &pt, params, 2, &opt.local, &err) == IC_OK, "%s", err.message);
+    CHECK(ic_local_locate_params(pair, &pt, params, 2, &opt.local, &err) == IC_OK, "%s",
+          err.message);
     /* march towards increasing u: the direction whose t has a positive z */
     ic_local_result r;
     CHECK(ic_local_apparatus(pair, &r, &pt, 2, IC_METHOD_JET, &opt.local, &err) == IC_OK, "app");
@@ -143,11 +147,13 @@ static void test_self_intersection(void)
     ic_error err;
     const double params[4] = {sqrt(2.0), 3, sqrt(2.0), -3};
     ic_trace_event ev = IC_TRACE_FAILED;
-    CHECK(ic_local_locate_params(pair, &pt, params, 4, &opt.local, &err) == IC_OK, "%s", err.message);
+    CHECK(ic_local_locate_params(pair, &pt, params, 4, &opt.local, &err) == IC_OK, "%s",
+          err.message);
     for (int dir = -1; dir <= 1; dir += 2) {
         CHECK(ic_tracer_start(tr, &pt, dir, &err) == IC_OK, "start");
         CHECK(ic_tracer_run(tr, &ev, &err) == IC_OK && ev == IC_TRACE_LEFT_DOMAIN,
-              "Enneper double curve, direction %d: %s %s", dir, ic_trace_event_name(ev), err.message);
+              "Enneper double curve, direction %d: %s %s", dir, ic_trace_event_name(ev),
+              err.message);
         double worst = 0;
         for (int i = 0; i < ic_tracer_num_points(tr); i++) {
             const ic_trace_point *p = ic_tracer_point(tr, i);
@@ -160,7 +166,8 @@ static void test_self_intersection(void)
         }
         CHECK(worst <= 1e-9, "Enneper double curve, direction %d: off by %g", dir, worst);
         printf("Enneper double curve, direction %+d: %d points to s = %.6g, worst %.2g\n", dir,
-               ic_tracer_num_points(tr), ic_tracer_point(tr, ic_tracer_num_points(tr) - 1)->s, worst);
+               ic_tracer_num_points(tr), ic_tracer_point(tr, ic_tracer_num_points(tr) - 1)->s,
+               worst);
     }
     ic_tracer_free(tr);
     ic_pair_free(pair);
@@ -252,8 +259,10 @@ static void test_whole(void)
     if (st == IC_OK && ic_trace_result_num_curves(r) == 1) {
         const ic_trace_curve *c = ic_trace_result_curve(r, 0);
         const ic_trace_report *rep = ic_trace_result_report(r);
-        CHECK(c->closed && c->shape == IC_SHAPE_CIRCLE, "closed circle: %s", ic_shape_name(c->shape));
-        CHECK(fabs(c->length - 2 * 3.141592653589793 * sqrt(3.0)) < 1e-9, "length %.15g", c->length);
+        CHECK(c->closed && c->shape == IC_SHAPE_CIRCLE, "closed circle: %s",
+              ic_shape_name(c->shape));
+        CHECK(fabs(c->length - 2 * 3.141592653589793 * sqrt(3.0)) < 1e-9, "length %.15g",
+              c->length);
         CHECK(rep->proven && rep->cells_excluded > 0 && rep->uncovered_cells == 0 &&
                   ic_trace_result_num_specials(r) == 0,
               "report: proven %d, excluded %d, uncovered %d", rep->proven, rep->cells_excluded,
@@ -268,8 +277,8 @@ static void test_whole(void)
         const double eight = 2 * viviani_lobe();
         const ic_trace_curve *c = ic_trace_result_curve(r, 0);
         /* the 1e-9 relative (measured 8.5e-14) */
-        CHECK(c->closed && fabs(c->length - eight) <= 1e-9 * eight, "figure-eight length %.15g of %.15g",
-              c->length, eight);
+        CHECK(c->closed && fabs(c->length - eight) <= 1e-9 * eight,
+              "figure-eight length %.15g of %.15g", c->length, eight);
         double worst = 0;
         for (int i = 0; i < c->npoints; i++) {
             const ic_trace_point *p = &c->points[i];
@@ -310,7 +319,8 @@ static void test_whole(void)
         for (int i = 0; st == IC_OK && i < ic_trace_result_num_curves(r); i++) {
             const ic_trace_curve *c = ic_trace_result_curve(r, i);
             CHECK(c->closed && c->shape == IC_SHAPE_PLANAR && fabs(c->length - L) <= 1e-9 * L,
-                  "ellipse %d: %s, length %.15g of %.15g", i, ic_shape_name(c->shape), c->length, L);
+                  "ellipse %d: %s, length %.15g of %.15g", i, ic_shape_name(c->shape), c->length,
+                  L);
         }
     }
     release(r, A, B, pair);
@@ -386,7 +396,8 @@ static void test_whole_self(void)
          * 3(1 + w^2) = 25, w = +-sqrt(22/3) */
         const ic_trace_point *p0 = &c->points[0], *p1 = &c->points[c->npoints - 1];
         const double a = sqrt(22.0 / 3), L = enneper_arc(-a, a);
-        CHECK(fabs(fabs(p0->params[0][on_x0]) - a) <= 1e-12 && fabs(fabs(p1->params[0][on_x0]) - a) <= 1e-12,
+        CHECK(fabs(fabs(p0->params[0][on_x0]) - a) <= 1e-12 &&
+                  fabs(fabs(p1->params[0][on_x0]) - a) <= 1e-12,
               "Enneper curve %d ends at w = %.17g, %.17g, not +-%.17g", i, p0->params[0][on_x0],
               p1->params[0][on_x0], a);
         /* the whole double curve's length: the 1e-9 relative */
@@ -460,8 +471,8 @@ static void check_contact(const ic_trace_result *r, ic_status st, const double w
                           const char *what)
 {
     CHECK(st == IC_OK && ic_trace_result_num_curves(r) == 0 && ic_trace_result_num_specials(r) == 1,
-          "%s: no curve, one point (%d curves, %d points)", what, r ? ic_trace_result_num_curves(r) : -1,
-          r ? ic_trace_result_num_specials(r) : -1);
+          "%s: no curve, one point (%d curves, %d points)", what,
+          r ? ic_trace_result_num_curves(r) : -1, r ? ic_trace_result_num_specials(r) : -1);
     if (!r || ic_trace_result_num_specials(r) != 1)
         return;
     const ic_trace_special *sp = ic_trace_result_special(r, 0);
@@ -513,8 +524,9 @@ static void test_isolated_contacts(void)
             st = ic_pair_new(&pair, S, P, &err);
         if (st == IC_OK)
             st = ic_trace(&res, pair, &opt, &err);
-        check_contact(res, st, top, both ? "parametric sphere on a parametric plane"
-                                         : "parametric sphere on an implicit plane");
+        check_contact(res, st, top,
+                      both ? "parametric sphere on a parametric plane"
+                           : "parametric sphere on an implicit plane");
         release(res, S, P, pair);
     }
 }

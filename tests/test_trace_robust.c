@@ -35,10 +35,7 @@ static int total_points(const ic_trace_result *r)
 
 /* The issue's 1e-9 relative on lengths, at every tolerance from 1e-6 to
  * 1e-12 (measured worst 8e-10: Enneper at tol 1e-6). */
-static double length_bound(double L)
-{
-    return 1e-9 * L;
-}
+static double length_bound(double L) { return 1e-9 * L; }
 
 /* Viviani's figure-eight, traced from an implicit cylinder and sphere in a
  * box, or with a parametric cylinder (z = zf(v1), v2 periodic on dom2). */
@@ -87,10 +84,10 @@ static void check_viviani(const traced *t, const char *what)
     const ic_trace_curve *c = ic_trace_result_curve(r, 0);
     const ic_trace_special *sp = ic_trace_result_special(r, 0);
     const double err = fabs(c->length - L);
-    CHECK(c->closed && err <= length_bound(L), "%s: length %.17g of %.17g", what,
-          c->length, L);
+    CHECK(c->closed && err <= length_bound(L), "%s: length %.17g of %.17g", what, c->length, L);
     /* the branch point solves N_A x N_B = 0 to 1e-12 (linear in the offset) */
-    CHECK(sp->type == IC_POINT_BRANCH && hypot(hypot(sp->xyz[0] - 2, sp->xyz[1]), sp->xyz[2]) <= 1e-12,
+    CHECK(sp->type == IC_POINT_BRANCH &&
+              hypot(hypot(sp->xyz[0] - 2, sp->xyz[1]), sp->xyz[2]) <= 1e-12,
           "%s: the branch point (2, 0, 0)", what);
     printf("%-44s %5d points, length error %.2g\n", what, c->npoints, err / L);
 }
@@ -180,14 +177,15 @@ static void test_budget(void)
     for (int k = 0; k < 3; k++)
         opt.box[k][0] = -3, opt.box[k][1] = 3;
     if (ic_surface_new_implicit(&t.A, "x^2 + y^2 + z^2 - 4", NULL, 0, NULL) ||
-        ic_surface_new_implicit(&t.B, "z - 1", NULL, 0, NULL) || ic_pair_new(&t.pair, t.A, t.B, NULL) ||
-        ic_trace(&t.res, t.pair, &opt, NULL)) {
+        ic_surface_new_implicit(&t.B, "z - 1", NULL, 0, NULL) ||
+        ic_pair_new(&t.pair, t.A, t.B, NULL) || ic_trace(&t.res, t.pair, &opt, NULL)) {
         CHECK(0, "budget case traced");
         release(&t);
         return;
     }
     const ic_trace_report *rep = ic_trace_result_report(t.res);
-    const ic_trace_curve *c = ic_trace_result_num_curves(t.res) >= 1 ? ic_trace_result_curve(t.res, 0) : NULL;
+    const ic_trace_curve *c =
+        ic_trace_result_num_curves(t.res) >= 1 ? ic_trace_result_curve(t.res, 0) : NULL;
     CHECK(c && !c->closed && c->ends[0] == IC_TRACE_BUDGET && c->ends[1] == IC_TRACE_BUDGET &&
               rep->nfailures > 0 && strstr(rep->failures[0], "budget of 20 points"),
           "the budget is visible: %s", rep->nfailures ? rep->failures[0] : "no failure listed");

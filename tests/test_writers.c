@@ -45,7 +45,8 @@ static void check_csv(const traced *t, const char *name)
     rewind(f);
     char line[4096], *fld[32];
     CHECK(fgets(line, sizeof line, f) &&
-              strcmp(line, "curve,s,x,y,z,u,v,p,q,tx,ty,tz,nx,ny,nz,bx,by,bz,kappa,tau,type\n") == 0,
+              strcmp(line, "curve,s,x,y,z,u,v,p,q,tx,ty,tz,nx,ny,nz,bx,by,bz,kappa,tau,type\n") ==
+                  0,
           "%s: the CSV header of DESIGN.md 3.3", name);
     int par[2];
     for (int s = 0; s < 2; s++)

@@ -26,13 +26,13 @@ extern "C" {
 #endif
 
 typedef struct {
-    double tol;       /**< length: truncation error allowed per step (default 1e-10) */
-    double chord;     /**< length: chord-height bound of a step (default 1e-3) */
-    double max_step;  /**< length: longest step (default 0.5) */
-    double min_step;  /**< length: a step shorter than this fails (default 1e-12) */
-    int order;        /**< predictor order K, 3..12 (default 6) */
-    int max_points;   /**< point budget of one curve (default 100000) */
-    int has_box;      /**< 1: stop when the curve leaves box */
+    double tol;      /**< length: truncation error allowed per step (default 1e-10) */
+    double chord;    /**< length: chord-height bound of a step (default 1e-3) */
+    double max_step; /**< length: longest step (default 0.5) */
+    double min_step; /**< length: a step shorter than this fails (default 1e-12) */
+    int order;       /**< predictor order K, 3..12 (default 6) */
+    int max_points;  /**< point budget of one curve (default 100000) */
+    int has_box;     /**< 1: stop when the curve leaves box */
     double box[3][2];
     int depth;        /**< subdivision depth of the start-point search (default 6:
                        *   64 cells per axis) */
@@ -44,25 +44,25 @@ void ic_trace_defaults(ic_trace_options *opt);
 
 typedef enum {
     IC_TRACE_CONTINUE,
-    IC_TRACE_CLOSED,       /**< back at the start point: a closed curve */
-    IC_TRACE_LEFT_DOMAIN,  /**< a parameter left its (non-periodic) domain */
-    IC_TRACE_LEFT_BOX,     /**< the curve left the box */
-    IC_TRACE_TANGENTIAL,   /**< the next point is tangential (not passed yet) */
-    IC_TRACE_BUDGET,       /**< max_points reached */
-    IC_TRACE_FAILED        /**< the step shrank below min_step: err says why */
+    IC_TRACE_CLOSED,      /**< back at the start point: a closed curve */
+    IC_TRACE_LEFT_DOMAIN, /**< a parameter left its (non-periodic) domain */
+    IC_TRACE_LEFT_BOX,    /**< the curve left the box */
+    IC_TRACE_TANGENTIAL,  /**< the next point is tangential (not passed yet) */
+    IC_TRACE_BUDGET,      /**< max_points reached */
+    IC_TRACE_FAILED       /**< the step shrank below min_step: err says why */
 } ic_trace_event;
 
 const char *ic_trace_event_name(ic_trace_event ev);
 
 /** One point of a traced curve (t oriented along the marching direction). */
 typedef struct {
-    double s;               /**< arc length from the start */
+    double s; /**< arc length from the start */
     double xyz[3];
     double params[2][2];
     double t[3], n[3], b[3];
     double kappa, tau;
-    double angle;           /**< between the normals, radians */
-    int frame_defined;      /**< 0 where kappa = 0: n, b, tau undefined */
+    double angle;      /**< between the normals, radians */
+    int frame_defined; /**< 0 where kappa = 0: n, b, tau undefined */
 } ic_trace_point;
 
 typedef struct ic_tracer ic_tracer;
@@ -88,7 +88,11 @@ const ic_trace_point *ic_tracer_point(const ic_tracer *tr, int i);
 
 /** Shapes of a traced curve (seed 001 corollaries 3.1-3.5). */
 typedef enum {
-    IC_SHAPE_GENERAL, IC_SHAPE_LINE, IC_SHAPE_CIRCLE, IC_SHAPE_PLANAR, IC_SHAPE_CIRCULAR_HELIX,
+    IC_SHAPE_GENERAL,
+    IC_SHAPE_LINE,
+    IC_SHAPE_CIRCLE,
+    IC_SHAPE_PLANAR,
+    IC_SHAPE_CIRCULAR_HELIX,
     IC_SHAPE_HELIX
 } ic_shape;
 
@@ -100,10 +104,10 @@ typedef struct {
     int npoints;
     const ic_trace_point *points;
     double length;
-    ic_trace_event ends[2];   /**< how the two ends stopped (both CLOSED for a loop) */
-    int tangential;           /**< 1: the surfaces touch all along it (a tangential curve) */
+    ic_trace_event ends[2]; /**< how the two ends stopped (both CLOSED for a loop) */
+    int tangential;         /**< 1: the surfaces touch all along it (a tangential curve) */
     ic_shape shape;
-    double shape_tol;         /**< relative tolerance of the shape test */
+    double shape_tol; /**< relative tolerance of the shape test */
 } ic_trace_curve;
 
 /** A tangential point met: at a curve end (approximate: the last transversal
@@ -119,11 +123,11 @@ typedef struct {
 
 /** What the search proved and what it only sampled (trace.md). */
 typedef struct {
-    int cells;           /**< cells examined by the subdivision */
-    int cells_excluded;  /**< cells proven empty by interval arithmetic */
-    int proven;          /**< 1: every surface had interval evaluation */
-    int candidates;      /**< start candidates found by Newton in the remaining cells */
-    double cell_size;    /**< the smallest cell (length or parameter units) */
+    int cells;          /**< cells examined by the subdivision */
+    int cells_excluded; /**< cells proven empty by interval arithmetic */
+    int proven;         /**< 1: every surface had interval evaluation */
+    int candidates;     /**< start candidates found by Newton in the remaining cells */
+    double cell_size;   /**< the smallest cell (length or parameter units) */
     /** leaf cells not excluded, where no start point was found, and that no
      *  traced curve or recorded point passes near: an intersection may hide
      *  there unfound (a tangential curve, for one); listed in failures */

@@ -21,8 +21,8 @@ ic_point_type ic_trace_point_type(const ic_trace_result *res, const ic_trace_cur
 /** CSV, one row per curve point:
  *  curve,s,x,y,z,u,v,p,q,tx,ty,tz,nx,ny,nz,bx,by,bz,kappa,tau,type;
  *  then one row per special point with the curve and s columns empty. */
-IC_NODISCARD ic_status ic_trace_write_csv(FILE *f, const ic_trace_result *res,
-                                          const ic_pair *pair, ic_error *err);
+IC_NODISCARD ic_status ic_trace_write_csv(FILE *f, const ic_trace_result *res, const ic_pair *pair,
+                                          ic_error *err);
 
 /** VTK legacy ASCII PolyData: one polyline per curve, one vertex per special
  *  point, point data t, n, b (vectors), kappa, tau, s, curve (scalars). */

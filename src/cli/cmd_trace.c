@@ -47,7 +47,8 @@ static cJSON *point_json(const ic_trace_point *p, const ic_trace_curve *c,
     cJSON_AddItemToObject(o, "n", p->frame_defined ? ic_json_vector(p->n, 3) : cJSON_CreateNull());
     cJSON_AddItemToObject(o, "b", p->frame_defined ? ic_json_vector(p->b, 3) : cJSON_CreateNull());
     cJSON_AddItemToObject(o, "kappa", ic_json_number_or_null(p->kappa));
-    cJSON_AddItemToObject(o, "tau", p->frame_defined ? ic_json_number_or_null(p->tau) : cJSON_CreateNull());
+    cJSON_AddItemToObject(o, "tau",
+                          p->frame_defined ? ic_json_number_or_null(p->tau) : cJSON_CreateNull());
     cJSON_AddItemToObject(o, "angle", ic_json_number_or_null(p->angle));
     cJSON_AddStringToObject(o, "type", ic_point_type_name(ic_trace_point_type(res, c, p)));
     return o;
@@ -114,10 +115,14 @@ static int write_result(FILE *f, out_format fmt, const ic_trace_result *res, con
 {
     ic_error err;
     switch (fmt) {
-    case FORMAT_CSV: return ic_trace_write_csv(f, res, pair, &err) == IC_OK ? 0 : -1;
-    case FORMAT_VTK: return ic_trace_write_vtk(f, res, &err) == IC_OK ? 0 : -1;
-    case FORMAT_OBJ: return ic_trace_write_obj(f, res, &err) == IC_OK ? 0 : -1;
-    case FORMAT_JSON: break;
+    case FORMAT_CSV:
+        return ic_trace_write_csv(f, res, pair, &err) == IC_OK ? 0 : -1;
+    case FORMAT_VTK:
+        return ic_trace_write_vtk(f, res, &err) == IC_OK ? 0 : -1;
+    case FORMAT_OBJ:
+        return ic_trace_write_obj(f, res, &err) == IC_OK ? 0 : -1;
+    case FORMAT_JSON:
+        break;
     }
     cJSON *doc = result_json(res, pair);
     char *text = cJSON_Print(doc);
@@ -175,8 +180,10 @@ int ic_cmd_trace(int argc, char **argv)
             if (ic_cli_parse_int(&opt.depth, argv[++i], 1, 9, "--depth") < 0)
                 return EXIT_INPUT;
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            fprintf(stderr, "intercurve trace: unknown option or missing value: %s\n"
-                            "try 'intercurve trace --help'\n", argv[i]);
+            fprintf(stderr,
+                    "intercurve trace: unknown option or missing value: %s\n"
+                    "try 'intercurve trace --help'\n",
+                    argv[i]);
             return EXIT_INPUT;
         } else if (!file)
             file = argv[i];

@@ -101,7 +101,7 @@ static void vtk_array(FILE *f, const ic_trace_result *res, field which)
         for (int k = 0; k < c->npoints; k++) {
             const ic_trace_point *p = &c->points[k];
             const double zero[3] = {0, 0, 0};
-            const double *v = which == FIELD_T   ? p->t
+            const double *v = which == FIELD_T    ? p->t
                               : !p->frame_defined ? zero
                               : which == FIELD_N  ? p->n
                                                   : p->b;
@@ -110,10 +110,11 @@ static void vtk_array(FILE *f, const ic_trace_result *res, field which)
             else if (which == FIELD_CURVE)
                 fprintf(f, "%d\n", i);
             else
-                fprintf(f, "%.17g\n", which == FIELD_KAPPA ? p->kappa
-                                      : which == FIELD_S   ? p->s
-                                      : p->frame_defined   ? p->tau
-                                                           : 0.0);
+                fprintf(f, "%.17g\n",
+                        which == FIELD_KAPPA ? p->kappa
+                        : which == FIELD_S   ? p->s
+                        : p->frame_defined   ? p->tau
+                                             : 0.0);
         }
     }
     for (int i = 0; i < ic_trace_result_num_specials(res); i++)
@@ -185,7 +186,7 @@ ic_status ic_trace_write_obj(FILE *f, const ic_trace_result *res, ic_error *err)
         first += n;
     }
     for (int i = 0; i < ic_trace_result_num_specials(res); i++)
-        fprintf(f, "o point_%d_%s\np %d\n", i, ic_point_type_name(ic_trace_result_special(res, i)->type),
-                first + i);
+        fprintf(f, "o point_%d_%s\np %d\n", i,
+                ic_point_type_name(ic_trace_result_special(res, i)->type), first + i);
     return ferror(f) ? io_failed(err, "OBJ") : IC_OK;
 }

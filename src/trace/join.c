@@ -41,8 +41,10 @@ ic_status ic_trace_join_curves(ic_trace_result *r, double shape_tol)
                             continue;
                         /* outgoing directions: +t at a start, -t at an end */
                         const ic_trace_curve *ca = &r->curves[a], *cb = &r->curves[b];
-                        const ic_trace_point *pa = ea ? &ca->points[ca->npoints - 1] : &ca->points[0];
-                        const ic_trace_point *pb = eb ? &cb->points[cb->npoints - 1] : &cb->points[0];
+                        const ic_trace_point *pa =
+                            ea ? &ca->points[ca->npoints - 1] : &ca->points[0];
+                        const ic_trace_point *pb =
+                            eb ? &cb->points[cb->npoints - 1] : &cb->points[0];
                         double oa[3], ob[3];
                         ic_scale3(oa, pa->t, ea ? -1.0 : 1.0);
                         ic_scale3(ob, pb->t, eb ? -1.0 : 1.0);

@@ -14,23 +14,23 @@
 struct ic_tracer {
     ic_pair *pair;
     ic_trace_options opt;
-    int par[2];             /* which sheets are parametric */
+    int par[2]; /* which sheets are parametric */
     double domain[2][2][2];
     int periodic[2][2];
-    int dir;                /* +1: along t = N_A x N_B, -1: against */
+    int dir; /* +1: along t = N_A x N_B, -1: against */
     ic_local_point cur;
-    ic_local_result res;    /* apparatus at cur, order opt.order */
+    ic_local_result res; /* apparatus at cur, order opt.order */
     double s;
     double start_xyz[3], start_t[3];
     ic_trace_point *pts;
     int n, cap;
     int done;
-    int tcurve;             /* marching along a tangential curve */
+    int tcurve; /* marching along a tangential curve */
 };
 
 const char *ic_trace_event_name(ic_trace_event ev)
 {
-    static const char *const names[] = {"continue", "closed", "left-domain", "left-box",
+    static const char *const names[] = {"continue",   "closed", "left-domain", "left-box",
                                         "tangential", "budget", "failed"};
     return ev >= IC_TRACE_CONTINUE && ev <= IC_TRACE_FAILED ? names[ev] : "unknown";
 }
@@ -49,8 +49,7 @@ void ic_trace_defaults(ic_trace_options *opt)
     ic_local_defaults(&opt->local);
 }
 
-ic_status ic_tracer_new(ic_tracer **out, ic_pair *pair, const ic_trace_options *opt,
-                        ic_error *err)
+ic_status ic_tracer_new(ic_tracer **out, ic_pair *pair, const ic_trace_options *opt, ic_error *err)
 {
     *out = NULL;
     if (!pair || !opt || opt->order < 3 || opt->order > 12 || !(opt->tol > 0) ||
@@ -147,8 +146,7 @@ static ic_status apparatus(ic_tracer *tr, ic_local_result *res, const ic_local_p
     return st;
 }
 
-ic_status ic_tracer_start(ic_tracer *tr, const ic_local_point *start, int direction,
-                          ic_error *err)
+ic_status ic_tracer_start(ic_tracer *tr, const ic_local_point *start, int direction, ic_error *err)
 {
     tr->n = 0;
     tr->s = 0.0;
@@ -217,8 +215,7 @@ static double coordinate(const ic_local_point *pt, const boundary *b)
     return b->sheet < 0 ? pt->xyz[b->index] : pt->params[b->sheet][b->index];
 }
 
-static int outside(const ic_tracer *tr, const ic_local_point *pt, ic_trace_event *ev,
-                   boundary *b)
+static int outside(const ic_tracer *tr, const ic_local_point *pt, ic_trace_event *ev, boundary *b)
 {
     for (int s = 0; s < 2; s++)
         if (tr->par[s])

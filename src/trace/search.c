@@ -199,8 +199,9 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_can
     ic_interval probe_in[4], probe_out[3];
     for (int k = 0; k < 4; k++)
         probe_in[k] = (ic_interval){k < dim ? lo[k] : 0, k < dim ? hi[k] : 0};
-    rep->proven = ic_surface_eval_interval(S[0], probe_out, probe_in, NULL) == IC_OK &&
-                  ic_surface_eval_interval(S[1], probe_out, probe_in + (both ? 2 : 0), NULL) == IC_OK;
+    rep->proven =
+        ic_surface_eval_interval(S[0], probe_out, probe_in, NULL) == IC_OK &&
+        ic_surface_eval_interval(S[1], probe_out, probe_in + (both ? 2 : 0), NULL) == IC_OK;
     /* four parameters: one level less (16 children a split) */
     const int full = both ? opt->depth - 1 : opt->depth;
     const int depth = rep->proven ? full : (full < 4 ? full : 4);
@@ -261,10 +262,10 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_can
                         ic_surface_eval_interval(S[I], &fb, xyz, NULL) == IC_OK &&
                         excludes_zero(fb);
             else
-                empty = (ic_surface_eval_interval(S[0], &fa, box, NULL) == IC_OK &&
-                         excludes_zero(fa)) ||
-                        (ic_surface_eval_interval(S[1], &fb, box, NULL) == IC_OK &&
-                         excludes_zero(fb));
+                empty =
+                    (ic_surface_eval_interval(S[0], &fa, box, NULL) == IC_OK &&
+                     excludes_zero(fa)) ||
+                    (ic_surface_eval_interval(S[1], &fb, box, NULL) == IC_OK && excludes_zero(fb));
             if (empty) {
                 rep->cells_excluded++;
                 continue;
@@ -306,7 +307,8 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_can
             ok = converged = newton_mixed(S[P], S[I], sp2, sp3, uv, x) == 0;
             for (int k = 0; ok && k < 2; k++) {
                 const double w = c.hi[k] - c.lo[k];
-                ok = uv[k] >= c.lo[k] - w && uv[k] <= c.hi[k] + w && uv[k] >= lo[k] && uv[k] <= hi[k];
+                ok = uv[k] >= c.lo[k] - w && uv[k] <= c.hi[k] + w && uv[k] >= lo[k] &&
+                     uv[k] <= hi[k];
             }
             cand.params[P][0] = uv[0], cand.params[P][1] = uv[1];
         } else {
@@ -337,7 +339,8 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_can
                 const int sheet = both ? 0 : P;
                 u.params[sheet][0] = uvc[0], u.params[sheet][1] = uvc[1];
                 if (both)
-                    u.params[1][0] = 0.5 * (c.lo[2] + c.hi[2]), u.params[1][1] = 0.5 * (c.lo[3] + c.hi[3]);
+                    u.params[1][0] = 0.5 * (c.lo[2] + c.hi[2]),
+                    u.params[1][1] = 0.5 * (c.lo[3] + c.hi[3]);
             } else {
                 double half[3];
                 for (int k = 0; k < 3; k++) {

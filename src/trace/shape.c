@@ -8,8 +8,8 @@
 
 const char *ic_shape_name(ic_shape shape)
 {
-    static const char *const names[] = {"general", "line", "circle", "planar", "circular-helix",
-                                        "helix"};
+    static const char *const names[] = {"general", "line",           "circle",
+                                        "planar",  "circular-helix", "helix"};
     return shape >= IC_SHAPE_GENERAL && shape <= IC_SHAPE_HELIX ? names[shape] : "unknown";
 }
 
@@ -20,9 +20,9 @@ const char *ic_shape_name(ic_shape shape)
 #define SHAPE_MIN_ANGLE 1e-2
 
 /* Seed 001 corollaries 3.1-3.5 on the sampled kappa and tau, relative to the
- * largest curvature (lines: to the total turning kappa L). The shape; along a transversal curve the points near tangency are skipped
- * (their torsion is unreliable), along a tangential curve none is (its
- * apparatus comes from the height-difference method). */
+ * largest curvature (lines: to the total turning kappa L). The shape; along a transversal curve the
+ * points near tangency are skipped (their torsion is unreliable), along a tangential curve none is
+ * (its apparatus comes from the height-difference method). */
 ic_shape ic_trace_shape(const ic_trace_point *p, int n, double length, double tol, int tangential)
 {
     double kmax = 0, kmin = INFINITY, tmax = -INFINITY, tmin = INFINITY, rmax = -INFINITY,

@@ -8,6 +8,23 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* Traces the curve through pt; a failure is listed in the report (then
+ * IC_ERR_UNABLE), only running out of memory stops the trace. */
+static ic_status start_curve(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
+                             const ic_local_point *pt, const ic_trace_options *opt,
+                             const char *what)
+{
+    ic_trace_point *pts;
+    int n;
+    ic_error e;
+    const ic_status st = ic_trace_both_ways(r, tr, pair, pt, opt, &pts, &n, &e);
+    if (st == IC_OK || st == IC_ERR_NOMEM)
+        return st;
+    ic_trace_failure(&r->report, "%s through (%.6g, %.6g, %.6g): %s", what, pt->xyz[0], pt->xyz[1],
+                     pt->xyz[2], e.message);
+    return IC_ERR_UNABLE;
+}
+
 /* Whether a traced curve or a recorded point passes within the cell's radius. */
 int ic_trace_found_near(const ic_trace_result *r, const ic_unresolved *u)
 {
@@ -34,8 +51,8 @@ int ic_trace_found_near(const ic_trace_result *r, const ic_unresolved *u)
  * approximate when keep_unrefined. A point of a tangential curve starts the
  * trace of that curve instead (*curve: its index, else -1). */
 ic_status ic_trace_record_tangential(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
-                                   const ic_local_point *near, double reach, int keep_unrefined,
-                                   const ic_trace_options *opt, int *curve)
+                                     const ic_local_point *near, double reach, int keep_unrefined,
+                                     const ic_trace_options *opt, int *curve)
 {
     *curve = -1;
     ic_local_point pt;
@@ -51,17 +68,9 @@ ic_status ic_trace_record_tangential(ic_trace_result *r, ic_tracer *tr, ic_pair 
     if (!approximate &&
         ic_local_apparatus(pair, &res, &pt, opt->order, IC_METHOD_JET, &lo, NULL) == IC_OK &&
         res.type == IC_POINT_TANGENTIAL_CURVE && res.nbranches >= 1) {
-        ic_trace_point *pts;
-        int n;
-        ic_error e2;
-        const ic_status st = ic_trace_both_ways(r, tr, pair, &pt, opt, &pts, &n, &e2);
-        if (st == IC_ERR_NOMEM)
-            return st;
-        if (st != IC_OK) {
-            ic_trace_failure(&r->report, "the tangential curve through (%.6g, %.6g, %.6g): %s", pt.xyz[0],
-                    pt.xyz[1], pt.xyz[2], e2.message);
-            return IC_OK;
-        }
+        const ic_status st = start_curve(r, tr, pair, &pt, opt, "the tangential curve");
+        if (st != IC_OK)
+            return st == IC_ERR_NOMEM ? st : IC_OK;
         *curve = r->ncurves - 1;
         ic_trace_curve *c = &r->curves[*curve];
         c->tangential = 1;
@@ -78,7 +87,8 @@ static double distance_to_curves(const ic_trace_result *r, const double *x)
     for (int c = 0; c < r->ncurves; c++) {
         const ic_trace_curve *cv = &r->curves[c];
         for (int k = 0; k + 1 < cv->npoints; k++)
-            best = fmin(best, ic_trace_segment_distance(x, cv->points[k].xyz, cv->points[k + 1].xyz));
+            best =
+                fmin(best, ic_trace_segment_distance(x, cv->points[k].xyz, cv->points[k + 1].xyz));
     }
     return best;
 }
@@ -88,7 +98,7 @@ static double distance_to_curves(const ic_trace_result *r, const double *x)
  * order), in both directions, that no traced curve passes near, starts a
  * curve, which then ends at the singular point and is joined through it. */
 ic_status ic_trace_complete_branches(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
-                                   const ic_trace_options *opt)
+                                     const ic_trace_options *opt)
 {
     ic_local_options lo = opt->local;
     for (int k = 0; k < r->nspecials; k++) {
@@ -119,15 +129,9 @@ ic_status ic_trace_complete_branches(ic_trace_result *r, ic_tracer *tr, ic_pair 
                 ic_axpy3(e, pt.xyz, -1.0, at.xyz);
                 if (ic_norm3(d) > 0.25 * delta || ic_norm3(e) < 0.5 * delta)
                     continue; /* the locator went elsewhere */
-                ic_trace_point *pts;
-                int n;
-                ic_error e2;
-                const ic_status st = ic_trace_both_ways(r, tr, pair, &pt, opt, &pts, &n, &e2);
-                if (st == IC_ERR_NOMEM)
-                    return st;
-                if (st != IC_OK)
-                    ic_trace_failure(&r->report, "branch %d out of (%.6g, %.6g, %.6g): %s", b, at.xyz[0],
-                            at.xyz[1], at.xyz[2], e2.message);
+                if (start_curve(r, tr, pair, &pt, opt, "a branch out of a singular point") ==
+                    IC_ERR_NOMEM)
+                    return IC_ERR_NOMEM;
             }
     }
     return IC_OK;
@@ -136,7 +140,7 @@ ic_status ic_trace_complete_branches(ic_trace_result *r, ic_tracer *tr, ic_pair 
 /* Looks for a tangential point in an unresolved cell: this is how isolated
  * contacts, which have no curve to lead to them, are found. */
 ic_status ic_trace_tangential_in_cell(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
-                                    const ic_unresolved *u, const ic_trace_options *opt)
+                                      const ic_unresolved *u, const ic_trace_options *opt)
 {
     int curve;
     ic_local_point near;

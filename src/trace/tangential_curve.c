@@ -35,5 +35,5 @@ void ic_tcurve_flip(ic_branch *br)
     for (int s = 0; s < 2; s++)
         for (int j = 1; j <= br->param_order; j += 2)
             br->param_derivs[s][j - 1][0] = -br->param_derivs[s][j - 1][0],
-            br->param_derivs[s][j - 1][1] = -br->param_derivs[s][j - 1][1];
+                                    br->param_derivs[s][j - 1][1] = -br->param_derivs[s][j - 1][1];
 }

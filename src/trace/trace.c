@@ -43,8 +43,9 @@ void ic_trace_cover(ic_candidate *c, int n, const ic_trace_point *pts, int np, d
         if (c[i].covered)
             continue;
         for (int k = 0; k + 1 < np || (np == 1 && k == 0); k++) {
-            const double d = np == 1 ? ic_trace_segment_distance(c[i].xyz, pts[0].xyz, pts[0].xyz)
-                                     : ic_trace_segment_distance(c[i].xyz, pts[k].xyz, pts[k + 1].xyz);
+            const double d = np == 1
+                                 ? ic_trace_segment_distance(c[i].xyz, pts[0].xyz, pts[0].xyz)
+                                 : ic_trace_segment_distance(c[i].xyz, pts[k].xyz, pts[k + 1].xyz);
             if (d <= radius) {
                 c[i].covered = 1;
                 break;
@@ -54,7 +55,7 @@ void ic_trace_cover(ic_candidate *c, int n, const ic_trace_point *pts, int np, d
 }
 
 ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local_point *pt,
-                             int approximate, const ic_trace_options *opt, int *index)
+                               int approximate, const ic_trace_options *opt, int *index)
 {
     int dummy;
     if (!index)
@@ -194,11 +195,11 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
     if (st != IC_OK && e1 != IC_TRACE_FAILED)
         return st;
     if (st != IC_OK)
-        ic_trace_failure(&r->report, "curve from (%g, %g, %g): %s", pt->xyz[0], pt->xyz[1], pt->xyz[2],
-                err ? err->message : "failed");
+        ic_trace_failure(&r->report, "curve from (%g, %g, %g): %s", pt->xyz[0], pt->xyz[1],
+                         pt->xyz[2], err ? err->message : "failed");
     if (e1 == IC_TRACE_BUDGET)
-        ic_trace_failure(&r->report, "curve from (%g, %g, %g): stopped at the budget of %d points", pt->xyz[0],
-                pt->xyz[1], pt->xyz[2], opt->max_points);
+        ic_trace_failure(&r->report, "curve from (%g, %g, %g): stopped at the budget of %d points",
+                         pt->xyz[0], pt->xyz[1], pt->xyz[2], opt->max_points);
     int n1 = ic_tracer_num_points(tr);
     ic_trace_point *fwd = malloc((size_t)(n1 + 1) * sizeof *fwd);
     if (!fwd)
@@ -216,11 +217,12 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
     if (st == IC_OK)
         st = ic_tracer_run(tr, &e0, err);
     if (st != IC_OK)
-        ic_trace_failure(&r->report, "curve from (%g, %g, %g), backwards: %s", pt->xyz[0], pt->xyz[1],
-                pt->xyz[2], err ? err->message : "failed");
+        ic_trace_failure(&r->report, "curve from (%g, %g, %g), backwards: %s", pt->xyz[0],
+                         pt->xyz[1], pt->xyz[2], err ? err->message : "failed");
     if (e0 == IC_TRACE_BUDGET)
-        ic_trace_failure(&r->report, "curve from (%g, %g, %g), backwards: stopped at the budget of %d points",
-                pt->xyz[0], pt->xyz[1], pt->xyz[2], opt->max_points);
+        ic_trace_failure(&r->report,
+                         "curve from (%g, %g, %g), backwards: stopped at the budget of %d points",
+                         pt->xyz[0], pt->xyz[1], pt->xyz[2], opt->max_points);
     int n0 = ic_tracer_num_points(tr);
     ic_trace_point *back = malloc((size_t)(n0 + 1) * sizeof *back);
     if (!back) {
@@ -228,7 +230,8 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
     }
     memcpy(back, ic_tracer_point(tr, 0), (size_t)n0 * sizeof *back);
-    if (e0 == IC_TRACE_TANGENTIAL && (at0 = finish_end(r, pair, opt, &back[n0 - 1], &back[n0])) >= 0)
+    if (e0 == IC_TRACE_TANGENTIAL &&
+        (at0 = finish_end(r, pair, opt, &back[n0 - 1], &back[n0])) >= 0)
         n0++;
     ic_trace_point *all = malloc((size_t)(n0 + n1 - 1) * sizeof *all);
     if (!all) {
@@ -256,8 +259,7 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
     return add_curve(r, all, n0 + n1 - 1, 0, e0, e1, opt->shape_tol, at0, at1);
 }
 
-ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options *opt,
-                   ic_error *err)
+ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options *opt, ic_error *err)
 {
     *out = NULL;
     ic_trace_result *r = calloc(1, sizeof *r);
@@ -287,7 +289,7 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
         if ((np ? ic_local_locate_params(pair, &pt, flat, np, &lo, &e2)
                 : ic_local_locate(pair, &pt, cand[i].xyz, &lo, &e2)) != IC_OK) {
             ic_trace_failure(&r->report, "start candidate (%g, %g, %g): %s", cand[i].xyz[0],
-                    cand[i].xyz[1], cand[i].xyz[2], e2.message);
+                             cand[i].xyz[1], cand[i].xyz[2], e2.message);
             cand[i].covered = 1;
             continue;
         }
@@ -297,7 +299,8 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
             /* a tangential candidate: recorded (or its tangential curve
              * traced), and covered around it */
             int curve;
-            st = ic_trace_record_tangential(r, tr, pair, &pt, 2 * r->report.cell_size + 1e-6, 1, opt, &curve);
+            st = ic_trace_record_tangential(r, tr, pair, &pt, 2 * r->report.cell_size + 1e-6, 1,
+                                            opt, &curve);
             ic_trace_point one;
             memset(&one, 0, sizeof one);
             memcpy(one.xyz, pt.xyz, sizeof one.xyz);
@@ -328,10 +331,11 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
             r->report.unproven_cells++;
         } else if (!near) {
             if (r->report.uncovered_cells == 0 || r->report.uncovered_cells % 1000 == 0)
-                ic_trace_failure(&r->report,
-                        "a cell around (%.6g, %.6g, %.6g) may hold an intersection that was not "
-                        "found (not excluded, no start point converged there)",
-                        unres[i].xyz[0], unres[i].xyz[1], unres[i].xyz[2]);
+                ic_trace_failure(
+                    &r->report,
+                    "a cell around (%.6g, %.6g, %.6g) may hold an intersection that was not "
+                    "found (not excluded, no start point converged there)",
+                    unres[i].xyz[0], unres[i].xyz[1], unres[i].xyz[2]);
             r->report.uncovered_cells++;
         }
     }

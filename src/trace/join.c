@@ -23,77 +23,147 @@ static void reverse_curve(ic_trace_point *p, int n)
     }
 }
 
+/* Outgoing direction at end e of curve c (into the curve): +t at its start,
+ * -t at its end; *p the end point. */
+static void outgoing(const ic_trace_curve *c, int e, double *o, const ic_trace_point **p)
+{
+    *p = e ? &c->points[c->npoints - 1] : &c->points[0];
+    ic_scale3(o, (*p)->t, e ? -1.0 : 1.0);
+}
+
+/* Joins end ea of curve a to end eb of curve b: the two end points are the
+ * same point (gap 0) or gap apart along the curve (then both are kept).
+ * A curve joined to itself closes. */
+static ic_status merge(ic_trace_result *r, int a, int ea, int b, int eb, double gap)
+{
+    ic_trace_curve *ca = &r->curves[a], *cb = &r->curves[b];
+    ic_trace_point *A = r->storage[a];
+    const int na = ca->npoints, shared = gap == 0.0;
+    if (b == a) { /* both ends of one curve: it closes (the start repeated last) */
+        if (!shared) {
+            ic_trace_point *J = realloc(A, (size_t)(na + 1) * sizeof *J);
+            if (!J)
+                return IC_ERR_NOMEM;
+            J[na] = J[0];
+            J[na].s = J[na - 1].s + gap;
+            r->storage[a] = J;
+            ca->points = J;
+            ca->npoints = na + 1;
+        }
+        ca->closed = 1;
+        ca->ends[0] = ca->ends[1] = IC_TRACE_CLOSED;
+        r->at[a][0] = r->at[a][1] = -1;
+        return IC_OK;
+    }
+    /* a's joining end last, b's joining end first */
+    if (ea == 0)
+        reverse_curve(A, na);
+    ic_trace_point *B = r->storage[b];
+    const int nb = cb->npoints;
+    if (eb == 1)
+        reverse_curve(B, nb);
+    const int n = na + nb - shared;
+    ic_trace_point *J = realloc(A, (size_t)n * sizeof *J);
+    if (!J)
+        return IC_ERR_NOMEM;
+    const double shift = J[na - 1].s + gap - B[0].s;
+    for (int i = shared; i < nb; i++) {
+        J[na - shared + i] = B[i];
+        J[na - shared + i].s += shift;
+    }
+    const int at0 = r->at[a][ea == 0 ? 1 : 0], at1 = r->at[b][eb == 1 ? 0 : 1];
+    const ic_trace_event e0 = ca->ends[ea == 0 ? 1 : 0];
+    const ic_trace_event e1 = cb->ends[eb == 1 ? 0 : 1];
+    free(B);
+    /* b leaves the list; a becomes the joined curve */
+    r->storage[a] = J;
+    r->curves[b] = r->curves[r->ncurves - 1];
+    r->storage[b] = r->storage[r->ncurves - 1];
+    r->at[b][0] = r->at[r->ncurves - 1][0];
+    r->at[b][1] = r->at[r->ncurves - 1][1];
+    const int ai = a == r->ncurves - 1 ? b : a;
+    r->ncurves--;
+    ic_trace_curve *c = &r->curves[ai];
+    r->storage[ai] = J;
+    c->points = J;
+    c->npoints = n;
+    c->ends[0] = e0;
+    c->ends[1] = e1;
+    r->at[ai][0] = at0;
+    r->at[ai][1] = at1;
+    return IC_OK;
+}
+
+/* The arc length across a gap from point p (travelling along t0) to q
+ * (travelling along t1): the trapezoid rule with its end correction,
+ * q - p = L (t0 + t1)/2 - L^2 (k1 - k0)/12 + O(L^5), solved for L by
+ * fixed-point iteration (k the curvature vectors kappa n). */
+static double gap_length(const ic_trace_point *p, const double *t0, const ic_trace_point *q,
+                         const double *t1)
+{
+    double d[3], k[3] = {0, 0, 0}, tm[3];
+    ic_axpy3(d, q->xyz, -1.0, p->xyz);
+    if (p->frame_defined)
+        ic_axpy3(k, k, -p->kappa, p->n);
+    if (q->frame_defined)
+        ic_axpy3(k, k, q->kappa, q->n);
+    ic_axpy3(tm, t0, 1.0, t1);
+    const double half = 0.5 * ic_norm3(tm);
+    double L = ic_norm3(d);
+    for (int it = 0; it < 8; it++) {
+        double v[3];
+        ic_axpy3(v, d, L * L / 12, k);
+        L = ic_norm3(v) / half;
+    }
+    return L;
+}
+
 /* Joins curves through the tangential points at their ends where a branch
- * continues smoothly: the outgoing directions of the two ends are opposite.
- * A curve joined to itself is closed. */
-ic_status ic_trace_join_curves(ic_trace_result *r, double shape_tol)
+ * continues smoothly (the outgoing directions of the two ends opposite), and
+ * across the small gaps a curve leaves where it passes through a degenerate
+ * point of a parametrization (a sphere patch's pole: both ends left the
+ * domain there, meet within max_gap, and continue each other). A curve
+ * joined to itself is closed. */
+ic_status ic_trace_join_curves(ic_trace_result *r, double shape_tol, double max_gap)
 {
     for (int changed = 1; changed;) {
         changed = 0;
         for (int a = 0; a < r->ncurves && !changed; a++)
             for (int ea = 0; ea < 2 && !changed; ea++) {
                 const int k = r->at[a][ea];
-                if (k < 0 || r->curves[a].closed)
+                const int gap_end = k < 0 && r->curves[a].ends[ea] == IC_TRACE_LEFT_DOMAIN;
+                if ((k < 0 && !gap_end) || r->curves[a].closed)
                     continue;
                 for (int b = a; b < r->ncurves && !changed; b++)
                     for (int eb = 0; eb < 2 && !changed; eb++) {
-                        if ((b == a && eb == ea) || r->at[b][eb] != k)
+                        if (b == a && eb == ea)
                             continue;
-                        /* outgoing directions: +t at a start, -t at an end */
-                        const ic_trace_curve *ca = &r->curves[a], *cb = &r->curves[b];
-                        const ic_trace_point *pa =
-                            ea ? &ca->points[ca->npoints - 1] : &ca->points[0];
-                        const ic_trace_point *pb =
-                            eb ? &cb->points[cb->npoints - 1] : &cb->points[0];
+                        const ic_trace_point *pa, *pb;
                         double oa[3], ob[3];
-                        ic_scale3(oa, pa->t, ea ? -1.0 : 1.0);
-                        ic_scale3(ob, pb->t, eb ? -1.0 : 1.0);
-                        if (ic_dot3(oa, ob) > -1 + 1e-6)
-                            continue;
-                        ic_trace_point *A = r->storage[a];
-                        int na = ca->npoints;
-                        if (b == a) { /* both ends of one curve: it closes */
-                            r->curves[a].closed = 1;
-                            r->curves[a].ends[0] = r->curves[a].ends[1] = IC_TRACE_CLOSED;
-                            r->at[a][0] = r->at[a][1] = -1;
-                            changed = 1;
-                            continue;
+                        outgoing(&r->curves[a], ea, oa, &pa);
+                        outgoing(&r->curves[b], eb, ob, &pb);
+                        double gap = 0.0;
+                        if (!gap_end) {
+                            if (r->at[b][eb] != k || ic_dot3(oa, ob) > -1 + 1e-6)
+                                continue;
+                        } else {
+                            if (r->at[b][eb] >= 0 ||
+                                r->curves[b].ends[eb] != IC_TRACE_LEFT_DOMAIN)
+                                continue;
+                            /* across the gap: from pa along -oa to pb, then along ob */
+                            double d[3], t0[3];
+                            ic_axpy3(d, pb->xyz, -1.0, pa->xyz);
+                            ic_scale3(t0, oa, -1.0);
+                            const double dist = ic_norm3(d);
+                            if (dist > max_gap || ic_dot3(oa, ob) > -cos(fmin(0.5, 4 * dist)) ||
+                                ic_dot3(d, t0) < 0.9 * dist)
+                                continue;
+                            gap = gap_length(pa, t0, pb, ob);
+                            if (!(gap > 0))
+                                continue;
                         }
-                        /* a's joining end last, b's joining end first */
-                        if (ea == 0)
-                            reverse_curve(A, na);
-                        ic_trace_point *B = r->storage[b];
-                        const int nb = cb->npoints;
-                        if (eb == 1)
-                            reverse_curve(B, nb);
-                        ic_trace_point *J = realloc(A, (size_t)(na + nb - 1) * sizeof *J);
-                        if (!J)
+                        if (merge(r, a, ea, b, eb, gap) != IC_OK)
                             return IC_ERR_NOMEM;
-                        const double shift = J[na - 1].s - B[0].s;
-                        for (int i = 1; i < nb; i++) {
-                            J[na - 1 + i] = B[i];
-                            J[na - 1 + i].s += shift;
-                        }
-                        const int at0 = r->at[a][ea == 0 ? 1 : 0], at1 = r->at[b][eb == 1 ? 0 : 1];
-                        const ic_trace_event e0 = ca->ends[ea == 0 ? 1 : 0];
-                        const ic_trace_event e1 = cb->ends[eb == 1 ? 0 : 1];
-                        free(B);
-                        /* b leaves the list; a becomes the joined curve */
-                        r->storage[a] = J;
-                        r->curves[b] = r->curves[r->ncurves - 1];
-                        r->storage[b] = r->storage[r->ncurves - 1];
-                        r->at[b][0] = r->at[r->ncurves - 1][0];
-                        r->at[b][1] = r->at[r->ncurves - 1][1];
-                        const int ai = a == r->ncurves - 1 ? b : a;
-                        r->ncurves--;
-                        ic_trace_curve *c = &r->curves[ai];
-                        r->storage[ai] = J;
-                        c->points = J;
-                        c->npoints = na + nb - 1;
-                        c->ends[0] = e0;
-                        c->ends[1] = e1;
-                        r->at[ai][0] = at0;
-                        r->at[ai][1] = at1;
                         changed = 1;
                     }
             }

@@ -341,7 +341,7 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
     }
     if (st == IC_OK)
         ic_trace_drop_duplicates(r, radius);
-    if (st == IC_OK && ic_trace_join_curves(r, opt->shape_tol) != IC_OK)
+    if (st == IC_OK && ic_trace_join_curves(r, opt->shape_tol, 50 * opt->chord) != IC_OK)
         st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory joining curves");
     ic_tracer_free(tr);
     free(cand);

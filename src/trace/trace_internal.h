@@ -57,7 +57,9 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
 ic_shape ic_trace_shape(const ic_trace_point *p, int n, double length, double tol, int tangential);
 
 /* join.c */
-ic_status ic_trace_join_curves(ic_trace_result *r, double shape_tol);
+/* max_gap: the largest gap bridged where a curve passes a degenerate point
+ * of a parametrization */
+ic_status ic_trace_join_curves(ic_trace_result *r, double shape_tol, double max_gap);
 void ic_trace_drop_duplicates(ic_trace_result *r, double radius);
 
 /* singular.c */

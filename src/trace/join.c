@@ -94,6 +94,16 @@ static ic_status merge(ic_trace_result *r, int a, int ea, int b, int eb, double 
     return IC_OK;
 }
 
+/* The length of the last step at end e of curve c. */
+static double last_step(const ic_trace_curve *c, int e)
+{
+    if (c->npoints < 2)
+        return 0.0;
+    const ic_trace_point *p = e ? &c->points[c->npoints - 1] : &c->points[0];
+    const ic_trace_point *q = e ? &c->points[c->npoints - 2] : &c->points[1];
+    return fabs(p->s - q->s);
+}
+
 /* The arc length across a gap from point p (travelling along t0) to q
  * (travelling along t1): the trapezoid rule with its end correction,
  * q - p = L (t0 + t1)/2 - L^2 (k1 - k0)/12 + O(L^5), solved for L by
@@ -122,7 +132,8 @@ static double gap_length(const ic_trace_point *p, const double *t0, const ic_tra
  * continues smoothly (the outgoing directions of the two ends opposite), and
  * across the small gaps a curve leaves where it passes through a degenerate
  * point of a parametrization (a sphere patch's pole: both ends left the
- * domain there, meet within max_gap, and continue each other). A curve
+ * domain there, meet within max_gap or two steps each side, and continue
+ * each other). A curve
  * joined to itself is closed. */
 ic_status ic_trace_join_curves(ic_trace_result *r, double shape_tol, double max_gap)
 {
@@ -155,7 +166,12 @@ ic_status ic_trace_join_curves(ic_trace_result *r, double shape_tol, double max_
                             ic_axpy3(d, pb->xyz, -1.0, pa->xyz);
                             ic_scale3(t0, oa, -1.0);
                             const double dist = ic_norm3(d);
-                            if (dist > max_gap || ic_dot3(oa, ob) > -cos(fmin(0.5, 4 * dist)) ||
+                            /* up to about two steps each side: the last steps
+                             * before the degenerate point */
+                            const double reach =
+                                fmax(max_gap, 2 * (last_step(&r->curves[a], ea) +
+                                                   last_step(&r->curves[b], eb)));
+                            if (dist > reach || ic_dot3(oa, ob) > -cos(fmin(0.5, 4 * dist)) ||
                                 ic_dot3(d, t0) < 0.9 * dist)
                                 continue;
                             gap = gap_length(pa, t0, pb, ob);

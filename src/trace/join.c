@@ -108,8 +108,8 @@ static double last_step(const ic_trace_curve *c, int e)
  * (travelling along t1): the trapezoid rule with its end correction,
  * q - p = L (t0 + t1)/2 - L^2 (k1 - k0)/12 + O(L^5), solved for L by
  * fixed-point iteration (k the curvature vectors kappa n). */
-static double gap_length(const ic_trace_point *p, const double *t0, const ic_trace_point *q,
-                         const double *t1)
+double ic_trace_gap_length(const ic_trace_point *p, const double *t0, const ic_trace_point *q,
+                           const double *t1)
 {
     double d[3], k[3] = {0, 0, 0}, tm[3];
     ic_axpy3(d, q->xyz, -1.0, p->xyz);
@@ -174,7 +174,7 @@ ic_status ic_trace_join_curves(ic_trace_result *r, double shape_tol, double max_
                             if (dist > reach || ic_dot3(oa, ob) > -cos(fmin(0.5, 4 * dist)) ||
                                 ic_dot3(d, t0) < 0.9 * dist)
                                 continue;
-                            gap = gap_length(pa, t0, pb, ob);
+                            gap = ic_trace_gap_length(pa, t0, pb, ob);
                             if (!(gap > 0))
                                 continue;
                         }

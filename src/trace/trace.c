@@ -148,6 +148,9 @@ static int finish_end(ic_trace_result *r, ic_pair *pair, const ic_trace_options 
     memcpy(near.xyz, last->xyz, sizeof near.xyz);
     memcpy(near.params, last->params, sizeof near.params);
     int index = -1;
+    /* within 1e-3: the march stops about 2e-5 before a branch point; before a
+     * degenerate point (a tacnode, about 2e-3 away, where the locator is
+     * ill-conditioned along the curve) the end stays approximate */
     if (ic_local_locate_tangential(pair, &P, &near, 1e-3, &opt->local, NULL) != IC_OK) {
         ic_trace_add_special(r, pair, &near, 1, opt, NULL);
         return -1;
@@ -179,6 +182,8 @@ static int finish_end(ic_trace_result *r, ic_pair *pair, const ic_trace_options 
         extra->kappa = br->kappa;
         extra->tau = br->tau;
         extra->frame_defined = br->frame_defined;
+        /* the arc length of the last step, end-corrected (join.c) */
+        extra->s = last->s + ic_trace_gap_length(last, last->t, extra, extra->t);
     }
     return index;
 }

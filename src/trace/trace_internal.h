@@ -56,7 +56,9 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
 /* shape.c */
 ic_shape ic_trace_shape(const ic_trace_point *p, int n, double length, double tol, int tangential);
 
-/* join.c */
+/* join.c; the arc length from p (travelling along t0) to q (along t1) */
+double ic_trace_gap_length(const ic_trace_point *p, const double *t0, const ic_trace_point *q,
+                           const double *t1);
 /* max_gap: the largest gap bridged where a curve passes a degenerate point
  * of a parametrization */
 ic_status ic_trace_join_curves(ic_trace_result *r, double shape_tol, double max_gap);

@@ -419,7 +419,7 @@ static void test_whole_self(void)
  * which the curve passes through: the arcs end short of each pole, where
  * they leave the domain, and are joined across the gaps into the one closed
  * figure-eight (issue 5: Viviani in every pairing). */
-static void test_whole_parametric(void)
+static void test_whole_parametric(int implicit_cylinder)
 {
     const char *cyl[3] = {"1 + sin(v)", "cos(v)", "u"};
     const char *sph[3] = {"2*cos(u)*cos(v)", "2*sin(u)*cos(v)", "2*sin(v)"};
@@ -432,14 +432,17 @@ static void test_whole_parametric(void)
     ic_trace_options opt;
     ic_trace_defaults(&opt);
     ic_error err;
-    if (ic_surface_new_parametric(&A, cyl, NULL, NULL, 0, NULL, NULL) ||
+    /* the cylinder as a parametric patch, or implicit (the fourth pairing) */
+    if ((implicit_cylinder ? ic_surface_new_implicit(&A, "(x - 1)^2 + y^2 - 1", NULL, 0, NULL)
+                           : ic_surface_new_parametric(&A, cyl, NULL, NULL, 0, NULL, NULL) ||
+                                 ic_surface_set_domain(A, dc, pc, NULL)) ||
         ic_surface_new_parametric(&B, sph, NULL, NULL, 0, NULL, NULL) ||
-        ic_surface_set_domain(A, dc, pc, NULL) || ic_surface_set_domain(B, ds, ps, NULL) ||
-        ic_pair_new(&pair, A, B, NULL))
+        ic_surface_set_domain(B, ds, ps, NULL) || ic_pair_new(&pair, A, B, NULL))
         goto done;
     CHECK(ic_trace(&r, pair, &opt, &err) == IC_OK, "parametric Viviani: %s", err.message);
     CHECK(ic_trace_result_num_curves(r) == 1 && ic_trace_result_num_specials(r) == 1,
-          "parametric Viviani: one curve (not %d), one branch point", ic_trace_result_num_curves(r));
+          "parametric Viviani: one curve (not %d), one branch point",
+          ic_trace_result_num_curves(r));
     if (r && ic_trace_result_num_curves(r) == 1) {
         const ic_trace_curve *c = ic_trace_result_curve(r, 0);
         double worst = 0;
@@ -455,9 +458,10 @@ static void test_whole_parametric(void)
         CHECK(worst <= 1e-9 && c->closed && fabs(c->length - eight) <= 1e-9 * eight,
               "parametric Viviani: closed %d, length %.17g of %.17g, off %g", c->closed, c->length,
               eight, worst);
-        printf("parametric Viviani: one closed figure-eight, %d points, off %.2g, length error "
-               "%.2g\n",
-               c->npoints, worst, fabs(c->length - eight) / eight);
+        printf("Viviani, %s cylinder and parametric sphere: one closed figure-eight, %d points, "
+               "off %.2g, length error %.2g\n",
+               implicit_cylinder ? "implicit" : "parametric", c->npoints, worst,
+               fabs(c->length - eight) / eight);
     }
 done:
     ic_trace_result_free(r);
@@ -641,7 +645,8 @@ int main(void)
     test_isolated_contacts();
     test_tangential_parametric();
     test_branch_completion();
-    test_whole_parametric();
+    test_whole_parametric(0);
+    test_whole_parametric(1);
     test_whole();
     return harness_finish("test_trace");
 }

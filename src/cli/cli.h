@@ -28,5 +28,7 @@ cJSON *ic_json_vector(const double *v, int n);
 cJSON *ic_json_number_or_null(double x);
 /* Prints the document to stdout and frees it; 0 on success. */
 int ic_json_print(cJSON *doc);
+/* Writes doc (then freed) to f; 0 on success. */
+int ic_json_write(FILE *f, cJSON *doc);
 
 #endif

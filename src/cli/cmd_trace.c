@@ -124,12 +124,7 @@ static int write_result(FILE *f, out_format fmt, const ic_trace_result *res, con
     case FORMAT_JSON:
         break;
     }
-    cJSON *doc = result_json(res, pair);
-    char *text = cJSON_Print(doc);
-    cJSON_Delete(doc);
-    const int ok = text && fputs(text, f) >= 0 && fputc('\n', f) != EOF;
-    free(text);
-    return ok ? 0 : -1;
+    return ic_json_write(f, result_json(res, pair));
 }
 
 /* Writes the result to path through a temporary file and a rename, so that an

@@ -17,18 +17,19 @@ cJSON *ic_json_vector(const double *v, int n)
     return a;
 }
 
-int ic_json_print(cJSON *doc)
+int ic_json_write(FILE *f, cJSON *doc)
 {
     char *text = doc ? cJSON_Print(doc) : NULL;
     cJSON_Delete(doc);
-    if (!text) {
-        fprintf(stderr, "intercurve: out of memory writing JSON\n");
-        return -1;
-    }
-    int ok = puts(text) >= 0 && fflush(stdout) == 0;
+    const int ok = text && fputs(text, f) >= 0 && fputc('\n', f) != EOF;
     free(text);
-    if (!ok) {
-        fprintf(stderr, "intercurve: cannot write the output\n");
+    return ok ? 0 : -1;
+}
+
+int ic_json_print(cJSON *doc)
+{
+    if (ic_json_write(stdout, doc) != 0 || fflush(stdout) != 0) {
+        fprintf(stderr, "intercurve: cannot write the output (out of memory or a write error)\n");
         return -1;
     }
     return 0;

@@ -158,8 +158,7 @@ ic_status ic_trace_join_curves(ic_trace_result *r, double shape_tol, double max_
                             if (r->at[b][eb] != k || ic_dot3(oa, ob) > -1 + 1e-6)
                                 continue;
                         } else {
-                            if (r->at[b][eb] >= 0 ||
-                                r->curves[b].ends[eb] != IC_TRACE_LEFT_DOMAIN)
+                            if (r->at[b][eb] >= 0 || r->curves[b].ends[eb] != IC_TRACE_LEFT_DOMAIN)
                                 continue;
                             /* across the gap: from pa along -oa to pb, then along ob */
                             double d[3], t0[3];
@@ -168,9 +167,8 @@ ic_status ic_trace_join_curves(ic_trace_result *r, double shape_tol, double max_
                             const double dist = ic_norm3(d);
                             /* up to about two steps each side: the last steps
                              * before the degenerate point */
-                            const double reach =
-                                fmax(max_gap, 2 * (last_step(&r->curves[a], ea) +
-                                                   last_step(&r->curves[b], eb)));
+                            const double reach = fmax(max_gap, 2 * (last_step(&r->curves[a], ea) +
+                                                                    last_step(&r->curves[b], eb)));
                             if (dist > reach || ic_dot3(oa, ob) > -cos(fmin(0.5, 4 * dist)) ||
                                 ic_dot3(d, t0) < 0.9 * dist)
                                 continue;
@@ -206,13 +204,9 @@ void ic_trace_drop_duplicates(ic_trace_result *r, double radius)
             if (b == a || cb->length < ca->length)
                 continue;
             inside = 1;
-            for (int k = 0; k < ca->npoints && inside; k++) {
-                ic_candidate probe;
-                memset(&probe, 0, sizeof probe);
-                memcpy(probe.xyz, ca->points[k].xyz, sizeof probe.xyz);
-                ic_trace_cover(&probe, 1, cb->points, cb->npoints, radius);
-                inside = probe.covered;
-            }
+            for (int k = 0; k < ca->npoints && inside; k++)
+                inside = ic_trace_polyline_distance(cb->points, cb->npoints, ca->points[k].xyz) <=
+                         radius;
         }
         if (!inside)
             continue;

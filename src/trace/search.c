@@ -143,6 +143,24 @@ static int newton_params(ic_surface *A, ic_surface *B, const ic_jet_space *sp2, 
     return -1;
 }
 
+/* The parameter box of sheet s: its domain, which must be finite. */
+static ic_status domain_box(ic_surface *const S[2], int s, double lo[2], double hi[2],
+                            ic_error *err)
+{
+    double dom[2][2];
+    int per[2];
+    ic_surface_get_domain(S[s], dom, per);
+    for (int i = 0; i < 2; i++) {
+        if (!isfinite(dom[i][0]) || !isfinite(dom[i][1]))
+            return ic_error_set(err, IC_ERR_INVALID, 0,
+                                "tracing needs a finite \"domain\" for the parametric surface %c "
+                                "(surfaces[%d] of a problem file)",
+                                'A' + s, s);
+        lo[i] = dom[i][0], hi[i] = dom[i][1];
+    }
+    return IC_OK;
+}
+
 ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_candidate **out,
                               int *nout, ic_unresolved **unres, int *nunres, ic_trace_report *rep,
                               ic_error *err)
@@ -161,32 +179,13 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_can
     int dim = 3;
     double lo[4], hi[4];
     if (both) { /* (u, v, p, q) */
-        for (int s2 = 0; s2 < 2; s2++) {
-            double dom[2][2];
-            int per[2];
-            ic_surface_get_domain(S[s2], dom, per);
-            for (int i = 0; i < 2; i++) {
-                if (!isfinite(dom[i][0]) || !isfinite(dom[i][1]))
-                    return ic_error_set(err, IC_ERR_INVALID, 0,
-                                        "tracing needs a finite \"domain\" for the parametric "
-                                        "surface %c",
-                                        'A' + s2);
-                lo[2 * s2 + i] = dom[i][0], hi[2 * s2 + i] = dom[i][1];
-            }
-        }
+        if (domain_box(S, 0, lo, hi, err) != IC_OK ||
+            domain_box(S, 1, lo + 2, hi + 2, err) != IC_OK)
+            return IC_ERR_INVALID;
         dim = 4;
     } else if (mixed) {
-        double dom[2][2];
-        int per[2];
-        ic_surface_get_domain(S[P], dom, per);
-        for (int i = 0; i < 2; i++) {
-            if (!isfinite(dom[i][0]) || !isfinite(dom[i][1]))
-                return ic_error_set(err, IC_ERR_INVALID, 0,
-                                    "tracing needs a finite \"domain\" for the parametric "
-                                    "surface %c",
-                                    'A' + P);
-            lo[i] = dom[i][0], hi[i] = dom[i][1];
-        }
+        if (domain_box(S, P, lo, hi, err) != IC_OK)
+            return IC_ERR_INVALID;
         dim = 2;
     } else {
         if (!opt->has_box)

@@ -25,6 +25,15 @@ static ic_status start_curve(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
     return IC_ERR_UNABLE;
 }
 
+/* Distance from x to the nearest traced curve, or INFINITY. */
+static double distance_to_curves(const ic_trace_result *r, const double *x)
+{
+    double best = INFINITY;
+    for (int c = 0; c < r->ncurves; c++)
+        best = fmin(best, ic_trace_polyline_distance(r->curves[c].points, r->curves[c].npoints, x));
+    return best;
+}
+
 /* Whether a traced curve or a recorded point passes within the cell's radius. */
 int ic_trace_found_near(const ic_trace_result *r, const ic_unresolved *u)
 {
@@ -34,15 +43,7 @@ int ic_trace_found_near(const ic_trace_result *r, const ic_unresolved *u)
         if (ic_norm3(d) <= u->radius)
             return 1;
     }
-    for (int c = 0; c < r->ncurves; c++) {
-        ic_candidate probe;
-        memset(&probe, 0, sizeof probe);
-        memcpy(probe.xyz, u->xyz, sizeof probe.xyz);
-        ic_trace_cover(&probe, 1, r->curves[c].points, r->curves[c].npoints, u->radius);
-        if (probe.covered)
-            return 1;
-    }
-    return 0;
+    return distance_to_curves(r, u->xyz) <= u->radius;
 }
 
 /* Records a tangential point near `near`: located to full precision on the
@@ -71,26 +72,12 @@ ic_status ic_trace_record_tangential(ic_trace_result *r, ic_tracer *tr, ic_pair 
         const ic_status st = start_curve(r, tr, pair, &pt, opt, "the tangential curve");
         if (st != IC_OK)
             return st == IC_ERR_NOMEM ? st : IC_OK;
+        /* its shape is classified with the others after the joining */
         *curve = r->ncurves - 1;
-        ic_trace_curve *c = &r->curves[*curve];
-        c->tangential = 1;
-        c->shape = ic_trace_shape(c->points, c->npoints, c->length, opt->shape_tol, 1);
+        r->curves[*curve].tangential = 1;
         return IC_OK;
     }
     return ic_trace_add_special(r, pair, &pt, approximate, opt, NULL);
-}
-
-/* Distance from x to the nearest traced curve (polyline), or INFINITY. */
-static double distance_to_curves(const ic_trace_result *r, const double *x)
-{
-    double best = INFINITY;
-    for (int c = 0; c < r->ncurves; c++) {
-        const ic_trace_curve *cv = &r->curves[c];
-        for (int k = 0; k + 1 < cv->npoints; k++)
-            best =
-                fmin(best, ic_trace_segment_distance(x, cv->points[k].xyz, cv->points[k + 1].xyz));
-    }
-    return best;
 }
 
 /* Every branch out of every recorded singular point is traced, even when no

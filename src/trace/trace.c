@@ -23,7 +23,7 @@ void ic_trace_failure(ic_trace_report *rep, const char *fmt, ...)
     va_end(ap);
 }
 
-double ic_trace_segment_distance(const double *p, const double *a, const double *b)
+static double segment_distance(const double *p, const double *a, const double *b)
 {
     double ab[3], ap[3];
     ic_axpy3(ab, b, -1.0, a);
@@ -37,21 +37,21 @@ double ic_trace_segment_distance(const double *p, const double *a, const double 
     return ic_norm3(q);
 }
 
+double ic_trace_polyline_distance(const ic_trace_point *pts, int np, const double *x)
+{
+    if (np == 1)
+        return segment_distance(x, pts[0].xyz, pts[0].xyz);
+    double best = INFINITY;
+    for (int k = 0; k + 1 < np; k++)
+        best = fmin(best, segment_distance(x, pts[k].xyz, pts[k + 1].xyz));
+    return best;
+}
+
 void ic_trace_cover(ic_candidate *c, int n, const ic_trace_point *pts, int np, double radius)
 {
-    for (int i = 0; i < n; i++) {
-        if (c[i].covered)
-            continue;
-        for (int k = 0; k + 1 < np || (np == 1 && k == 0); k++) {
-            const double d = np == 1
-                                 ? ic_trace_segment_distance(c[i].xyz, pts[0].xyz, pts[0].xyz)
-                                 : ic_trace_segment_distance(c[i].xyz, pts[k].xyz, pts[k + 1].xyz);
-            if (d <= radius) {
-                c[i].covered = 1;
-                break;
-            }
-        }
-    }
+    for (int i = 0; i < n; i++)
+        if (!c[i].covered && ic_trace_polyline_distance(pts, np, c[i].xyz) <= radius)
+            c[i].covered = 1;
 }
 
 ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local_point *pt,

@@ -42,7 +42,8 @@ struct ic_trace_result {
 
 /* trace.c: the report's failure list (at most IC_TRACE_MAX_FAILURES). */
 void ic_trace_failure(ic_trace_report *rep, const char *fmt, ...) IC_PRINTF(2, 3);
-double ic_trace_segment_distance(const double *p, const double *a, const double *b);
+/* Distance from x to the polyline pts (a single point when np = 1). */
+double ic_trace_polyline_distance(const ic_trace_point *pts, int np, const double *x);
 /* Marks the candidates within radius of the polyline pts as covered. */
 void ic_trace_cover(ic_candidate *c, int n, const ic_trace_point *pts, int np, double radius);
 /* Records a located tangential point (once), classified; *index its slot. */

@@ -153,7 +153,7 @@ int main(int argc, char **argv)
                            "seed002-branch.json",   "sphere-plane-contact.json",
                            "torus-sphere.json",     "seed002-tangential.json",
                            "cylinders.json",        "cylinders-equal.json",
-                           "small-loop.json"};
+                           "small-loop.json",       "tacnode.json"};
     for (size_t c = 0; c < sizeof files / sizeof files[0]; c++)
         for (int k = 0; k < 3; k++)
             if (whole_example(dir, files[c], tols[k]) != 0)

@@ -1,7 +1,8 @@
 /* Whole traces of bundled examples (issue 5's test list) against lengths
  * integrated independently (tests/curve_lengths.h): two perpendicular
  * cylinders of radii 1 and 0.7 (two closed loops) and of equal radii (two
- * ellipses through two branch points), and a loop smaller than 1% of the box. */
+ * ellipses through two branch points), a loop smaller than 1% of the box, and
+ * a tacnode (two parabolas tangent at a degenerate tangential point). */
 #include <stdio.h>
 #include <string.h>
 
@@ -42,6 +43,59 @@ static void check_curves(const traced *t, const char *name, int n, double L, ic_
     printf("%-24s %d closed %s curves, length error %.2g\n", name, n, ic_shape_name(shape), worst);
 }
 
+/* The parabola y = a X^2 (X in [-X1, X1]) in the tilted plane of
+ * examples/tacnode.json: the plane is isometric to (X, y), so its length is
+ * 2 * integral_0^X1 sqrt(1 + k^2 X^2) dX with k = 2|a| (closed form). */
+static double parabola_length(double a, double X1)
+{
+    const long double k = 2 * fabsl((long double)a), X = X1;
+    return (double)(X * sqrtl(1 + k * k * X * X) + asinhl(k * X) / k);
+}
+
+/* Both parabolas through the tacnode at the origin: one curve each, with the
+ * tacnode an interior point (joined through it by its curvature vector). */
+static void check_tacnode(const traced *t)
+{
+    const ic_trace_result *res = t->res;
+    int found = 0;
+    for (int i = 0; i < ic_trace_result_num_specials(res); i++) {
+        const ic_trace_special *sp = ic_trace_result_special(res, i);
+        /* located to 1e-12 as a simple root of the third derivative along
+         * the kernel (Gauss-Newton on N_A x N_B = 0 alone stops about 2e-3
+         * away, where the march meets the angle threshold) */
+        found += sp->type == IC_POINT_TACNODE &&
+                 hypot(hypot(sp->xyz[0], sp->xyz[1]), sp->xyz[2]) <= 1e-12;
+    }
+    CHECK(ic_trace_result_num_specials(res) == 1 && found == 1, "tacnode: one, at the origin");
+    CHECK(ic_trace_result_num_curves(res) == 2, "tacnode: %d curves, not 2",
+          ic_trace_result_num_curves(res));
+    /* y = 3X^2/2 leaves through y = 1.2; y = -X^2/2 through x = +-1, X = 1/cos 0.3 */
+    const double L[2] = {parabola_length(1.5, sqrt(0.8)), parabola_length(0.5, 1 / cos(0.3))};
+    const double kappa0[2] = {3.0, 1.0}; /* 2|a| at the vertex */
+    double worst = 0;
+    for (int i = 0; i < ic_trace_result_num_curves(res) && i < 2; i++) {
+        const ic_trace_curve *c = ic_trace_result_curve(res, i);
+        const int k = fabs(c->length - L[0]) < fabs(c->length - L[1]) ? 0 : 1;
+        worst = fmax(worst, fabs(c->length - L[k]) / L[k]);
+        CHECK(!c->closed && fabs(c->length - L[k]) <= 1e-9 * L[k],
+              "tacnode curve %d: length %.17g of %.17g", i, c->length, L[k]);
+        int through = 0;
+        for (int j = 1; j + 1 < c->npoints; j++) {
+            const double *x = c->points[j].xyz;
+            if (hypot(hypot(x[0], x[1]), x[2]) <= 1e-12) {
+                through = 1;
+                /* the branch's apparatus at the tacnode (height-difference
+                 * series, exact to rounding for these polynomials): 1e-10 */
+                CHECK(fabs(c->points[j].kappa - kappa0[k]) <= 1e-10,
+                      "tacnode curve %d: kappa %.17g at the vertex, not %g", i, c->points[j].kappa,
+                      kappa0[k]);
+            }
+        }
+        CHECK(through, "tacnode curve %d passes through the tacnode", i);
+    }
+    printf("%-24s 2 parabolas through the tacnode, length error %.2g\n", "tacnode", worst);
+}
+
 int main(int argc, char **argv)
 {
     const char *dir = argc > 1 ? argv[1] : ".";
@@ -73,6 +127,9 @@ int main(int argc, char **argv)
         check_curves(&t, "loop of 0.9% of the box", 1, (double)(2 * PI_L * sqrtl(7.5e-5L)),
                      IC_SHAPE_CIRCLE);
     }
+    release(&t);
+    if (trace_example(&t, dir, "tacnode.json") == 0)
+        check_tacnode(&t);
     release(&t);
     return harness_finish("test_trace_examples");
 }

@@ -142,6 +142,18 @@ IC_NODISCARD ic_status ic_local_locate_tangential(ic_pair *pair, ic_local_point 
                                                   const ic_local_point *near, double reach,
                                                   const ic_local_options *opt, ic_error *err);
 
+/**
+ * Locates a degenerate tangential point (a cusp, a tacnode or a higher one,
+ * contact order 3..8 along the kernel) from `near`, a nearby point of the
+ * curve, where ic_local_locate_tangential is ill-conditioned: the point is
+ * a simple root of the (m-1)-th derivative of the height difference along
+ * the kernel curve (docs/tracing.md). IC_ERR_UNABLE when no point within
+ * `reach` (a length) classifies with the contact order it was solved for.
+ */
+IC_NODISCARD ic_status ic_local_locate_degenerate(ic_pair *pair, ic_local_point *pt,
+                                                  const ic_local_point *near, double reach,
+                                                  const ic_local_options *opt, ic_error *err);
+
 /** Darboux quantities of the curve on one surface (DESIGN.md 2.1). */
 typedef struct {
     double kappa_n; /**< normal curvature c'' . N */

@@ -28,7 +28,7 @@ typedef struct {
     const ic_jet_space *sp2; /* (x, y) or (r, w), order H */
     ic_jet_space *sp1;       /* univariate, order H */
     int H;
-    double *s2, *s1;         /* scratch of sp2 and sp1 */
+    double *s2, *s1; /* scratch of sp2 and sp1 */
     const ic_local_options *opt;
 } tctx;
 
@@ -39,8 +39,7 @@ static int idx2(const ic_jet_space *sp, int i, int j)
 }
 
 /* out(r, w) = a(r d + w dp) */
-static void rotate(const tctx *cx, double *out, const double *a, const double *d,
-                   const double *dp)
+static void rotate(const tctx *cx, double *out, const double *a, const double *d, const double *dp)
 {
     const int n = ic_jet_space_len(cx->sp2);
     double *X = malloc(2 * (size_t)n * sizeof *X);
@@ -127,8 +126,8 @@ static ic_status lift_branch(const tctx *cx, ic_branch *br, const double *w, con
     psi[0] = 0.0; /* measured from P along N */
     for (int k = 0; k < 3; k++)
         for (int i = 0; i <= H; i++)
-            c[k][i] = (i == 0 ? h->P[k] : 0.0) + x[i] * h->e1[k] + y[i] * h->e2[k] +
-                      psi[i] * h->N[k];
+            c[k][i] =
+                (i == 0 ? h->P[k] : 0.0) + x[i] * h->e1[k] + y[i] * h->e2[k] + psi[i] * h->N[k];
     /* speed sigma = |c'(r)|, arc length s(r) = int sigma, r(s) by reversion */
     double dc[3][IC_JET_MAX_ORDER + 1], sq[IC_JET_MAX_ORDER + 1], tmp[IC_JET_MAX_ORDER + 1];
     double sigma[IC_JET_MAX_ORDER + 1], s[IC_JET_MAX_ORDER + 1], rs[IC_JET_MAX_ORDER + 1];
@@ -218,8 +217,8 @@ static int form_roots(const tctx *cx, const double *g, int m, double *roots, int
     return count;
 }
 
-static ic_status smooth_branch(const tctx *cx, ic_local_result *res, const double *g,
-                               double phi, int q, int order, ic_error *err)
+static ic_status smooth_branch(const tctx *cx, ic_local_result *res, const double *g, double phi,
+                               int q, int order, ic_error *err)
 {
     const int n = ic_jet_space_len(cx->sp2);
     const double d[2] = {cos(phi), sin(phi)}, dp[2] = {-sin(phi), cos(phi)};
@@ -244,44 +243,58 @@ static ic_status smooth_branch(const tctx *cx, ic_local_result *res, const doubl
     return st;
 }
 
-/* Delta = 0 with a nonzero quadratic part: follow dg/dw = 0 across the kernel. */
-static ic_status degenerate(const tctx *cx, ic_local_result *res, const double *g, double a,
-                            double b, double c, int order, ic_error *err)
+/* The curve dg/dw = 0 across the kernel of the quadratic part a x^2 + b xy
+ * + c y^2 (Delta = 0): the kernel direction d and its normal dp, g rotated
+ * to (r, w) in gr, lambda = the w^2 coefficient, w = phi(r) and h(r) =
+ * g(r, phi(r)), with each height along the same curve (hA, hB) for the scale. */
+typedef struct {
+    double d[2], dp[2], lambda;
+    double phi[IC_JET_MAX_ORDER + 1], h[IC_JET_MAX_ORDER + 1];
+    double hA[IC_JET_MAX_ORDER + 1], hB[IC_JET_MAX_ORDER + 1];
+    double *gr; /* owned */
+} polar_curve;
+
+static ic_status polar_curve_new(const tctx *cx, polar_curve *pc, const double *g, double a,
+                                 double b, double c, ic_error *err)
 {
     const ic_jet_space *sp2 = cx->sp2;
-    const int n = ic_jet_space_len(sp2), H = cx->H;
-    /* kernel direction of [[a, b/2], [b/2, c]] and lambda = a + c */
-    double d[2];
+    const int n = ic_jet_space_len(sp2);
+    double *d = pc->d, *dp = pc->dp;
     if (fabs(a) >= fabs(c))
         d[0] = -b / 2, d[1] = a;
     else
         d[0] = c, d[1] = -b / 2;
     const double len = hypot(d[0], d[1]);
     d[0] /= len, d[1] /= len;
-    const double dp[2] = {-d[1], d[0]};
-    double *gr = malloc(2 * (size_t)n * sizeof *gr);
-    if (!gr)
+    dp[0] = -d[1], dp[1] = d[0];
+    pc->gr = malloc(3 * (size_t)n * sizeof *pc->gr);
+    if (!pc->gr)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
-    double *dw = gr + n;
-    rotate(cx, gr, g, d, dp);
-    const double lambda = gr[idx2(sp2, 0, 2)];
-    deriv_w(sp2, dw, gr);
-    double phi[IC_JET_MAX_ORDER + 1], h[IC_JET_MAX_ORDER + 1], hA[IC_JET_MAX_ORDER + 1];
-    double hB[IC_JET_MAX_ORDER + 1];
-    solve_branch(cx, phi, dw, NULL, 0, 0, 0.0, 2 * lambda);
-    /* h(r) = g(r, phi(r)), and each height along the same curve for the scale */
-    double *rot = malloc((size_t)n * sizeof *rot);
-    ic_status st = IC_OK;
-    if (!rot) {
-        free(gr);
-        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
-    }
-    along(cx, h, gr, phi);
+    double *dw = pc->gr + n, *rot = pc->gr + 2 * n;
+    rotate(cx, pc->gr, g, d, dp);
+    pc->lambda = pc->gr[idx2(sp2, 0, 2)];
+    deriv_w(sp2, dw, pc->gr);
+    solve_branch(cx, pc->phi, dw, NULL, 0, 0, 0.0, 2 * pc->lambda);
+    along(cx, pc->h, pc->gr, pc->phi);
     rotate(cx, rot, cx->h->psi[0], d, dp);
-    along(cx, hA, rot, phi);
+    along(cx, pc->hA, rot, pc->phi);
     rotate(cx, rot, cx->h->psi[1], d, dp);
-    along(cx, hB, rot, phi);
-    free(rot);
+    along(cx, pc->hB, rot, pc->phi);
+    return IC_OK;
+}
+
+/* Delta = 0 with a nonzero quadratic part: follow dg/dw = 0 across the kernel. */
+static ic_status degenerate(const tctx *cx, ic_local_result *res, const double *g, double a,
+                            double b, double c, int order, ic_error *err)
+{
+    const int H = cx->H;
+    polar_curve pc;
+    ic_status st = polar_curve_new(cx, &pc, g, a, b, c, err);
+    if (st != IC_OK)
+        return st;
+    const double *d = pc.d, *dp = pc.dp, *h = pc.h, *hA = pc.hA, *hB = pc.hB, *phi = pc.phi;
+    const double lambda = pc.lambda;
+    double *gr = pc.gr;
     int m = 0;
     for (int j = 3; j <= H && !m; j++)
         if (fabs(h[j]) > cx->opt->contact_tol * fmax(fabs(hA[j]), fabs(hB[j])) &&
@@ -331,35 +344,167 @@ static ic_status degenerate(const tctx *cx, ic_local_result *res, const double *
     return st;
 }
 
+/* The expansion at the sheets' point: jet spaces of order H, scratch and
+ * the heights (ic_height_close frees them). */
+typedef struct {
+    ic_jet_space *sp2, *sp1;
+    double *s2, *s1;
+    ic_heights h;
+    double linear[2]; /* g's linear part (x, y), set aside */
+} expansion;
+
+static void expansion_close(expansion *ex)
+{
+    ic_heights_free(&ex->h);
+    free(ex->s1);
+    free(ex->s2);
+    ic_jet_space_free(ex->sp1);
+    ic_jet_space_free(ex->sp2);
+}
+
+static ic_status expansion_open(expansion *ex, tctx *cx, const ic_sheet sh[2], int H,
+                                const ic_local_options *opt, ic_error *err)
+{
+    memset(ex, 0, sizeof *ex);
+    ic_status st = ic_jet_space_new(&ex->sp2, 2, H, err);
+    if (st == IC_OK)
+        st = ic_jet_space_new(&ex->sp1, 1, H, err);
+    if (st != IC_OK) {
+        expansion_close(ex);
+        return st;
+    }
+    ex->s2 = malloc(ic_jet_scratch_len(ex->sp2) * sizeof *ex->s2);
+    ex->s1 = malloc(ic_jet_scratch_len(ex->sp1) * sizeof *ex->s1);
+    if (!ex->s2 || !ex->s1)
+        st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory at a tangential point");
+    if (st == IC_OK)
+        st = ic_heights_compute(&ex->h, sh, ex->sp2, err);
+    if (st != IC_OK) {
+        expansion_close(ex);
+        return st;
+    }
+    const tctx c = {&ex->h, ex->sp2, ex->sp1, H, ex->s2, ex->s1, opt};
+    *cx = c;
+    /* the constant and linear parts measure how far P is from an exact
+     * tangential point (the residual); the analysis uses the rest */
+    ex->linear[0] = ex->h.g[1];
+    ex->linear[1] = ex->h.g[2];
+    ex->h.g[0] = ex->h.g[1] = ex->h.g[2] = 0.0;
+    return IC_OK;
+}
+
+/* The root of the polynomial sum_i p[i] r^i (degree deg) nearest 0 by
+ * Newton from 0, within |r| <= reach; 0 when there is none. */
+static int poly_root_near_zero(const double *p, int deg, double reach, double *root)
+{
+    double r = 0.0;
+    for (int it = 0; it < 200; it++) {
+        double f = 0.0, df = 0.0;
+        for (int i = deg; i >= 0; i--) {
+            df = df * r + f;
+            f = f * r + p[i];
+        }
+        if (df == 0.0)
+            return 0;
+        const double step = f / df;
+        r -= step;
+        if (!(fabs(r) <= reach))
+            return 0;
+        if (fabs(step) <= 1e-16 * (fabs(r) + 1e-300)) {
+            *root = r;
+            return 1;
+        }
+    }
+    *root = r;
+    return 1; /* a multiple root converges linearly: the last iterate */
+}
+
+/* sum a[i] x^i y^j of a bivariate jet */
+static double eval2(const ic_jet_space *sp, const double *a, double x, double y)
+{
+    double sum = 0.0;
+    for (int i = ic_jet_space_len(sp) - 1; i >= 0; i--) {
+        int e[2];
+        ic_jet_exponents(sp, i, e);
+        sum += a[i] * pow(x, e[0]) * pow(y, e[1]);
+    }
+    return sum;
+}
+
+ic_status ic_height_degenerate_step(const ic_sheet sh[2], int m, double reach,
+                                    const ic_local_options *opt, double X[3], ic_error *err)
+{
+    expansion ex;
+    tctx cx;
+    const int H = 12;
+    if (m < 3 || m >= H)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "contact order %d outside 3..%d", m, H - 1);
+    ic_status st = expansion_open(&ex, &cx, sh, H, opt, err);
+    if (st != IC_OK)
+        return st;
+    const double *g = ex.h.g;
+    polar_curve pc;
+    st = polar_curve_new(&cx, &pc, g, g[3], g[4], g[5], err);
+    if (st != IC_OK) {
+        expansion_close(&ex);
+        return st;
+    }
+    /* h^(m-1)(r) / (m-1)! = sum_i C(i + m - 1, m - 1) h[i + m - 1] r^i */
+    double p[IC_JET_MAX_ORDER + 1];
+    const int deg = H - (m - 1);
+    for (int i = 0; i <= deg; i++) {
+        double binom = 1.0;
+        for (int k = 1; k <= m - 1; k++)
+            binom = binom * (i + k) / k;
+        p[i] = binom * pc.h[i + m - 1];
+    }
+    double r;
+    if (!poly_root_near_zero(p, deg, reach, &r)) {
+        st =
+            ic_error_set(err, IC_ERR_UNABLE, 0, "no point of contact order %d within %g", m, reach);
+    } else {
+        /* w from dg/dw(r, w) = 0 with g's linear part restored (it moves the
+         * curve off P by the residual), by Newton from phi(r) */
+        double w = 0.0;
+        for (int i = H; i >= 0; i--)
+            w = w * r + pc.phi[i];
+        const int n = ic_jet_space_len(ex.sp2);
+        double *gww = pc.gr + 2 * n; /* free after polar_curve_new */
+        deriv_w(ex.sp2, gww, pc.gr + n);
+        const double cw = ex.linear[0] * pc.dp[0] + ex.linear[1] * pc.dp[1];
+        for (int it = 0; it < 20; it++) {
+            const double G = eval2(ex.sp2, pc.gr + n, r, w) + cw;
+            const double dG = eval2(ex.sp2, gww, r, w);
+            if (dG == 0.0)
+                break;
+            w -= G / dG;
+            if (fabs(G / dG) <= 1e-17 + 1e-16 * fabs(w))
+                break;
+        }
+        const double x = r * pc.d[0] + w * pc.dp[0], y = r * pc.d[1] + w * pc.dp[1];
+        const double z = eval2(ex.sp2, ex.h.psi[0], x, y);
+        for (int i = 0; i < 3; i++)
+            X[i] = ex.h.P[i] + x * ex.h.e1[i] + y * ex.h.e2[i] + z * ex.h.N[i];
+    }
+    free(pc.gr);
+    expansion_close(&ex);
+    return st;
+}
+
 ic_status ic_height_difference(ic_local_result *res, const ic_sheet sh[2], int order,
                                const ic_local_options *opt, ic_error *err)
 {
     const int H = order + 8 < IC_JET_MAX_ORDER ? order + 8 : IC_JET_MAX_ORDER;
-    ic_jet_space *sp2 = NULL, *sp1 = NULL;
-    ic_heights h;
-    memset(&h, 0, sizeof h);
-    double *s2 = NULL, *s1 = NULL, *g = NULL;
-    ic_status st = ic_jet_space_new(&sp2, 2, H, err);
-    if (st == IC_OK)
-        st = ic_jet_space_new(&sp1, 1, H, err);
+    expansion ex;
+    tctx cx;
+    ic_status st = expansion_open(&ex, &cx, sh, H, opt, err);
     if (st != IC_OK)
-        goto cleanup;
-    s2 = malloc(ic_jet_scratch_len(sp2) * sizeof *s2);
-    s1 = malloc(ic_jet_scratch_len(sp1) * sizeof *s1);
-    if (!s2 || !s1) {
-        st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory at a tangential point");
-        goto cleanup;
-    }
-    st = ic_heights_compute(&h, sh, sp2, err);
-    if (st != IC_OK)
-        goto cleanup;
-    const tctx cx = {&h, sp2, sp1, H, s2, s1, opt};
-    g = h.g;
-    /* the constant and linear parts measure how far P is from an exact
-     * tangential point (the residual); the analysis uses the rest */
-    g[0] = g[1] = g[2] = 0.0;
+        return st;
+    const ic_jet_space *sp2 = ex.sp2;
+    const ic_heights *h = &ex.h;
+    double *g = ex.h.g;
     const double a = g[3], b = g[4], c = g[5];
-    const double scale2 = fmax(degree_max(sp2, h.psi[0], 2), degree_max(sp2, h.psi[1], 2));
+    const double scale2 = fmax(degree_max(sp2, h->psi[0], 2), degree_max(sp2, h->psi[1], 2));
     const double q2 = fmax(fmax(fabs(a), fabs(c)), fabs(b) / 2);
     res->discriminant = b * b / 4 - a * c;
     res->nbranches = 0;
@@ -376,14 +521,13 @@ ic_status ic_height_difference(ic_local_result *res, const ic_sheet sh[2], int o
             const double A0 = (a + c) / 2, B0 = (a - c) / 2, C0 = b / 2;
             const double R = hypot(B0, C0), alpha = atan2(C0, B0), beta = acos(-A0 / R);
             for (int k = 0; k < 2 && st == IC_OK; k++)
-                st = smooth_branch(&cx, res, g, 0.5 * (alpha + (k ? -beta : beta)), 2, order,
-                                   err);
+                st = smooth_branch(&cx, res, g, 0.5 * (alpha + (k ? -beta : beta)), 2, order, err);
         }
     } else {
         /* the quadratic parts agree: the leading form decides */
         int m = 0;
         for (int j = 3; j <= H && !m; j++) {
-            const double sj = fmax(degree_max(sp2, h.psi[0], j), degree_max(sp2, h.psi[1], j));
+            const double sj = fmax(degree_max(sp2, h->psi[0], j), degree_max(sp2, h->psi[1], j));
             if (degree_max(sp2, g, j) > opt->contact_tol * sj)
                 m = j;
         }
@@ -402,10 +546,6 @@ ic_status ic_height_difference(ic_local_result *res, const ic_sheet sh[2], int o
             st = smooth_branch(&cx, res, g, roots[k], m, order, err);
     }
 cleanup:
-    ic_heights_free(&h);
-    free(s1);
-    free(s2);
-    ic_jet_space_free(sp1);
-    ic_jet_space_free(sp2);
+    expansion_close(&ex);
     return st;
 }

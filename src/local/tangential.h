@@ -21,6 +21,14 @@ void ic_heights_free(ic_heights *h);
 ic_status ic_height_difference(ic_local_result *res, const ic_sheet sh[2], int order,
                                const ic_local_options *opt, ic_error *err);
 
+/* One step towards a degenerate tangential point of contact order m (3: a
+ * cusp, 4: a tacnode, ...) from a nearby point P of the curve: the simple
+ * root r of h^(m-1), h(r) = g(r, phi(r)) along dg/dw = 0 across the kernel,
+ * nearest P within reach, lifted onto sheet A (X). IC_ERR_UNABLE where there
+ * is none. */
+ic_status ic_height_degenerate_step(const ic_sheet sh[2], int m, double reach,
+                                    const ic_local_options *opt, double X[3], ic_error *err);
+
 /* The perturbation method (seed 002 section 3) for the branches of a point
  * already classified in res (branch point, higher-order contact, tacnode:
  * nearby points on small circles; tangential curve: B shifted along N by

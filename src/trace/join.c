@@ -128,6 +128,44 @@ double ic_trace_gap_length(const ic_trace_point *p, const double *t0, const ic_t
     return L;
 }
 
+/* The difference of the curvature vectors c'' = kappa n (independent of
+ * the orientation) at two curve ends. */
+static double curvature_jump(const ic_trace_curve *ca, int ea, const ic_trace_curve *cb, int eb)
+{
+    const ic_trace_point *pa = ea ? &ca->points[ca->npoints - 1] : &ca->points[0];
+    const ic_trace_point *pb = eb ? &cb->points[cb->npoints - 1] : &cb->points[0];
+    double d[3] = {0, 0, 0};
+    if (pa->frame_defined)
+        ic_scale3(d, pa->n, pa->kappa);
+    if (pb->frame_defined)
+        ic_axpy3(d, d, -pb->kappa, pb->n);
+    return ic_norm3(d);
+}
+
+/* Whether end eb of curve b continues end ea of curve a at least as well as
+ * every other end at the same point with the opposite tangent: at a tacnode
+ * two do, and the one with the same curvature vector is the branch. */
+static int best_continuation(const ic_trace_result *r, int a, int ea, int b, int eb)
+{
+    const double jump = curvature_jump(&r->curves[a], ea, &r->curves[b], eb);
+    const ic_trace_point *pa;
+    double oa[3];
+    outgoing(&r->curves[a], ea, oa, &pa);
+    for (int c = 0; c < r->ncurves; c++)
+        for (int ec = 0; ec < 2; ec++) {
+            const ic_trace_point *pc;
+            double oc[3];
+            if ((c == a && ec == ea) || (c == b && ec == eb) || r->curves[c].closed ||
+                r->at[c][ec] != r->at[a][ea])
+                continue;
+            outgoing(&r->curves[c], ec, oc, &pc);
+            if (ic_dot3(oa, oc) <= -1 + 1e-6 &&
+                curvature_jump(&r->curves[a], ea, &r->curves[c], ec) < jump)
+                return 0;
+        }
+    return 1;
+}
+
 /* Joins curves through the tangential points at their ends where a branch
  * continues smoothly (the outgoing directions of the two ends opposite), and
  * across the small gaps a curve leaves where it passes through a degenerate
@@ -155,7 +193,8 @@ ic_status ic_trace_join_curves(ic_trace_result *r, double shape_tol, double max_
                         outgoing(&r->curves[b], eb, ob, &pb);
                         double gap = 0.0;
                         if (!gap_end) {
-                            if (r->at[b][eb] != k || ic_dot3(oa, ob) > -1 + 1e-6)
+                            if (r->at[b][eb] != k || ic_dot3(oa, ob) > -1 + 1e-6 ||
+                                !best_continuation(r, a, ea, b, eb))
                                 continue;
                         } else {
                             if (r->at[b][eb] >= 0 || r->curves[b].ends[eb] != IC_TRACE_LEFT_DOMAIN)

@@ -350,6 +350,33 @@ static int closes(const ic_tracer *tr, const double *next, double h, double *hs)
     return 1;
 }
 
+/* Does the angle between the normals dip below the threshold inside the
+ * step (0, h) though it is above it at both ends? At a tacnode or a cusp the
+ * angle falls like the square of the distance and t = N_A x N_B keeps its
+ * sign, so a step can pass over the point. Where both end angles are small
+ * (below WATCH) the angle at the predicted midpoint and at the vertex of the
+ * parabola through the three is checked. */
+static int angle_dips(const ic_tracer *tr, double h, double a1)
+{
+    const double WATCH = 1e3 * tr->opt.local.tangential_angle, a0 = tr->res.angle;
+    if (!(a0 < WATCH && a1 < WATCH))
+        return 0;
+    ic_local_point p = tr->cur;
+    predict(tr, 0.5 * h, p.xyz, p.params);
+    const double am = normals_angle(tr, &p);
+    if (am < 0)
+        return 0;
+    if (am < tr->opt.local.tangential_angle)
+        return 1;
+    /* a(x) = a0 + b x + c x^2 through x = 0, 1/2, 1 */
+    const double c = 2 * (a0 - 2 * am + a1), b = a1 - a0 - c;
+    if (!(c > 0) || -b / (2 * c) <= 0 || -b / (2 * c) >= 1)
+        return 0;
+    predict(tr, -b / (2 * c) * h, p.xyz, p.params);
+    const double av = normals_angle(tr, &p);
+    return av >= 0 && av < tr->opt.local.tangential_angle;
+}
+
 ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
 {
     *event = IC_TRACE_CONTINUE;
@@ -414,7 +441,7 @@ ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
         /* a tangential point ahead on a transversal curve: the step is
          * shortened without the (costly) classification there */
         const double angle = tr->tcurve ? -1 : normals_angle(tr, &next);
-        if (angle >= 0 && angle < tr->opt.local.tangential_angle) {
+        if (angle >= 0 && (angle < tr->opt.local.tangential_angle || angle_dips(tr, h, angle))) {
             near_tangential = 1;
             continue;
         }

@@ -151,7 +151,8 @@ static int finish_end(ic_trace_result *r, ic_pair *pair, const ic_trace_options 
     /* within 1e-3: the march stops about 2e-5 before a branch point; before a
      * degenerate point (a tacnode, about 2e-3 away, where the locator is
      * ill-conditioned along the curve) the end stays approximate */
-    if (ic_local_locate_tangential(pair, &P, &near, 1e-3, &opt->local, NULL) != IC_OK) {
+    if (ic_local_locate_tangential(pair, &P, &near, 1e-3, &opt->local, NULL) != IC_OK &&
+        ic_local_locate_degenerate(pair, &P, &near, 0.05, &opt->local, NULL) != IC_OK) {
         ic_trace_add_special(r, pair, &near, 1, opt, NULL);
         return -1;
     }
@@ -167,12 +168,22 @@ static int finish_end(ic_trace_result *r, ic_pair *pair, const ic_trace_options 
     memcpy(extra->xyz, P.xyz, sizeof P.xyz);
     memcpy(extra->params, P.params, sizeof P.params);
     extra->angle = res.angle;
-    /* the branch through P that continues the curve */
+    /* the branch through P that continues the curve: the nearest tangent
+     * line, then (at a tacnode, where the branches share it) the nearest
+     * curvature vector c'' = kappa n, which does not depend on orientation */
     int best = -1;
-    double bd = 0;
-    for (int b = 0; b < res.nbranches; b++)
-        if (fabs(ic_dot3(res.branches[b].t, last->t)) > bd)
-            bd = fabs(ic_dot3(res.branches[b].t, last->t)), best = b;
+    double bd = -1;
+    for (int b = 0; b < res.nbranches; b++) {
+        const ic_branch *br = &res.branches[b];
+        double dk[3] = {0, 0, 0};
+        if (br->frame_defined)
+            ic_scale3(dk, br->n, br->kappa);
+        if (last->frame_defined)
+            ic_axpy3(dk, dk, -last->kappa, last->n);
+        const double score = fabs(ic_dot3(br->t, last->t)) - 1e-6 * ic_norm3(dk);
+        if (score > bd)
+            bd = score, best = b;
+    }
     if (best >= 0 && res.branches[best].regular) {
         const ic_branch *br = &res.branches[best];
         const double sg = ic_dot3(br->t, last->t) < 0 ? -1.0 : 1.0;

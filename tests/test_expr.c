@@ -103,12 +103,25 @@ static void test_numbers_and_constants(void)
     const struct {
         const char *text;
         double value;
-    } cases[] = {{"1", 1.0},         {"2.5", 2.5},        {".5", 0.5},       {"1e-3", 1e-3},
-                 {"1.5E+2", 150.0},  {"0.1", 0.1},        {"-2^2", -4.0},    {"2^3^2", 512.0},
-                 {"2^-1", 0.5},      {"pi", 3.141592653589793}, {"e", 2.718281828459045},
-                 {"2*pi", 6.283185307179586}, {"atan2(1, 1)", 0.7853981633974483},
-                 {"pow(2, 10)", 1024.0}, {"abs(-3)", 3.0}, {"123456789012345678901234567890", 1.2345678901234568e29},
-                 {"0.000000000000000000001", 1e-21}, {"8 - 3 - 2", 3.0}, {"8 / 4 / 2", 1.0}};
+    } cases[] = {{"1", 1.0},
+                 {"2.5", 2.5},
+                 {".5", 0.5},
+                 {"1e-3", 1e-3},
+                 {"1.5E+2", 150.0},
+                 {"0.1", 0.1},
+                 {"-2^2", -4.0},
+                 {"2^3^2", 512.0},
+                 {"2^-1", 0.5},
+                 {"pi", 3.141592653589793},
+                 {"e", 2.718281828459045},
+                 {"2*pi", 6.283185307179586},
+                 {"atan2(1, 1)", 0.7853981633974483},
+                 {"pow(2, 10)", 1024.0},
+                 {"abs(-3)", 3.0},
+                 {"123456789012345678901234567890", 1.2345678901234568e29},
+                 {"0.000000000000000000001", 1e-21},
+                 {"8 - 3 - 2", 3.0},
+                 {"8 / 4 / 2", 1.0}};
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         double v = NAN;
         ic_error err;
@@ -128,8 +141,7 @@ static void test_numbers_and_constants(void)
 /* Folding and sharing: the tape of a torus parametrisation. */
 static void test_tape(void)
 {
-    const char *torus[3] = {"(2 + 0.5*cos(v))*cos(u)", "(2 + 0.5*cos(v))*sin(u)",
-                            "0.5*sin(v)"};
+    const char *torus[3] = {"(2 + 0.5*cos(v))*cos(u)", "(2 + 0.5*cos(v))*sin(u)", "0.5*sin(v)"};
     const char *uv[2] = {"u", "v"};
     ic_expr *e = NULL;
     CHECK(ic_expr_compile(&e, torus, 3, uv, 2, NULL, 0, NULL, NULL) == IC_OK, "torus compiles");
@@ -222,10 +234,14 @@ static void test_eval_jet(void)
 static void test_intervals(harness_rng *rng)
 {
     const char *formulas[] = {
-        "sin(3*x) * cos(y) + z^2",        "tan(x) - atan(y*z)",
-        "x / (y - 0.1)",                  "sqrt(x + 1) * log(y + 2) - exp(z)",
-        "asin(x/2) + acos(y/3) * sinh(z)", "atan2(y, x) + cosh(z) - tanh(x*y)",
-        "abs(x - y)^3 - pow(z + 3, 1.7)",  "(x + y)^-2 + x^2*y^2 - z^5",
+        "sin(3*x) * cos(y) + z^2",
+        "tan(x) - atan(y*z)",
+        "x / (y - 0.1)",
+        "sqrt(x + 1) * log(y + 2) - exp(z)",
+        "asin(x/2) + acos(y/3) * sinh(z)",
+        "atan2(y, x) + cosh(z) - tanh(x*y)",
+        "abs(x - y)^3 - pow(z + 3, 1.7)",
+        "(x + y)^-2 + x^2*y^2 - z^5",
     };
     const int nf = (int)(sizeof formulas / sizeof formulas[0]);
     ic_expr *e = NULL;
@@ -248,8 +264,7 @@ static void test_intervals(harness_rng *rng)
             for (int k = 0; k < nf; k++) {
                 checked++;
                 CHECK(val[k] >= out[k].lo && val[k] <= out[k].hi,
-                      "formula %d: %.17g outside [%.17g, %.17g]", k, val[k], out[k].lo,
-                      out[k].hi);
+                      "formula %d: %.17g outside [%.17g, %.17g]", k, val[k], out[k].lo, out[k].hi);
             }
         }
     }
@@ -281,6 +296,71 @@ static void test_intervals(harness_rng *rng)
     CHECK(s.lo < 0.30000000000000004 && s.hi > 0.3, "outward rounding of 0.1 + 0.2");
 }
 
+/* Interval gradients (forward mode on intervals) enclose the jets' exact
+ * first derivatives at every sampled point of random boxes. */
+static void test_interval_gradients(harness_rng *rng)
+{
+    const char *formulas[] = {
+        "sin(3*x) * cos(y) + z^2",
+        "tan(x) - atan(y*z)",
+        "x / (y - 0.1)",
+        "sqrt(x + 1) * log(y + 2) - exp(z)",
+        "asin(x/2) + acos(y/3) * sinh(z)",
+        "atan2(y, x) + cosh(z) - tanh(x*y)",
+        "abs(x - y)^3 - pow(z + 3, 1.7)",
+        "(x + y)^-2 + x^2*y^2 - z^5",
+        "pow(x + 2, y)",
+    };
+    const int nf = (int)(sizeof formulas / sizeof formulas[0]);
+    ic_expr *e = NULL;
+    ic_jet_space *sp = NULL;
+    CHECK(ic_expr_compile(&e, formulas, nf, XYZ, 3, NULL, 0, NULL, NULL) == IC_OK, "compile");
+    CHECK(ic_jet_space_new(&sp, 3, 1, NULL) == IC_OK, "space");
+    ic_interval_grad box[3], out[9], gwork[256];
+    double X[3][4], J[9 * 4], work[4096];
+    int checked = 0;
+    for (int trial = 0; trial < 300 * harness_multiplier(); trial++) {
+        for (int i = 0; i < 3; i++) {
+            const double c = harness_uniform(rng, -1.5, 1.5);
+            const double h = harness_uniform(rng, 0.0, 0.8);
+            box[i].v = (ic_interval){c - h, c + h};
+            for (int k = 0; k < 3; k++)
+                box[i].d[k] = (ic_interval){i == k, i == k};
+        }
+        ic_expr_eval_interval_grad(e, out, box, 3, gwork);
+        for (int s = 0; s < 20; s++) {
+            for (int i = 0; i < 3; i++)
+                ic_jet_set_var(X[i], harness_uniform(rng, box[i].v.lo, box[i].v.hi), i, sp);
+            const double *in[3] = {X[0], X[1], X[2]};
+            if (ic_expr_eval_jet(e, J, in, sp, work, NULL) != IC_OK)
+                continue; /* undefined or not differentiable there */
+            for (int k = 0; k < nf; k++)
+                for (int j = 0; j < 3; j++) {
+                    const double d = J[4 * k + 1 + j];
+                    checked++;
+                    CHECK(d >= out[k].d[j].lo && d <= out[k].d[j].hi,
+                          "formula %d, d/d%s: %.17g outside [%.17g, %.17g]", k, XYZ[j], d,
+                          out[k].d[j].lo, out[k].d[j].hi);
+                }
+        }
+    }
+    CHECK(checked > 30000, "enough derivatives checked: %d", checked);
+    /* tight where the rules are exact: d(x^2 y)/dx over [1, 2] x {1} is [2, 4] to a
+     * few ulps (1e-14: outward rounding of three operations) */
+    const char *sq[] = {"x^2 * y"};
+    ic_expr *q = NULL;
+    CHECK(ic_expr_compile(&q, sq, 1, XYZ, 3, NULL, 0, NULL, NULL) == IC_OK, "compile x^2 y");
+    box[0].v = (ic_interval){1, 2}, box[1].v = (ic_interval){1, 1}, box[2].v = (ic_interval){0, 0};
+    ic_expr_eval_interval_grad(q, out, box, 3, gwork);
+    CHECK(out[0].d[0].lo <= 2 && out[0].d[0].lo > 2 - 1e-14 && out[0].d[0].hi >= 4 &&
+              out[0].d[0].hi < 4 + 1e-14 && fabs(out[0].d[2].lo) <= 1e-300 &&
+              fabs(out[0].d[2].hi) <= 1e-300, /* outward rounding of 0: one subnormal */
+          "d(x^2 y)/dx over [1,2] x {1}: [%.17g, %.17g]", out[0].d[0].lo, out[0].d[0].hi);
+    ic_expr_free(q);
+    ic_expr_free(e);
+    ic_jet_space_free(sp);
+}
+
 int main(void)
 {
     harness_rng rng = {0x2545F4914F6CDD1Dull};
@@ -290,5 +370,6 @@ int main(void)
     test_eval_domain();
     test_eval_jet();
     test_intervals(&rng);
+    test_interval_gradients(&rng);
     return harness_finish("test_expr");
 }

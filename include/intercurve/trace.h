@@ -133,9 +133,15 @@ typedef struct {
      *  there unfound (a tangential curve, for one); listed in failures */
     int uncovered_cells;
     /** leaf cells not excluded where Newton converged outside the cell, and
-     *  that nothing found passes near: not proven empty (a loop smaller than
-     *  a cell could hide there; no normal-cone test yet) */
+     *  that nothing found passes near: not proven empty */
     int unproven_cells;
+    /** leaf cells not excluded where the normal cones prove that no closed
+     *  curve lies wholly inside (the loop test, trace.md) */
+    int loop_free_cells;
+    /** leaf cells not excluded where the loop test fails: the only places a
+     *  closed curve smaller than a cell can be (near tangency the test
+     *  cannot succeed: N_A x N_B vanishes there) */
+    int loop_cells;
     int nfailures;
     char failures[IC_TRACE_MAX_FAILURES][240];
 } ic_trace_report;

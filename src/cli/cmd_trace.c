@@ -100,6 +100,8 @@ static cJSON *result_json(const ic_trace_result *r, const ic_pair *pair)
     cJSON_AddNumberToObject(ro, "start_candidates", rep->candidates);
     cJSON_AddNumberToObject(ro, "uncovered_cells", rep->uncovered_cells);
     cJSON_AddNumberToObject(ro, "unproven_cells", rep->unproven_cells);
+    cJSON_AddNumberToObject(ro, "loop_free_cells", rep->loop_free_cells);
+    cJSON_AddNumberToObject(ro, "loop_cells", rep->loop_cells);
     cJSON *f = cJSON_CreateArray();
     for (int i = 0; i < rep->nfailures; i++)
         cJSON_AddItemToArray(f, cJSON_CreateString(rep->failures[i]));

@@ -46,6 +46,10 @@ int ic_tape_emit(ic_expr *e, ic_opcode op, int a, int b, long n, double c, int c
  * Returns a non-finite value where the operation is undefined. */
 double ic_op_eval_double(ic_opcode op, double a, double b, long n, double c);
 
+/* One instruction on intervals (src/expr/interval.c): the enclosure of
+ * op(a, b) where it is defined. */
+ic_interval ic_interval_op(const ic_instr *in, ic_interval a, ic_interval b);
+
 /* Name of the operation as written in formulas ("sin", "+", ...). */
 const char *ic_op_name(ic_opcode op);
 

@@ -287,7 +287,7 @@ ic_interval ic_interval_abs(ic_interval a)
 
 size_t ic_expr_interval_work_len(const ic_expr *e) { return (size_t)e->len; }
 
-static ic_interval interval_op(const ic_instr *in, ic_interval a, ic_interval b)
+ic_interval ic_interval_op(const ic_instr *in, ic_interval a, ic_interval b)
 {
     switch (in->op) {
     case OP_CONST: return (ic_interval){in->c, in->c};
@@ -326,7 +326,7 @@ void ic_expr_eval_interval(const ic_expr *e, ic_interval *out, const ic_interval
         const ic_instr *in = &e->code[i];
         const ic_interval a = in->op == OP_VAR ? x[in->n] : in->a >= 0 ? work[in->a] : ENTIRE;
         const ic_interval b = in->b >= 0 ? work[in->b] : ENTIRE;
-        work[i] = interval_op(in, a, b);
+        work[i] = ic_interval_op(in, a, b);
     }
     for (int k = 0; k < e->noutputs; k++)
         out[k] = work[e->outputs[k]];

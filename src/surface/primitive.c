@@ -205,8 +205,7 @@ static void parametric_taylor(const ic_surface *s, double *out, const double *at
 
 /* sum_i A_i d_i^2 + B_i d_i + C with d = x - center. */
 static void quadric_taylor(const ic_surface *s, double *out, const double *at,
-                           const ic_jet_space *sp, const double A[3], const double B[3],
-                           double C)
+                           const ic_jet_space *sp, const double A[3], const double B[3], double C)
 {
     const int K = ic_jet_space_order(sp);
     ic_jet_zero(out, sp);
@@ -245,8 +244,8 @@ static void torus_on_jets(const ic_primitive *p, double *out, double *const d[3]
     ic_jet_add(out, tmp, rho, sp);
 }
 
-static ic_status torus_taylor(ic_surface *s, double *out, const double *at,
-                              const ic_jet_space *sp, ic_error *err)
+static ic_status torus_taylor(ic_surface *s, double *out, const double *at, const ic_jet_space *sp,
+                              ic_error *err)
 {
     const int n = ic_jet_space_len(sp);
     double *w = ic_surface_work(s, IC_WORK_EVAL, 7 * (size_t)n);
@@ -295,8 +294,8 @@ static void quadric_coefficients(const ic_primitive *p, double A[3], double B[3]
 }
 
 /* Parametric primitive on jets u, v (w: 4 jets of workspace). */
-static void parametric_on_jets(const ic_surface *s, double *out, const double *u,
-                               const double *v, const ic_jet_space *sp, double *w)
+static void parametric_on_jets(const ic_surface *s, double *out, const double *u, const double *v,
+                               const ic_jet_space *sp, double *w)
 {
     const ic_primitive *p = &s->prim;
     const int n = ic_jet_space_len(sp);
@@ -381,8 +380,8 @@ ic_status ic_primitive_compose(ic_surface *s, double *out, const double *const *
     return IC_OK;
 }
 
-ic_status ic_primitive_taylor(ic_surface *s, double *out, const double *at,
-                              const ic_jet_space *sp, ic_error *err)
+ic_status ic_primitive_taylor(ic_surface *s, double *out, const double *at, const ic_jet_space *sp,
+                              ic_error *err)
 {
     if (s->kind == IC_PARAMETRIC) {
         parametric_taylor(s, out, at, sp);
@@ -425,4 +424,32 @@ ic_status ic_primitive_interval(ic_surface *s, ic_interval *out, const ic_interv
     out[0] = f;
     (void)err;
     return IC_OK;
+}
+
+void ic_primitive_interval_grad(ic_surface *s, ic_interval_grad *out, const ic_interval *in)
+{
+    const ic_primitive *p = &s->prim;
+    ic_interval d[3];
+    for (int i = 0; i < 3; i++)
+        d[i] = ic_interval_sub(in[i], (ic_interval){p->center[i], p->center[i]});
+    ic_primitive_interval(s, &out->v, in, NULL);
+    if (p->kind == IC_PRIM_TORUS) {
+        /* grad of (|d|^2 + R^2 - r^2)^2 - 4 R^2 (dx^2 + dy^2):
+         * 4 sum d - 8 R^2 (dx, dy, 0) */
+        const double R = p->major_radius, r = p->radius;
+        ic_interval sum = {R * R - r * r, R * R - r * r};
+        for (int i = 0; i < 3; i++)
+            sum = ic_interval_add(sum, ic_interval_pow_int(d[i], 2));
+        for (int i = 0; i < 3; i++) {
+            const ic_interval k =
+                i < 2 ? ic_interval_sub(sum, (ic_interval){2 * R * R, 2 * R * R}) : sum;
+            out->d[i] = ic_interval_mul(ic_interval_mul((ic_interval){4, 4}, d[i]), k);
+        }
+        return;
+    }
+    double A[3], B[3], C;
+    quadric_coefficients(p, A, B, &C);
+    for (int i = 0; i < 3; i++) /* 2 A_i d_i + B_i */
+        out->d[i] = ic_interval_add(ic_interval_mul((ic_interval){2 * A[i], 2 * A[i]}, d[i]),
+                                    (ic_interval){B[i], B[i]});
 }

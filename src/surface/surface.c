@@ -29,9 +29,9 @@ ic_status ic_surface_new_parametric(ic_surface **out, const char *const xyz[3],
     ic_surface *s = surface_alloc(IC_PARAMETRIC, BACKEND_FORMULA);
     if (!s)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory creating a surface");
-    ic_status st = ic_expr_compile(&s->expr, (const char *const *)xyz, 3,
-                                   params ? params : default_params, 2, consts, nconsts, which,
-                                   err);
+    ic_status st =
+        ic_expr_compile(&s->expr, (const char *const *)xyz, 3, params ? params : default_params, 2,
+                        consts, nconsts, which, err);
     if (st != IC_OK) {
         ic_surface_free(s);
         return st;
@@ -72,8 +72,8 @@ ic_status ic_surface_new_callback(ic_surface **out, ic_surface_kind kind, ic_sur
     return IC_OK;
 }
 
-ic_status ic_surface_new_primitive(ic_surface **out, const ic_primitive *prim,
-                                   ic_surface_kind form, ic_error *err)
+ic_status ic_surface_new_primitive(ic_surface **out, const ic_primitive *prim, ic_surface_kind form,
+                                   ic_error *err)
 {
     *out = NULL;
     if (!prim || (form != IC_PARAMETRIC && form != IC_IMPLICIT))
@@ -116,9 +116,8 @@ ic_status ic_surface_set_domain(ic_surface *s, const double domain[2][2], const 
         return ic_error_set(err, IC_ERR_INVALID, 0, "an implicit surface has no parameter domain");
     for (int i = 0; i < 2; i++) {
         if (!(domain[i][0] < domain[i][1]))
-            return ic_error_set(err, IC_ERR_INVALID, 0,
-                                "domain of parameter %d is empty: [%g, %g]", i + 1,
-                                domain[i][0], domain[i][1]);
+            return ic_error_set(err, IC_ERR_INVALID, 0, "domain of parameter %d is empty: [%g, %g]",
+                                i + 1, domain[i][0], domain[i][1]);
         if (periodic && periodic[i] && !(isfinite(domain[i][0]) && isfinite(domain[i][1])))
             return ic_error_set(err, IC_ERR_INVALID, 0,
                                 "periodic parameter %d needs a finite domain", i + 1);
@@ -185,7 +184,8 @@ static ic_status formula_taylor(ic_surface *s, double *out, const double *at,
                                 const ic_jet_space *sp, ic_error *err)
 {
     const int n = ic_jet_space_len(sp), nin = ic_surface_num_inputs(s);
-    double *w = ic_surface_work(s, IC_WORK_EVAL, (size_t)nin * n + ic_expr_jet_work_len(s->expr, sp));
+    double *w =
+        ic_surface_work(s, IC_WORK_EVAL, (size_t)nin * n + ic_expr_jet_work_len(s->expr, sp));
     if (!w)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory evaluating a surface");
     const double *in[3];
@@ -207,9 +207,12 @@ ic_status ic_surface_taylor(ic_surface *s, double *out, const double *at, const 
         if (!isfinite(at[i]))
             return ic_error_set(err, IC_ERR_INVALID, 0, "non-finite coordinate %d", i + 1);
     switch (s->backend) {
-    case BACKEND_FORMULA: return formula_taylor(s, out, at, sp, err);
-    case BACKEND_CALLBACK: return callback_taylor(s, out, at, sp, err);
-    case BACKEND_PRIMITIVE: return ic_primitive_taylor(s, out, at, sp, err);
+    case BACKEND_FORMULA:
+        return formula_taylor(s, out, at, sp, err);
+    case BACKEND_CALLBACK:
+        return callback_taylor(s, out, at, sp, err);
+    case BACKEND_PRIMITIVE:
+        return ic_primitive_taylor(s, out, at, sp, err);
     }
     return ic_error_set(err, IC_ERR_INVALID, 0, "corrupt surface");
 }
@@ -235,8 +238,8 @@ ic_status ic_surface_compose(ic_surface *s, double *out, const double *const *in
     double at[3];
     for (int i = 0; i < nin; i++)
         at[i] = in[i][0];
-    double *taylor = ic_surface_work(s, IC_WORK_COMPOSE,
-                                     (size_t)nout * tn + ic_jet_scratch_len(sp));
+    double *taylor =
+        ic_surface_work(s, IC_WORK_COMPOSE, (size_t)nout * tn + ic_jet_scratch_len(sp));
     if (!taylor)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory composing a surface");
     double *scratch = taylor + (size_t)nout * tn;
@@ -260,6 +263,38 @@ ic_status ic_surface_eval(ic_surface *s, double *out, const double *at, ic_error
     if (!sp)
         return err ? err->code : IC_ERR_NOMEM;
     return ic_surface_taylor(s, out, at, sp, err);
+}
+
+ic_status ic_surface_eval_interval_grad(ic_surface *s, ic_interval_grad *out, const ic_interval *in,
+                                        ic_error *err)
+{
+    if (s->backend == BACKEND_PRIMITIVE && s->kind == IC_IMPLICIT) {
+        ic_primitive_interval_grad(s, out, in);
+        return IC_OK;
+    }
+    if (s->backend != BACKEND_FORMULA)
+        return ic_error_set(err, IC_ERR_UNABLE, 0,
+                            "interval evaluation needs a formula surface or an implicit "
+                            "primitive");
+    const int nin = s->kind == IC_PARAMETRIC ? 2 : 3;
+    ic_interval_grad x[3];
+    for (int i = 0; i < nin; i++) {
+        x[i].v = in[i];
+        for (int k = 0; k < nin; k++)
+            x[i].d[k] = (ic_interval){i == k ? 1.0 : 0.0, i == k ? 1.0 : 0.0};
+    }
+    ic_interval_grad work[128];
+    ic_interval_grad *w = work;
+    const size_t len = ic_expr_interval_grad_work_len(s->expr);
+    if (len > 128) {
+        w = malloc(len * sizeof *w);
+        if (!w)
+            return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
+    }
+    ic_expr_eval_interval_grad(s->expr, out, x, nin, w);
+    if (w != work)
+        free(w);
+    return IC_OK;
 }
 
 ic_status ic_surface_eval_interval(ic_surface *s, ic_interval *out, const ic_interval *in,

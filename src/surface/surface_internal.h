@@ -47,5 +47,7 @@ ic_status ic_primitive_compose(ic_surface *s, double *out, const double *const *
 /* An implicit primitive over a box (interval arithmetic, outward rounded). */
 ic_status ic_primitive_interval(ic_surface *s, ic_interval *out, const ic_interval *in,
                                 ic_error *err);
+/* The same with the gradient of f (out->d[0..2]). */
+void ic_primitive_interval_grad(ic_surface *s, ic_interval_grad *out, const ic_interval *in);
 
 #endif

@@ -283,7 +283,21 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_can
             }
             continue;
         }
-        /* a leaf: Newton from the centre, kept if it stays near the cell */
+        /* a leaf: the loop test, then Newton from the centre, kept if it
+         * stays near the cell */
+        if (rep->proven) {
+            /* enlarged by a quarter cell each side: a closed curve of extent
+             * below a quarter cell through a point of this cell lies inside */
+            double elo[4], ehi[4];
+            for (int k = 0; k < dim; k++) {
+                const double q = 0.25 * (c.hi[k] - c.lo[k]);
+                elo[k] = c.lo[k] - q, ehi[k] = c.hi[k] + q;
+            }
+            if (ic_trace_cell_loop_free(S, par[0], par[1], elo, ehi))
+                rep->loop_free_cells++;
+            else
+                rep->loop_cells++;
+        }
         ic_candidate cand;
         memset(&cand, 0, sizeof cand);
         double x[3], uv[2];

@@ -75,4 +75,10 @@ ic_status ic_trace_complete_branches(ic_trace_result *r, ic_tracer *tr, ic_pair 
 ic_status ic_trace_tangential_in_cell(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
                                       const ic_unresolved *u, const ic_trace_options *opt);
 
+/* 1 when the normal cones over the search cell [lo, hi] (the search's
+ * coordinates for the pairing: parametric flags par0, par1) prove that no
+ * closed intersection curve lies wholly inside it (loops.c). */
+int ic_trace_cell_loop_free(ic_surface *const S[2], int par0, int par1, const double *lo,
+                            const double *hi);
+
 #endif

@@ -1,7 +1,9 @@
 /* The loop test of the search (src/trace/loops.c): sound (a cell holding a
  * closed intersection curve is never declared loop-free, in every pairing,
  * for random small loops) and useful (cells crossed by a transversal arc
- * away from tangency are proven loop-free); and the report of whole traces. */
+ * away from tangency are proven loop-free); a loop missed by the search at
+ * its depth and found by the finer search of its loop cell; and the report
+ * of whole traces. */
 #include <stdio.h>
 #include <string.h>
 
@@ -129,6 +131,48 @@ static void test_soundness(harness_rng *rng)
            trials, useful, tries);
 }
 
+/* A bead of radius 0.01 centred exactly on a leaf cell's centre (depth 6 in
+ * [-1, 1]^3): Newton from the centre meets grad f = 0 there and finds
+ * nothing, the collinear-normals search finds no point on both surfaces;
+ * the cell is a loop cell, searched three levels finer, where the loop is
+ * found: the circle of radius sqrt(1e-4 - 0.004^2). */
+static void test_refined_loop(void)
+{
+    ic_surface *A = NULL, *B = NULL;
+    ic_pair *pair = NULL;
+    ic_trace_result *res = NULL;
+    const double c[3] = {0.296875, 0.203125, 0.109375}; /* -1 + (k + 1/2)/32 */
+    A = sphere(c, 0.01, 0);
+    CHECK(ic_surface_new_implicit(&B, "z - 0.113375", NULL, 0, NULL) == IC_OK, "plane");
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    opt.has_box = 1;
+    for (int k = 0; k < 3; k++)
+        opt.box[k][0] = -1, opt.box[k][1] = 1;
+    if (A && B && ic_pair_new(&pair, A, B, NULL) == IC_OK &&
+        ic_trace(&res, pair, &opt, NULL) == IC_OK) {
+        const ic_trace_report *rep = ic_trace_result_report(res);
+        const double L = 2 * 3.14159265358979323846 * sqrt(1e-4 - 0.004 * 0.004);
+        const ic_trace_curve *cv = ic_trace_result_curve(res, 0);
+        CHECK(ic_trace_result_num_curves(res) == 1 && cv->closed &&
+                  fabs(cv->length - L) <= 1e-9 * L,
+              "the bead's circle found: %d curves, length %.17g of %.17g",
+              ic_trace_result_num_curves(res), cv ? cv->length : 0.0, L);
+        CHECK(rep->refined_cells == 1 && rep->uncovered_cells == 0 && rep->nfailures == 0,
+              "refined %d, uncovered %d, failures %d", rep->refined_cells, rep->uncovered_cells,
+              rep->nfailures);
+        if (cv)
+            printf("loop missed at depth 6, found by the finer search: length error %.2g\n",
+                   fabs(cv->length - L) / L);
+    } else {
+        CHECK(0, "trace of the bead");
+    }
+    ic_trace_result_free(res);
+    ic_pair_free(pair);
+    ic_surface_free(A);
+    ic_surface_free(B);
+}
+
 /* Whole traces: around the two cylinder loops every leaf cell is excluded or
  * loop-free (no closed curve of extent below a quarter cell can exist
  * besides the traced ones); the small loop's own cell cannot be. */
@@ -152,6 +196,7 @@ int main(int argc, char **argv)
 {
     harness_rng rng = {0x9E3779B97F4A7C15ull};
     test_soundness(&rng);
+    test_refined_loop();
     test_reports(argc > 1 ? argv[1] : ".");
     return harness_finish("test_loops");
 }

@@ -142,6 +142,9 @@ typedef struct {
      *  closed curve smaller than a cell can be (near tangency the test
      *  cannot succeed: N_A x N_B vanishes there) */
     int loop_cells;
+    /** unresolved leaf cells that nothing found passed near, searched again
+     *  a few levels finer (their finer cells replace them in the counts) */
+    int refined_cells;
     int nfailures;
     char failures[IC_TRACE_MAX_FAILURES][240];
 } ic_trace_report;

@@ -161,8 +161,9 @@ static ic_status domain_box(ic_surface *const S[2], int s, double lo[2], double 
     return IC_OK;
 }
 
-ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_candidate **out,
-                              int *nout, ic_unresolved **unres, int *nunres, ic_trace_report *rep,
+ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt,
+                              const ic_unresolved *within, ic_candidate **out, int *nout,
+                              ic_unresolved **unres, int *nunres, ic_trace_report *rep,
                               ic_error *err)
 {
     *out = NULL;
@@ -198,12 +199,18 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_can
     ic_interval probe_in[4], probe_out[3];
     for (int k = 0; k < 4; k++)
         probe_in[k] = (ic_interval){k < dim ? lo[k] : 0, k < dim ? hi[k] : 0};
-    rep->proven =
-        ic_surface_eval_interval(S[0], probe_out, probe_in, NULL) == IC_OK &&
-        ic_surface_eval_interval(S[1], probe_out, probe_in + (both ? 2 : 0), NULL) == IC_OK;
+    if (!within) /* a finer search keeps the whole search's answer */
+        rep->proven =
+            ic_surface_eval_interval(S[0], probe_out, probe_in, NULL) == IC_OK &&
+            ic_surface_eval_interval(S[1], probe_out, probe_in + (both ? 2 : 0), NULL) == IC_OK;
     /* four parameters: one level less (16 children a split) */
     const int full = both ? opt->depth - 1 : opt->depth;
-    const int depth = rep->proven ? full : (full < 4 ? full : 4);
+    int depth = rep->proven ? full : (full < 4 ? full : 4);
+    if (within) { /* a finer search of one leaf cell: 2^(dim * levels) leaves */
+        memcpy(lo, within->lo, sizeof lo);
+        memcpy(hi, within->hi, sizeof hi);
+        depth = dim == 4 ? 2 : 3;
+    }
     ic_jet_space *sp2 = NULL, *sp3 = NULL;
     ic_status st = ic_jet_space_new(&sp2, 2, 1, err);
     if (st == IC_OK)
@@ -221,9 +228,10 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_can
         stack[0].depth = 0;
         top = 1;
     }
-    rep->cell_size = 0.0;
+    double size = 0.0;
     for (int k = 0; k < dim; k++)
-        rep->cell_size = fmax(rep->cell_size, (hi[k] - lo[k]) / (1 << depth));
+        size = fmax(size, (hi[k] - lo[k]) / (1 << depth));
+    rep->cell_size = within ? fmin(rep->cell_size, size) : size;
     while (st == IC_OK && top > 0) {
         const cell c = stack[--top];
         rep->cells++;
@@ -285,6 +293,7 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_can
         }
         /* a leaf: the loop test, then Newton from the centre, kept if it
          * stays near the cell */
+        int loop = 1;
         if (rep->proven) {
             /* enlarged by a quarter cell each side: a closed curve of extent
              * below a quarter cell through a point of this cell lies inside */
@@ -293,10 +302,11 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_can
                 const double q = 0.25 * (c.hi[k] - c.lo[k]);
                 elo[k] = c.lo[k] - q, ehi[k] = c.hi[k] + q;
             }
-            if (ic_trace_cell_loop_free(S, par[0], par[1], elo, ehi))
-                rep->loop_free_cells++;
-            else
+            loop = !ic_trace_cell_loop_free(S, par[0], par[1], elo, ehi);
+            if (loop)
                 rep->loop_cells++;
+            else
+                rep->loop_free_cells++;
         }
         ic_candidate cand;
         memset(&cand, 0, sizeof cand);
@@ -341,6 +351,9 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_can
             ic_unresolved u;
             memset(&u, 0, sizeof u);
             u.converged_elsewhere = converged;
+            u.loop = loop;
+            memcpy(u.lo, c.lo, sizeof u.lo);
+            memcpy(u.hi, c.hi, sizeof u.hi);
             double t[9];
             if (mixed || both) {
                 const double uvc[2] = {0.5 * (c.lo[0] + c.hi[0]), 0.5 * (c.lo[1] + c.hi[1])};
@@ -384,7 +397,7 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_can
         *nunres = 0;
         return st;
     }
-    rep->candidates = list.n;
+    rep->candidates += list.n;
     *out = list.c;
     *nout = list.n;
     return IC_OK;

@@ -275,20 +275,15 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
     return add_curve(r, all, n0 + n1 - 1, 0, e0, e1, opt->shape_tol, at0, at1);
 }
 
-ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options *opt, ic_error *err)
+/* Traces a curve from every start candidate that no curve traced so far
+ * covers; a tangential candidate is recorded (or its tangential curve
+ * traced). */
+static ic_status trace_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
+                                  ic_candidate *cand, int nc, const ic_trace_options *opt,
+                                  ic_error *err)
 {
-    *out = NULL;
-    ic_trace_result *r = calloc(1, sizeof *r);
-    if (!r)
-        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory tracing");
-    ic_candidate *cand = NULL;
-    ic_unresolved *unres = NULL;
-    int nc = 0, nu = 0;
-    ic_tracer *tr = NULL;
-    ic_status st = ic_trace_candidates(pair, opt, &cand, &nc, &unres, &nu, &r->report, err);
-    if (st == IC_OK)
-        st = ic_tracer_new(&tr, pair, opt, err);
     const double radius = 2 * opt->chord + 1e-9;
+    ic_status st = IC_OK;
     for (int i = 0; st == IC_OK && i < nc; i++) {
         if (cand[i].covered)
             continue;
@@ -332,13 +327,85 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
             ic_trace_cover(cand, nc, pts, np2, radius);
         cand[i].covered = 1;
     }
+    return st;
+}
+
+/* Searches each unresolved loop cell (loops.c) that nothing found passes
+ * near a few levels finer (a loop smaller than the cell, missed by Newton
+ * from its centre)
+ * and traces what it finds; *unres is replaced by the finer search's
+ * unresolved cells there (and the cells passed over). */
+static ic_status refine_unresolved(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
+                                   const ic_trace_options *opt, ic_unresolved **unres, int *nu,
+                                   ic_error *err)
+{
+    ic_unresolved *kept = NULL;
+    int nk = 0, capk = 0;
+    ic_status st = IC_OK;
+    for (int i = 0; st == IC_OK && i < *nu; i++) {
+        const ic_unresolved *u = &(*unres)[i];
+        ic_candidate *cand = NULL;
+        ic_unresolved *sub = NULL;
+        int nc = 0, ns = 0;
+        /* only where the loop test failed can a closed curve hide whole */
+        const int refine = r->report.proven && u->loop && !ic_trace_found_near(r, u);
+        if (refine) {
+            r->report.refined_cells++;
+            st = ic_trace_candidates(pair, opt, u, &cand, &nc, &sub, &ns, &r->report, err);
+            if (st == IC_OK)
+                st = trace_candidates(r, tr, pair, cand, nc, opt, err);
+        }
+        const ic_unresolved *add = refine ? sub : u;
+        const int nadd = refine ? ns : 1;
+        if (st == IC_OK && nk + nadd > capk) {
+            capk = 2 * (nk + nadd) + 16;
+            ic_unresolved *p = realloc(kept, (size_t)capk * sizeof *p);
+            if (!p)
+                st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
+            else
+                kept = p;
+        }
+        if (st == IC_OK) {
+            memcpy(kept + nk, add, (size_t)nadd * sizeof *add);
+            nk += nadd;
+        }
+        free(cand);
+        free(sub);
+    }
+    if (st != IC_OK) {
+        free(kept);
+        return st;
+    }
+    free(*unres);
+    *unres = kept;
+    *nu = nk;
+    return IC_OK;
+}
+
+ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options *opt, ic_error *err)
+{
+    *out = NULL;
+    ic_trace_result *r = calloc(1, sizeof *r);
+    if (!r)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory tracing");
+    ic_candidate *cand = NULL;
+    ic_unresolved *unres = NULL;
+    int nc = 0, nu = 0;
+    ic_tracer *tr = NULL;
+    ic_status st = ic_trace_candidates(pair, opt, NULL, &cand, &nc, &unres, &nu, &r->report, err);
+    if (st == IC_OK)
+        st = ic_tracer_new(&tr, pair, opt, err);
+    if (st == IC_OK)
+        st = trace_candidates(r, tr, pair, cand, nc, opt, err);
     /* unresolved cells that nothing found passes near: a tangential point is
-     * looked for in each (an isolated contact has no curve to find it by);
-     * then every branch out of the singular points found so far is traced;
-     * what is still far from everything found is counted */
+     * looked for in each (an isolated contact has no curve to find it by),
+     * then a finer search; then every branch out of the singular points found
+     * so far is traced; what is still far from everything found is counted */
     for (int i = 0; st == IC_OK && i < nu; i++)
         if (!ic_trace_found_near(r, &unres[i]))
             st = ic_trace_tangential_in_cell(r, tr, pair, &unres[i], opt);
+    if (st == IC_OK)
+        st = refine_unresolved(r, tr, pair, opt, &unres, &nu, err);
     if (st == IC_OK)
         st = ic_trace_complete_branches(r, tr, pair, opt);
     for (int i = 0; st == IC_OK && i < nu; i++) {
@@ -356,7 +423,7 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
         }
     }
     if (st == IC_OK)
-        ic_trace_drop_duplicates(r, radius);
+        ic_trace_drop_duplicates(r, 2 * opt->chord + 1e-9);
     if (st == IC_OK && ic_trace_join_curves(r, opt->shape_tol, 50 * opt->chord) != IC_OK)
         st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory joining curves");
     ic_tracer_free(tr);

@@ -20,12 +20,16 @@ typedef struct {
     double params[2][2];
     double radius;
     int converged_elsewhere; /* Newton from the centre left the cell */
+    int loop;                /* the loop test failed (loops.c) */
+    double lo[4], hi[4];     /* the cell in the search's coordinates */
 } ic_unresolved;
 
-/* Start candidates by subdivision (search.c); fills the report's search part.
- * *out and *unres are malloc'ed (free them). */
-ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt, ic_candidate **out,
-                              int *n, ic_unresolved **unres, int *nunres, ic_trace_report *rep,
+/* Start candidates by subdivision (search.c) of the whole search region, or,
+ * when `within` is not NULL, of that leaf cell a few levels finer; adds to
+ * the report's search part. *out and *unres are malloc'ed (free them). */
+ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt,
+                              const ic_unresolved *within, ic_candidate **out, int *n,
+                              ic_unresolved **unres, int *nunres, ic_trace_report *rep,
                               ic_error *err);
 
 /* The result of ic_trace (trace.c, join.c, singular.c). */

@@ -179,6 +179,11 @@ typedef struct {
  */
 IC_NODISCARD ic_status ic_surface_geometry_at(ic_surface *s, ic_surface_geometry *g,
                                               const double *at, ic_error *err);
+/** The first-order part of ic_surface_geometry_at, several times cheaper:
+ *  point, value, normal, normal_length (and, parametric, the basis R_u,
+ *  R_v); the other fields are zero. Same errors at degenerate points. */
+IC_NODISCARD ic_status ic_surface_normal_at(ic_surface *s, ic_surface_geometry *g,
+                                            const double *at, ic_error *err);
 
 #ifdef __cplusplus
 }

@@ -138,12 +138,27 @@ ic_interval ic_interval_pow_int(ic_interval a, long n)
         return (ic_interval){1.0, 1.0};
     if (n < 0)
         return ic_interval_div((ic_interval){1.0, 1.0}, ic_interval_pow_int(a, -n));
-    const double pl = pow(a.lo, (double)n), ph = pow(a.hi, (double)n);
+    if (n == 1)
+        return a;
+    /* small powers by products (each correctly rounded: n - 1 ulps), the
+     * others by pow (LIBM_ULPS) */
+    double pl, ph, ulps;
+    if (n <= 4) {
+        pl = a.lo, ph = a.hi;
+        for (long k = 1; k < n; k++)
+            pl *= a.lo, ph *= a.hi;
+        ulps = (double)(n - 1);
+    } else {
+        pl = pow(a.lo, (double)n), ph = pow(a.hi, (double)n);
+        ulps = LIBM_ULPS;
+    }
+    /* in the subnormal range each product may err by half a subnormal */
+    const double tiny = 2.0 * (double)n * DBL_TRUE_MIN;
     if (n % 2 == 1 || a.lo >= 0.0)
-        return make(pl, ph, LIBM_ULPS);
+        return make(pl - tiny, ph + tiny, ulps);
     if (a.hi <= 0.0)
-        return make(ph, pl, LIBM_ULPS);
-    return (ic_interval){0.0, up(fmax(pl, ph), LIBM_ULPS)};
+        return make(ph - tiny, pl + tiny, ulps);
+    return (ic_interval){0.0, up(fmax(pl, ph) + tiny, ulps)};
 }
 
 ic_interval ic_interval_pow_real(ic_interval a, double p)
@@ -290,31 +305,56 @@ size_t ic_expr_interval_work_len(const ic_expr *e) { return (size_t)e->len; }
 ic_interval ic_interval_op(const ic_instr *in, ic_interval a, ic_interval b)
 {
     switch (in->op) {
-    case OP_CONST: return (ic_interval){in->c, in->c};
-    case OP_VAR: return a;
-    case OP_ADD: return ic_interval_add(a, b);
-    case OP_SUB: return ic_interval_sub(a, b);
-    case OP_MUL: return ic_interval_mul(a, b);
-    case OP_DIV: return ic_interval_div(a, b);
-    case OP_NEG: return ic_interval_neg(a);
-    case OP_POWI: return ic_interval_pow_int(a, in->n);
-    case OP_POWR: return ic_interval_pow_real(a, in->c);
-    case OP_POW: return ic_interval_pow(a, b);
-    case OP_SQRT: return ic_interval_sqrt(a);
-    case OP_EXP: return ic_interval_exp(a);
-    case OP_LOG: return ic_interval_log(a);
-    case OP_SIN: return ic_interval_sin(a);
-    case OP_COS: return ic_interval_cos(a);
-    case OP_TAN: return ic_interval_tan(a);
-    case OP_ASIN: return ic_interval_asin(a);
-    case OP_ACOS: return ic_interval_acos(a);
-    case OP_ATAN: return ic_interval_atan(a);
-    case OP_ATAN2: return ic_interval_atan2(a, b);
-    case OP_SINH: return ic_interval_sinh(a);
-    case OP_COSH: return ic_interval_cosh(a);
-    case OP_TANH: return ic_interval_tanh(a);
-    case OP_ABS: return ic_interval_abs(a);
-    case OP_COUNT: break;
+    case OP_CONST:
+        return (ic_interval){in->c, in->c};
+    case OP_VAR:
+        return a;
+    case OP_ADD:
+        return ic_interval_add(a, b);
+    case OP_SUB:
+        return ic_interval_sub(a, b);
+    case OP_MUL:
+        return ic_interval_mul(a, b);
+    case OP_DIV:
+        return ic_interval_div(a, b);
+    case OP_NEG:
+        return ic_interval_neg(a);
+    case OP_POWI:
+        return ic_interval_pow_int(a, in->n);
+    case OP_POWR:
+        return ic_interval_pow_real(a, in->c);
+    case OP_POW:
+        return ic_interval_pow(a, b);
+    case OP_SQRT:
+        return ic_interval_sqrt(a);
+    case OP_EXP:
+        return ic_interval_exp(a);
+    case OP_LOG:
+        return ic_interval_log(a);
+    case OP_SIN:
+        return ic_interval_sin(a);
+    case OP_COS:
+        return ic_interval_cos(a);
+    case OP_TAN:
+        return ic_interval_tan(a);
+    case OP_ASIN:
+        return ic_interval_asin(a);
+    case OP_ACOS:
+        return ic_interval_acos(a);
+    case OP_ATAN:
+        return ic_interval_atan(a);
+    case OP_ATAN2:
+        return ic_interval_atan2(a, b);
+    case OP_SINH:
+        return ic_interval_sinh(a);
+    case OP_COSH:
+        return ic_interval_cosh(a);
+    case OP_TANH:
+        return ic_interval_tanh(a);
+    case OP_ABS:
+        return ic_interval_abs(a);
+    case OP_COUNT:
+        break;
     }
     return ENTIRE;
 }

@@ -172,9 +172,8 @@ static double param_distance(const double *a, const double *b, const double doma
 
 /* Local minima of the distance on a grid, refined by Newton: the distinct
  * ones, nearest first. */
-static ic_status closest_candidates(ic_pair *pair, ic_surface *s, const double *X,
-                                    candidate *out, int *count, const ic_local_options *opt,
-                                    ic_error *err)
+static ic_status closest_candidates(ic_pair *pair, ic_surface *s, const double *X, candidate *out,
+                                    int *count, const ic_local_options *opt, ic_error *err)
 {
     double range[2][2], domain[2][2];
     int periodic[2];
@@ -328,8 +327,8 @@ static ic_status refine_system(ic_pair *pair, const ic_local_point *pt, const do
     double R[2][3], Ru[2][3], Rv[2][3], tmp[3][3];
     for (int s = 0; s < 2; s++)
         if (par[s]) {
-            ic_status st = param_eval2(pair, pair->s[s], pt->params[s], R[s], Ru[s], Rv[s],
-                                       tmp[0], tmp[1], tmp[2], err);
+            ic_status st = param_eval2(pair, pair->s[s], pt->params[s], R[s], Ru[s], Rv[s], tmp[0],
+                                       tmp[1], tmp[2], err);
             if (st != IC_OK)
                 return st;
         }
@@ -424,7 +423,7 @@ static ic_status sheet_normal(ic_pair *pair, const ic_local_point *pt, int which
     ic_surface *s = pair->s[which];
     const int par = ic_surface_get_kind(s) == IC_PARAMETRIC;
     ic_surface_geometry g;
-    ic_status st = ic_surface_geometry_at(s, &g, par ? pt->params[which] : pt->xyz, err);
+    ic_status st = ic_surface_normal_at(s, &g, par ? pt->params[which] : pt->xyz, err);
     if (st != IC_OK)
         return ic_sheet_singular(err, st, which);
     memcpy(N, g.normal, sizeof g.normal);
@@ -596,8 +595,7 @@ ic_status ic_local_locate_params(ic_pair *pair, ic_local_point *pt, const double
         double domain[2][2];
         int periodic[2];
         ic_surface_get_domain(pair->s[0], domain, periodic);
-        if (param_distance(pt->params[0], pt->params[1], domain, periodic) <=
-            opt->distinct_params)
+        if (param_distance(pt->params[0], pt->params[1], domain, periodic) <= opt->distinct_params)
             return ic_error_set(err, IC_ERR_INVALID, 0,
                                 "the two preimages (%g, %g) and (%g, %g) are the same point "
                                 "of the surface",

@@ -47,7 +47,7 @@ static int residuals(const tctx *c, const double *z, double *F)
     for (int s = 0; s < 2; s++) {
         ic_surface *srf = ic_pair_surface(c->pair, s);
         if (c->par[s]) {
-            if (ic_surface_geometry_at(srf, &g[s], pt.params[s], NULL) != IC_OK)
+            if (ic_surface_normal_at(srf, &g[s], pt.params[s], NULL) != IC_OK)
                 return -1;
             memcpy(X[s], g[s].point, sizeof X[s]);
         }
@@ -60,7 +60,7 @@ static int residuals(const tctx *c, const double *z, double *F)
         const double *P = c->par[0] ? X[0] : c->par[1] ? X[1] : pt.xyz;
         for (int s = 0; s < 2; s++)
             if (!c->par[s]) {
-                if (ic_surface_geometry_at(ic_pair_surface(c->pair, s), &g[s], P, NULL) != IC_OK)
+                if (ic_surface_normal_at(ic_pair_surface(c->pair, s), &g[s], P, NULL) != IC_OK)
                     return -1;
                 F[m++] = g[s].value / g[s].normal_length;
             }

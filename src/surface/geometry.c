@@ -56,10 +56,11 @@ static void principal(ic_surface_geometry *g)
     }
 }
 
+/* order 2: everything; order 1: the point, value, basis and normal only */
 static ic_status parametric_geometry(ic_surface *s, ic_surface_geometry *g, const double *at,
-                                     ic_error *err)
+                                     int order, ic_error *err)
 {
-    const ic_jet_space *sp = ic_surface_space(s, 2, err);
+    const ic_jet_space *sp = ic_surface_space(s, order, err);
     if (!sp)
         return err ? err->code : IC_ERR_NOMEM;
     /* slot 1: the Taylor backends may use slot 0 */
@@ -70,14 +71,15 @@ static ic_status parametric_geometry(ic_surface *s, ic_surface_geometry *g, cons
     if (st != IC_OK)
         return st;
     /* monomials: 1, u, v, u^2, uv, v^2; R_uu = 2 c[u^2], R_uv = c[uv] */
+    const int n = order == 2 ? 6 : 3;
     double Ruu[3], Ruv[3], Rvv[3];
     for (int k = 0; k < 3; k++) {
-        g->point[k] = t[6 * k];
-        g->basis[0][k] = t[6 * k + 1];
-        g->basis[1][k] = t[6 * k + 2];
-        Ruu[k] = 2.0 * t[6 * k + 3];
-        Ruv[k] = t[6 * k + 4];
-        Rvv[k] = 2.0 * t[6 * k + 5];
+        g->point[k] = t[n * k];
+        g->basis[0][k] = t[n * k + 1];
+        g->basis[1][k] = t[n * k + 2];
+        Ruu[k] = order == 2 ? 2.0 * t[n * k + 3] : 0.0;
+        Ruv[k] = order == 2 ? t[n * k + 4] : 0.0;
+        Rvv[k] = order == 2 ? 2.0 * t[n * k + 5] : 0.0;
     }
     g->value = 0.0;
     double c[3];
@@ -92,6 +94,8 @@ static ic_status parametric_geometry(ic_surface *s, ic_surface_geometry *g, cons
                             at[0], at[1], len);
     for (int k = 0; k < 3; k++)
         g->normal[k] = c[k] / len;
+    if (order < 2)
+        return IC_OK;
     g->first[0] = dot3(g->basis[0], g->basis[0]);
     g->first[1] = dot3(g->basis[0], g->basis[1]);
     g->first[2] = dot3(g->basis[1], g->basis[1]);
@@ -103,9 +107,9 @@ static ic_status parametric_geometry(ic_surface *s, ic_surface_geometry *g, cons
 }
 
 static ic_status implicit_geometry(ic_surface *s, ic_surface_geometry *g, const double *at,
-                                   ic_error *err)
+                                   int order, ic_error *err)
 {
-    const ic_jet_space *sp = ic_surface_space(s, 2, err);
+    const ic_jet_space *sp = ic_surface_space(s, order, err);
     if (!sp)
         return err ? err->code : IC_ERR_NOMEM;
     double *t = ic_surface_work(s, IC_WORK_COMPOSE, 10);
@@ -116,8 +120,12 @@ static ic_status implicit_geometry(ic_surface *s, ic_surface_geometry *g, const 
         return st;
     /* monomials: 1, x, y, z, x^2, xy, xz, y^2, yz, z^2 */
     const double grad[3] = {t[1], t[2], t[3]};
-    const double Hs[3][3] = {{2 * t[4], t[5], t[6]}, {t[5], 2 * t[7], t[8]},
-                             {t[6], t[8], 2 * t[9]}};
+    double Hs[3][3] = {{0}};
+    if (order == 2) {
+        const double H[3][3] = {
+            {2 * t[4], t[5], t[6]}, {t[5], 2 * t[7], t[8]}, {t[6], t[8], 2 * t[9]}};
+        memcpy(Hs, H, sizeof H);
+    }
     memcpy(g->point, at, 3 * sizeof *at);
     g->value = t[0];
     const double len = norm3(grad);
@@ -129,6 +137,8 @@ static ic_status implicit_geometry(ic_surface *s, ic_surface_geometry *g, const 
                             at[0], at[1], at[2]);
     for (int k = 0; k < 3; k++)
         g->normal[k] = grad[k] / len;
+    if (order < 2)
+        return IC_OK;
     /* e1: the coordinate axis least aligned with N, made orthogonal */
     int m = 0;
     for (int k = 1; k < 3; k++)
@@ -161,6 +171,15 @@ ic_status ic_surface_geometry_at(ic_surface *s, ic_surface_geometry *g, const do
 {
     memset(g, 0, sizeof *g);
     if (s->kind == IC_PARAMETRIC)
-        return parametric_geometry(s, g, at, err);
-    return implicit_geometry(s, g, at, err);
+        return parametric_geometry(s, g, at, 2, err);
+    return implicit_geometry(s, g, at, 2, err);
+}
+
+ic_status ic_surface_normal_at(ic_surface *s, ic_surface_geometry *g, const double *at,
+                               ic_error *err)
+{
+    memset(g, 0, sizeof *g);
+    if (s->kind == IC_PARAMETRIC)
+        return parametric_geometry(s, g, at, 1, err);
+    return implicit_geometry(s, g, at, 1, err);
 }

@@ -244,8 +244,8 @@ void ic_trace_drop_duplicates(ic_trace_result *r, double radius)
                 continue;
             inside = 1;
             for (int k = 0; k < ca->npoints && inside; k++)
-                inside = ic_trace_polyline_distance(cb->points, cb->npoints, ca->points[k].xyz) <=
-                         radius;
+                inside = ic_trace_polyline_distance(cb->points, cb->npoints, ca->points[k].xyz,
+                                                    radius) <= radius;
         }
         if (!inside)
             continue;

@@ -124,8 +124,8 @@ static double normals_angle(const ic_tracer *tr, const ic_local_point *pt)
     double N[2][3];
     for (int s = 0; s < 2; s++) {
         ic_surface_geometry g;
-        if (ic_surface_geometry_at(ic_pair_surface(tr->pair, s), &g,
-                                   tr->par[s] ? pt->params[s] : pt->xyz, NULL) != IC_OK)
+        if (ic_surface_normal_at(ic_pair_surface(tr->pair, s), &g,
+                                 tr->par[s] ? pt->params[s] : pt->xyz, NULL) != IC_OK)
             return -1;
         memcpy(N[s], g.normal, sizeof N[s]);
     }

@@ -25,13 +25,14 @@ static ic_status start_curve(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
     return IC_ERR_UNABLE;
 }
 
-/* Distance from x to the nearest traced curve, or INFINITY. */
-static double distance_to_curves(const ic_trace_result *r, const double *x)
+/* Whether a traced curve passes within `bound` of x. */
+static int near_curves(const ic_trace_result *r, const double *x, double bound)
 {
-    double best = INFINITY;
     for (int c = 0; c < r->ncurves; c++)
-        best = fmin(best, ic_trace_polyline_distance(r->curves[c].points, r->curves[c].npoints, x));
-    return best;
+        if (ic_trace_polyline_distance(r->curves[c].points, r->curves[c].npoints, x, bound) <=
+            bound)
+            return 1;
+    return 0;
 }
 
 /* Whether a traced curve or a recorded point passes within the cell's radius. */
@@ -43,7 +44,7 @@ int ic_trace_found_near(const ic_trace_result *r, const ic_unresolved *u)
         if (ic_norm3(d) <= u->radius)
             return 1;
     }
-    return distance_to_curves(r, u->xyz) <= u->radius;
+    return near_curves(r, u->xyz, u->radius);
 }
 
 /* Records a tangential point near `near`: located to full precision on the
@@ -91,10 +92,10 @@ ic_status ic_trace_complete_branches(ic_trace_result *r, ic_tracer *tr, ic_pair 
     for (int k = 0; k < r->nspecials; k++) {
         if (r->specials[k].approximate || r->specials[k].nbranches < 1)
             continue;
-        const ic_local_point at = r->special_pts[k];
-        ic_local_result res;
-        if (ic_local_apparatus(pair, &res, &at, 2, IC_METHOD_AUTO, &lo, NULL) != IC_OK)
+        if (!r->located[k].res_ok)
             continue;
+        const ic_local_point at = r->located[k].pt;
+        const ic_local_result res = r->located[k].res;
         for (int b = 0; b < res.nbranches; b++)
             for (int sgn = -1; sgn <= 1; sgn += 2) {
                 const ic_branch *br = &res.branches[b];
@@ -103,7 +104,7 @@ ic_status ic_trace_complete_branches(ic_trace_result *r, ic_tracer *tr, ic_pair 
                 ic_axpy3(q, at.xyz, sgn * delta, br->t);
                 if (br->frame_defined)
                     ic_axpy3(q, q, 0.5 * delta * delta * br->kappa, br->n);
-                if (distance_to_curves(r, q) <= 0.25 * delta)
+                if (near_curves(r, q, 0.25 * delta))
                     continue;
                 ic_local_point pt;
                 ic_local_result there;

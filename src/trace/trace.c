@@ -37,20 +37,51 @@ static double segment_distance(const double *p, const double *a, const double *b
     return ic_norm3(q);
 }
 
-double ic_trace_polyline_distance(const ic_trace_point *pts, int np, const double *x)
+/* Distance from x to the box around points [k0, k1] (0 inside). */
+static double box_distance(const ic_trace_point *pts, int k0, int k1, const double *x)
+{
+    double d2 = 0.0;
+    for (int i = 0; i < 3; i++) {
+        double lo = pts[k0].xyz[i], hi = lo;
+        for (int k = k0 + 1; k <= k1; k++) {
+            const double v = pts[k].xyz[i];
+            lo = v < lo ? v : lo;
+            hi = v > hi ? v : hi;
+        }
+        const double e = x[i] < lo ? lo - x[i] : x[i] > hi ? x[i] - hi : 0.0;
+        d2 += e * e;
+    }
+    return sqrt(d2);
+}
+
+double ic_trace_polyline_distance(const ic_trace_point *pts, int np, const double *x, double bound)
 {
     if (np == 1)
         return segment_distance(x, pts[0].xyz, pts[0].xyz);
+    /* chunks of 16 segments whose bounding box is farther than the bound
+     * are skipped, and the first segment within it ends the search (the
+     * coverage checks call this for every cell and candidate against every
+     * curve) */
+    enum { CHUNK = 16 };
     double best = INFINITY;
-    for (int k = 0; k + 1 < np; k++)
-        best = fmin(best, segment_distance(x, pts[k].xyz, pts[k + 1].xyz));
+    for (int k0 = 0; k0 + 1 < np; k0 += CHUNK) {
+        const int k1 = k0 + CHUNK < np - 1 ? k0 + CHUNK : np - 1;
+        if (box_distance(pts, k0, k1, x) > bound)
+            continue;
+        for (int k = k0; k < k1; k++) {
+            const double d = segment_distance(x, pts[k].xyz, pts[k + 1].xyz);
+            if (d <= bound)
+                return d;
+            best = d < best ? d : best;
+        }
+    }
     return best;
 }
 
 void ic_trace_cover(ic_candidate *c, int n, const ic_trace_point *pts, int np, double radius)
 {
     for (int i = 0; i < n; i++)
-        if (!c[i].covered && ic_trace_polyline_distance(pts, np, c[i].xyz) <= radius)
+        if (!c[i].covered && ic_trace_polyline_distance(pts, np, c[i].xyz, radius) <= radius)
             c[i].covered = 1;
 }
 
@@ -75,14 +106,15 @@ ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local
         ic_trace_special *p = realloc(r->specials, (size_t)cap * sizeof *p);
         if (p)
             r->specials = p;
-        ic_local_point *q = realloc(r->special_pts, (size_t)cap * sizeof *q);
+        ic_trace_located *q = realloc(r->located, (size_t)cap * sizeof *q);
         if (q)
-            r->special_pts = q;
+            r->located = q;
         if (!p || !q)
             return IC_ERR_NOMEM;
         r->caps = cap;
     }
-    r->special_pts[r->nspecials] = *pt;
+    ic_trace_located *loc = &r->located[r->nspecials];
+    loc->pt = *pt;
     ic_trace_special *s = &r->specials[r->nspecials++];
     memcpy(s->xyz, pt->xyz, sizeof s->xyz);
     s->approximate = approximate;
@@ -91,10 +123,10 @@ ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local
     ic_local_options o = opt->local;
     if (approximate)
         o.tangential_angle = 1e-3;
-    ic_local_result res;
-    if (ic_local_apparatus(pair, &res, pt, 2, IC_METHOD_AUTO, &o, NULL) == IC_OK) {
-        s->type = res.type;
-        s->nbranches = res.nbranches;
+    loc->res_ok = ic_local_apparatus(pair, &loc->res, pt, 3, IC_METHOD_AUTO, &o, NULL) == IC_OK;
+    if (loc->res_ok) {
+        s->type = loc->res.type;
+        s->nbranches = loc->res.nbranches;
     } else {
         s->type = IC_POINT_TANGENTIAL;
         s->nbranches = -1;
@@ -156,11 +188,10 @@ static int finish_end(ic_trace_result *r, ic_pair *pair, const ic_trace_options 
         ic_trace_add_special(r, pair, &near, 1, opt, NULL);
         return -1;
     }
-    ic_local_result res;
-    ic_local_options o = opt->local;
-    if (ic_local_apparatus(pair, &res, &P, 3, IC_METHOD_AUTO, &o, NULL) != IC_OK ||
-        ic_trace_add_special(r, pair, &P, 0, opt, &index) != IC_OK)
+    /* classified once, where it was first recorded */
+    if (ic_trace_add_special(r, pair, &P, 0, opt, &index) != IC_OK || !r->located[index].res_ok)
         return -1;
+    const ic_local_result res = r->located[index].res;
     double d[3];
     ic_axpy3(d, P.xyz, -1.0, last->xyz);
     *extra = *last;
@@ -402,7 +433,9 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
      * then a finer search; then every branch out of the singular points found
      * so far is traced; what is still far from everything found is counted */
     for (int i = 0; st == IC_OK && i < nu; i++)
-        if (!ic_trace_found_near(r, &unres[i]))
+        /* a loop-free cell has N_A x N_B != 0 throughout (or grad F != 0):
+         * no tangential point there (loops.c) */
+        if ((unres[i].loop || !r->report.proven) && !ic_trace_found_near(r, &unres[i]))
             st = ic_trace_tangential_in_cell(r, tr, pair, &unres[i], opt);
     if (st == IC_OK)
         st = refine_unresolved(r, tr, pair, opt, &unres, &nu, err);
@@ -447,7 +480,7 @@ void ic_trace_result_free(ic_trace_result *r)
     free(r->curves);
     free(r->at);
     free(r->specials);
-    free(r->special_pts);
+    free(r->located);
     free(r);
 }
 

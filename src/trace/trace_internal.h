@@ -32,6 +32,15 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt,
                               ic_unresolved **unres, int *nunres, ic_trace_report *rep,
                               ic_error *err);
 
+/* A recorded singular point: where it was located, and its apparatus to
+ * order 3 (res_ok: it could be computed), computed once and shared by every
+ * curve end there. */
+typedef struct {
+    ic_local_point pt;
+    ic_local_result res;
+    int res_ok;
+} ic_trace_located;
+
 /* The result of ic_trace (trace.c, join.c, singular.c). */
 struct ic_trace_result {
     ic_trace_curve *curves;
@@ -39,15 +48,18 @@ struct ic_trace_result {
     int (*at)[2];             /* the exact tangential point at each end, or -1 */
     int ncurves, capc;
     ic_trace_special *specials;
-    ic_local_point *special_pts; /* the located points, for their branches */
+    ic_trace_located *located; /* each special's point and apparatus */
     int nspecials, caps;
     ic_trace_report report;
 };
 
 /* trace.c: the report's failure list (at most IC_TRACE_MAX_FAILURES). */
 void ic_trace_failure(ic_trace_report *rep, const char *fmt, ...) IC_PRINTF(2, 3);
-/* Distance from x to the polyline pts (a single point when np = 1). */
-double ic_trace_polyline_distance(const ic_trace_point *pts, int np, const double *x);
+/* Distance from x to the polyline pts (a single point when np = 1) when it
+ * is at most `bound`; otherwise a value above bound (not always the
+ * distance: far parts are skipped). */
+double ic_trace_polyline_distance(const ic_trace_point *pts, int np, const double *x,
+                                  double bound);
 /* Marks the candidates within radius of the polyline pts as covered. */
 void ic_trace_cover(ic_candidate *c, int n, const ic_trace_point *pts, int np, double radius);
 /* Records a located tangential point (once), classified; *index its slot. */

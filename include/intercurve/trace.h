@@ -125,6 +125,7 @@ typedef struct {
 typedef struct {
     int cells;          /**< cells examined by the subdivision */
     int cells_excluded; /**< cells proven empty by interval arithmetic */
+    int cells_excluded_centred; /**< of those, leaves cleared by centred forms */
     int proven;         /**< 1: every surface had interval evaluation */
     int candidates;     /**< start candidates found by Newton in the remaining cells */
     double cell_size;   /**< the smallest cell (length or parameter units) */

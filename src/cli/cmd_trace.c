@@ -92,6 +92,7 @@ static cJSON *result_json(const ic_trace_result *r, const ic_pair *pair)
     cJSON *ro = cJSON_CreateObject();
     cJSON_AddNumberToObject(ro, "cells", rep->cells);
     cJSON_AddNumberToObject(ro, "cells_excluded_by_intervals", rep->cells_excluded);
+    cJSON_AddNumberToObject(ro, "cells_excluded_by_centred_forms", rep->cells_excluded_centred);
     cJSON_AddBoolToObject(ro, "exclusion_proven", rep->proven);
     cJSON_AddStringToObject(ro, "sampled",
                             rep->proven ? "start points inside the cells that were not excluded"

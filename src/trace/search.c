@@ -291,23 +291,7 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt,
             }
             continue;
         }
-        /* a leaf: the loop test, then Newton from the centre, kept if it
-         * stays near the cell */
-        int loop = 1;
-        if (rep->proven) {
-            /* enlarged by a quarter cell each side: a closed curve of extent
-             * below a quarter cell through a point of this cell lies inside */
-            double elo[4], ehi[4];
-            for (int k = 0; k < dim; k++) {
-                const double q = 0.25 * (c.hi[k] - c.lo[k]);
-                elo[k] = c.lo[k] - q, ehi[k] = c.hi[k] + q;
-            }
-            loop = !ic_trace_cell_loop_free(S, par[0], par[1], elo, ehi);
-            if (loop)
-                rep->loop_cells++;
-            else
-                rep->loop_free_cells++;
-        }
+        /* a leaf: Newton from the centre, kept if it stays near the cell */
         ic_candidate cand;
         memset(&cand, 0, sizeof cand);
         double x[3], uv[2];
@@ -342,6 +326,29 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt,
                 const double w = c.hi[k] - c.lo[k];
                 ok = x[k] >= c.lo[k] - w && x[k] <= c.hi[k] + w && x[k] >= lo[k] && x[k] <= hi[k];
             }
+        }
+        /* nothing found: centred forms may still prove the leaf empty (they
+         * separate two surfaces closer than a cell, centred.c) */
+        if (!ok && rep->proven && ic_trace_cell_excluded_centred(S, par[0], par[1], c.lo, c.hi)) {
+            rep->cells_excluded++;
+            rep->cells_excluded_centred++;
+            continue;
+        }
+        /* the loop test */
+        int loop = 1;
+        if (rep->proven) {
+            /* enlarged by a quarter cell each side: a closed curve of extent
+             * below a quarter cell through a point of this cell lies inside */
+            double elo[4], ehi[4];
+            for (int k = 0; k < dim; k++) {
+                const double q = 0.25 * (c.hi[k] - c.lo[k]);
+                elo[k] = c.lo[k] - q, ehi[k] = c.hi[k] + q;
+            }
+            loop = !ic_trace_cell_loop_free(S, par[0], par[1], elo, ehi);
+            if (loop)
+                rep->loop_cells++;
+            else
+                rep->loop_free_cells++;
         }
         if (ok) {
             memcpy(cand.xyz, x, sizeof x);

@@ -332,6 +332,12 @@ static ic_status trace_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *pa
                 : ic_local_locate(pair, &pt, cand[i].xyz, &lo, &e2)) != IC_OK) {
             ic_trace_failure(&r->report, "start candidate (%g, %g, %g): %s", cand[i].xyz[0],
                              cand[i].xyz[1], cand[i].xyz[2], e2.message);
+            /* the candidates at the same place (a pole's many preimages)
+             * would fail the same way: one failure is listed */
+            ic_trace_point one;
+            memset(&one, 0, sizeof one);
+            memcpy(one.xyz, cand[i].xyz, sizeof one.xyz);
+            ic_trace_cover(cand, nc, &one, 1, 1e-9 * (1 + ic_norm3(one.xyz)));
             cand[i].covered = 1;
             continue;
         }
@@ -366,6 +372,8 @@ static ic_status trace_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *pa
  * from its centre)
  * and traces what it finds; *unres is replaced by the finer search's
  * unresolved cells there (and the cells passed over). */
+enum { MAX_REFINED = 64 };
+
 static ic_status refine_unresolved(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
                                    const ic_trace_options *opt, ic_unresolved **unres, int *nu,
                                    ic_error *err)
@@ -378,8 +386,10 @@ static ic_status refine_unresolved(ic_trace_result *r, ic_tracer *tr, ic_pair *p
         ic_candidate *cand = NULL;
         ic_unresolved *sub = NULL;
         int nc = 0, ns = 0;
-        /* only where the loop test failed can a closed curve hide whole */
-        const int refine = r->report.proven && u->loop && !ic_trace_found_near(r, u);
+        /* where the loop test failed (a closed curve can hide whole there),
+         * or where Newton found nothing at all; at most MAX_REFINED cells */
+        const int refine = r->report.proven && r->report.refined_cells < MAX_REFINED &&
+                           (u->loop || !u->converged_elsewhere) && !ic_trace_found_near(r, u);
         if (refine) {
             r->report.refined_cells++;
             st = ic_trace_candidates(pair, opt, u, &cand, &nc, &sub, &ns, &r->report, err);

@@ -97,4 +97,9 @@ ic_status ic_trace_tangential_in_cell(ic_trace_result *r, ic_tracer *tr, ic_pair
 int ic_trace_cell_loop_free(ic_surface *const S[2], int par0, int par1, const double *lo,
                             const double *hi);
 
+/* 1 when centred forms prove the search cell [lo, hi] holds no point of
+ * both surfaces (centred.c). */
+int ic_trace_cell_excluded_centred(ic_surface *const S[2], int par0, int par1, const double *lo,
+                                   const double *hi);
+
 #endif

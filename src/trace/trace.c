@@ -406,7 +406,7 @@ static ic_status refine_unresolved(ic_trace_result *r, ic_tracer *tr, ic_pair *p
             else
                 kept = p;
         }
-        if (st == IC_OK) {
+        if (st == IC_OK && nadd > 0) {
             memcpy(kept + nk, add, (size_t)nadd * sizeof *add);
             nk += nadd;
         }

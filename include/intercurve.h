@@ -14,6 +14,7 @@
 #include "intercurve/trace.h"
 #include "intercurve/problem.h"
 #include "intercurve/writers.h"
+#include "intercurve/plot.h"
 
 #define IC_VERSION "0.1.0"
 

@@ -14,6 +14,7 @@ enum { EXIT_INPUT = 1, EXIT_COMPUTE = 2 };
 int ic_cmd_eval(int argc, char **argv);
 int ic_cmd_point(int argc, char **argv);
 int ic_cmd_trace(int argc, char **argv);
+int ic_cmd_plot(int argc, char **argv);
 
 /* Parses "a,b[,c]" (each a formula of constants, "pi/2") into out[max];
  * returns the count, or -1 with a message on stderr naming `option`. */

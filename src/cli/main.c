@@ -15,7 +15,8 @@ static const char USAGE[] =
     "          derivatives of any order with respect to arc length\n"
     "  trace   trace the whole intersection: every curve with its Frenet apparatus,\n"
     "          its shape and the tangential points met\n"
-    "  plot    (not yet available) draw surfaces, curves and frames\n"
+    "  plot    draw the surfaces, the curves coloured by curvature, Frenet frames,\n"
+    "          singular points, and a chart of curvature and torsion (SVG, PNG, PDF)\n"
     "\n"
     "example:\n"
     "  intercurve eval examples/viviani.json --surface sphere --at 0.3,0.4\n"
@@ -41,10 +42,8 @@ int main(int argc, char **argv)
         return ic_cmd_point(argc - 1, argv + 1);
     if (strcmp(argv[1], "trace") == 0)
         return ic_cmd_trace(argc - 1, argv + 1);
-    if (strcmp(argv[1], "plot") == 0) {
-        fprintf(stderr, "intercurve: '%s' is not available in this version yet\n", argv[1]);
-        return EXIT_INPUT;
-    }
+    if (strcmp(argv[1], "plot") == 0)
+        return ic_cmd_plot(argc - 1, argv + 1);
     fprintf(stderr, "intercurve: unknown command '%s' (try 'intercurve --help')\n", argv[1]);
     return EXIT_INPUT;
 }

@@ -123,7 +123,9 @@ ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local
     ic_local_options o = opt->local;
     if (approximate)
         o.tangential_angle = 1e-3;
-    loc->res_ok = ic_local_apparatus(pair, &loc->res, pt, 3, IC_METHOD_AUTO, &o, NULL) == IC_OK;
+    /* order 12: the branches' series also serve the curve points nearby
+     * (ic_trace_refit_near_special) */
+    loc->res_ok = ic_local_apparatus(pair, &loc->res, pt, 12, IC_METHOD_AUTO, &o, NULL) == IC_OK;
     if (loc->res_ok) {
         s->type = loc->res.type;
         s->nbranches = loc->res.nbranches;
@@ -173,8 +175,9 @@ static ic_status add_curve(ic_trace_result *r, ic_trace_point *pts, int n, int c
  * the branch continuing the curve, and recorded. Returns the special index,
  * or -1 (then the end is recorded approximately). */
 static int finish_end(ic_trace_result *r, ic_pair *pair, const ic_trace_options *opt,
-                      ic_trace_point *last, ic_trace_point *extra)
+                      ic_trace_point *pts, int n)
 {
+    ic_trace_point *last = &pts[n - 1], *extra = &pts[n];
     ic_local_point near, P;
     memset(&near, 0, sizeof near);
     memcpy(near.xyz, last->xyz, sizeof near.xyz);
@@ -226,6 +229,7 @@ static int finish_end(ic_trace_result *r, ic_pair *pair, const ic_trace_options 
         extra->frame_defined = br->frame_defined;
         /* the arc length of the last step, end-corrected (join.c) */
         extra->s = last->s + ic_trace_gap_length(last, last->t, extra, extra->t);
+        ic_trace_refit_near_special(pts, n, br, sg);
     }
     return index;
 }
@@ -253,7 +257,7 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
     memcpy(fwd, ic_tracer_point(tr, 0), (size_t)n1 * sizeof *fwd);
     int at1 = -1, at0 = -1;
-    if (e1 == IC_TRACE_TANGENTIAL && (at1 = finish_end(r, pair, opt, &fwd[n1 - 1], &fwd[n1])) >= 0)
+    if (e1 == IC_TRACE_TANGENTIAL && (at1 = finish_end(r, pair, opt, fwd, n1)) >= 0)
         n1++;
     if (e1 == IC_TRACE_CLOSED) {
         *pts_out = fwd;
@@ -277,8 +281,7 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
     }
     memcpy(back, ic_tracer_point(tr, 0), (size_t)n0 * sizeof *back);
-    if (e0 == IC_TRACE_TANGENTIAL &&
-        (at0 = finish_end(r, pair, opt, &back[n0 - 1], &back[n0])) >= 0)
+    if (e0 == IC_TRACE_TANGENTIAL && (at0 = finish_end(r, pair, opt, back, n0)) >= 0)
         n0++;
     ic_trace_point *all = malloc((size_t)(n0 + n1 - 1) * sizeof *all);
     if (!all) {

@@ -102,4 +102,10 @@ int ic_trace_cell_loop_free(ic_surface *const S[2], int par0, int par1, const do
 int ic_trace_cell_excluded_centred(ic_surface *const S[2], int par0, int par1, const double *lo,
                                    const double *hi);
 
+/* Curve points just before a located singular point pts[n] (the curve's
+ * end, continued by branch br with orientation sg) where the normals are
+ * nearly parallel: their t, n, b, kappa and tau are recomputed from the
+ * branch's Taylor series (singular.c). */
+void ic_trace_refit_near_special(ic_trace_point *pts, int n, const ic_branch *br, double sg);
+
 #endif

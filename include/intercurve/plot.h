@@ -1,0 +1,56 @@
+/**
+ * @file plot.h
+ * Pictures of an intersection (docs/plots.md): a 3D view of both surfaces
+ * as shaded, partly transparent meshes, the traced curves coloured by
+ * curvature with a colour bar, Frenet frames along them, the singular
+ * points labelled by type, axes with ticks; and a chart of curvature and
+ * torsion against arc length. Drawn with cairo into SVG, PNG or PDF.
+ */
+#ifndef INTERCURVE_PLOT_H
+#define INTERCURVE_PLOT_H
+
+#include "intercurve/common.h"
+#include "intercurve/surface.h"
+#include "intercurve/trace.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct {
+    int width, height;         /**< pixels (PNG) or points (SVG, PDF); default 1400 x 800 */
+    double azimuth, elevation; /**< the view, degrees (default 35, 25) */
+    int frames;                /**< Frenet frames drawn along the curves (default 8) */
+    int chart;                 /**< 1: the curvature and torsion panel (default) */
+    int mesh;                  /**< mesh cells per parameter or box axis (default 36) */
+} ic_plot_options;
+
+void ic_plot_defaults(ic_plot_options *opt);
+
+/** What a picture shows. Surfaces are not owned. A parametric surface is
+ *  meshed over its domain (and cut to the box if there is one), an implicit
+ *  one inside the box (or, without a box, inside the other surface's and the
+ *  curves' bounding box). trace may be NULL: surfaces only. */
+typedef struct {
+    const char *title;
+    ic_surface *surfaces[2];
+    const char *names[2];
+    int nsurfaces; /**< 1 for a self-intersection */
+    int has_box;
+    double box[3][2];
+    const ic_trace_result *trace;
+} ic_plot_scene;
+
+/**
+ * Draws the scene into `path`; the format comes from its extension (.svg,
+ * .png or .pdf, IC_ERR_INVALID otherwise). Written through a temporary file
+ * and a rename (IC_ERR_IO when that fails). Where the trace has no curve and
+ * no point, the figure says "no intersection".
+ */
+IC_NODISCARD ic_status ic_plot_write(const char *path, const ic_plot_scene *scene,
+                                     const ic_plot_options *opt, ic_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

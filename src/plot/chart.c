@@ -1,0 +1,184 @@
+/*
+ * The chart: curvature (top) and torsion (bottom) against arc length, one
+ * line per curve in the curve palette, the singular points on each curve
+ * marked by a dashed vertical line. Torsion blows up near tangential points
+ * and where kappa -> 0, so its range is that of the 2nd to 98th percentile
+ * (widened by a fifth) when the extremes lie far outside it; the plot is
+ * clipped to its frame and says so.
+ */
+#include "plot_internal.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+static int cmp_qsort(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y ? 1 : 0;
+}
+
+/* The value range of kappa (which 0) or tau (1); *clipped when the
+ * percentile range was used. */
+static void value_range(const ic_trace_result *tr, int which, double *lo, double *hi, int *clipped)
+{
+    *clipped = 0;
+    int n = 0;
+    for (int c = 0; c < ic_trace_result_num_curves(tr); c++)
+        n += ic_trace_result_curve(tr, c)->npoints;
+    double *v = malloc(((size_t)n + 1) * sizeof *v);
+    int m = 0;
+    for (int c = 0; v && c < ic_trace_result_num_curves(tr); c++) {
+        const ic_trace_curve *cv = ic_trace_result_curve(tr, c);
+        for (int k = 0; k < cv->npoints; k++) {
+            const ic_trace_point *p = &cv->points[k];
+            const double x = which ? (p->frame_defined ? p->tau : NAN) : p->kappa;
+            if (isfinite(x))
+                v[m++] = x;
+        }
+    }
+    if (m == 0) {
+        *lo = -1, *hi = 1;
+        free(v);
+        return;
+    }
+    qsort(v, (size_t)m, sizeof *v, cmp_qsort);
+    *lo = v[0], *hi = v[m - 1];
+    const double p2 = v[(int)(0.02 * (m - 1))], p98 = v[(int)(0.98 * (m - 1))];
+    const double core = p98 - p2;
+    if (core > 0 && (*hi - *lo) > 3 * core) {
+        *lo = p2 - 0.2 * core, *hi = p98 + 0.2 * core;
+        *clipped = 1;
+    }
+    if (which == 0 && *lo > 0 && *lo < 0.25 * *hi)
+        *lo = 0; /* curvature from 0 when that costs little */
+    if (!(*hi - *lo > 1e-9 * fmax(fabs(*hi), 1e-12))) { /* constant */
+        const double pad = fmax(0.1 * fabs(*hi), 0.1);
+        *lo -= pad, *hi += pad;
+    }
+    free(v);
+}
+
+/* One panel: frame, ticks, the lines, the singular points. */
+static void panel(cairo_t *cr, const ic_trace_result *tr, int which, double x, double y, double w,
+                  double h, double smax)
+{
+    double lo, hi;
+    int clipped;
+    value_range(tr, which, &lo, &hi, &clipped);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_rectangle(cr, x, y, w, h);
+    cairo_fill(cr);
+    /* grid and ticks */
+    double first, step;
+    int n = plot_ticks(lo, hi, 4, &first, &step);
+    cairo_set_line_width(cr, 0.6);
+    for (int i = 0; i < n; i++) {
+        const double v = first + i * step, yy = y + h - (v - lo) / (hi - lo) * h;
+        cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
+        cairo_move_to(cr, x, yy);
+        cairo_line_to(cr, x + w, yy);
+        cairo_stroke(cr);
+        char buf[32];
+        plot_tick_label(buf, sizeof buf, v, step);
+        cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+        plot_text(cr, x - 5, yy, 11, 0, buf, 1, 0.5);
+    }
+    n = plot_ticks(0, smax, 5, &first, &step);
+    for (int i = 0; i < n; i++) {
+        const double v = first + i * step, xx = x + v / smax * w;
+        cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
+        cairo_move_to(cr, xx, y);
+        cairo_line_to(cr, xx, y + h);
+        cairo_stroke(cr);
+        char buf[32];
+        plot_tick_label(buf, sizeof buf, v, step);
+        cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+        plot_text(cr, xx, y + h + 5, 11, 0, buf, 0.5, 0);
+    }
+    cairo_save(cr);
+    cairo_rectangle(cr, x, y, w, h);
+    cairo_clip(cr);
+    for (int c = 0; c < ic_trace_result_num_curves(tr); c++) {
+        const ic_trace_curve *cv = ic_trace_result_curve(tr, c);
+        double rgb[3];
+        plot_curve_color(c, rgb);
+        cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
+        cairo_set_line_width(cr, 1.6);
+        int pen = 0;
+        for (int k = 0; k < cv->npoints; k++) {
+            const ic_trace_point *p = &cv->points[k];
+            const double v = which ? (p->frame_defined ? p->tau : NAN) : p->kappa;
+            if (!isfinite(v)) { /* undefined here: the line breaks */
+                pen = 0;
+                continue;
+            }
+            const double xx = x + (p->s - cv->points[0].s) / smax * w;
+            const double yy = y + h - (v - lo) / (hi - lo) * h;
+            if (pen)
+                cairo_line_to(cr, xx, yy);
+            else
+                cairo_move_to(cr, xx, yy);
+            pen = 1;
+        }
+        cairo_stroke(cr);
+        /* the singular points on this curve */
+        const double dash[2] = {4, 3};
+        cairo_set_dash(cr, dash, 2, 0);
+        cairo_set_line_width(cr, 1);
+        cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
+        for (int k = 0; k < cv->npoints; k++)
+            if (ic_trace_point_type(tr, cv, &cv->points[k]) != IC_POINT_TRANSVERSAL) {
+                const double xx = x + (cv->points[k].s - cv->points[0].s) / smax * w;
+                cairo_move_to(cr, xx, y);
+                cairo_line_to(cr, xx, y + h);
+                cairo_stroke(cr);
+            }
+        cairo_set_dash(cr, NULL, 0, 0);
+    }
+    cairo_restore(cr);
+    cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
+    cairo_set_line_width(cr, 1);
+    cairo_rectangle(cr, x, y, w, h);
+    cairo_stroke(cr);
+    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+    plot_text(cr, x, y - 8, 13, 1,
+              which
+                  ? (clipped ? "torsion \xcf\x84 (clipped to the 2-98% range)" : "torsion \xcf\x84")
+                  : (clipped ? "curvature \xce\xba (clipped)" : "curvature \xce\xba"),
+              0, 1);
+}
+
+void plot_draw_chart(cairo_t *cr, const ic_trace_result *tr, double x, double y, double w, double h)
+{
+    double smax = 0;
+    const int nc = tr ? ic_trace_result_num_curves(tr) : 0;
+    for (int c = 0; c < nc; c++)
+        smax = fmax(smax, ic_trace_result_curve(tr, c)->length);
+    if (nc == 0 || !(smax > 0)) {
+        cairo_set_source_rgb(cr, 0.4, 0.4, 0.4);
+        plot_text(cr, x + 0.5 * w, y + 0.5 * h, 13, 0, "no curve: no curvature to chart", 0.5, 0.5);
+        return;
+    }
+    const double left = 55, ph = 0.5 * (h - 110);
+    panel(cr, tr, 0, x + left, y + 30, w - left - 15, ph, smax);
+    panel(cr, tr, 1, x + left, y + 30 + ph + 50, w - left - 15, ph, smax);
+    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+    plot_text(cr, x + left + 0.5 * (w - left - 15), y + h - 22, 12, 0, "arc length s", 0.5, 0.5);
+    /* the curve legend */
+    double lx = x + left;
+    for (int c = 0; c < nc && c < 8; c++) {
+        double rgb[3];
+        char buf[32];
+        plot_curve_color(c, rgb);
+        cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
+        cairo_set_line_width(cr, 3);
+        cairo_move_to(cr, lx, y + h - 5);
+        cairo_line_to(cr, lx + 16, y + h - 5);
+        cairo_stroke(cr);
+        snprintf(buf, sizeof buf, "curve %d", c + 1);
+        cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+        plot_text(cr, lx + 20, y + h - 5, 11, 0, buf, 0, 0.5);
+        lx += 30 + plot_text_width(cr, 11, 0, buf);
+    }
+}

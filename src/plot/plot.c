@@ -1,0 +1,107 @@
+/*
+ * A figure: the title, the 3D panel (left) and the chart (right), on a
+ * cairo surface chosen by the file's extension, written through a
+ * temporary file and a rename.
+ */
+#include "plot_internal.h"
+
+#include <cairo-pdf.h>
+#include <cairo-svg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+void ic_plot_defaults(ic_plot_options *opt)
+{
+    opt->width = 1400;
+    opt->height = 800;
+    opt->azimuth = 35;
+    opt->elevation = 25;
+    opt->frames = 8;
+    opt->chart = 1;
+    opt->mesh = 36;
+}
+
+typedef enum { FMT_SVG, FMT_PNG, FMT_PDF, FMT_NONE } plot_format;
+
+static plot_format format_of(const char *path)
+{
+    const char *dot = strrchr(path, '.');
+    if (!dot)
+        return FMT_NONE;
+    if (strcmp(dot, ".svg") == 0)
+        return FMT_SVG;
+    if (strcmp(dot, ".png") == 0)
+        return FMT_PNG;
+    if (strcmp(dot, ".pdf") == 0)
+        return FMT_PDF;
+    return FMT_NONE;
+}
+
+/* The title, shrunk to fit the width. */
+static void draw_title(cairo_t *cr, const char *title, double w)
+{
+    if (!title || !*title)
+        return;
+    double size = 20;
+    while (size > 10 && plot_text_width(cr, size, 1, title) > w - 40)
+        size -= 1;
+    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+    plot_text(cr, 0.5 * w, 16, size, 1, title, 0.5, 0);
+}
+
+ic_status ic_plot_write(const char *path, const ic_plot_scene *scene, const ic_plot_options *opt,
+                        ic_error *err)
+{
+    const plot_format fmt = format_of(path);
+    if (fmt == FMT_NONE)
+        return ic_error_set(err, IC_ERR_INVALID, 0,
+                            "cannot tell the picture's format from '%s': use .svg, .png or .pdf",
+                            path);
+    if (opt->width < 200 || opt->height < 150 || opt->width > 10000 || opt->height > 10000)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "a picture of %d x %d: each side in 200..10000",
+                            opt->width, opt->height);
+    if (scene->nsurfaces < 1 || scene->nsurfaces > 2)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "a picture shows one or two surfaces");
+    const size_t len = strlen(path) + 16;
+    char *tmp = malloc(len);
+    if (!tmp)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
+    /* the temporary name keeps the extension (some viewers look at it) */
+    snprintf(tmp, len, "%s.tmp%s", path, strrchr(path, '.'));
+    const double W = opt->width, H = opt->height;
+    cairo_surface_t *surf =
+        fmt == FMT_SVG   ? cairo_svg_surface_create(tmp, W, H)
+        : fmt == FMT_PDF ? cairo_pdf_surface_create(tmp, W, H)
+                         : cairo_image_surface_create(CAIRO_FORMAT_ARGB32, opt->width, opt->height);
+    cairo_t *cr = cairo_create(surf);
+    ic_status st = IC_OK;
+    if (cairo_status(cr) != CAIRO_STATUS_SUCCESS)
+        st = ic_error_set(err, IC_ERR_IO, 0, "cannot draw into %s: %s", tmp,
+                          cairo_status_to_string(cairo_status(cr)));
+    if (st == IC_OK) {
+        cairo_set_source_rgb(cr, 1, 1, 1);
+        cairo_paint(cr);
+        draw_title(cr, scene->title, W);
+        const int chart = opt->chart && scene->trace;
+        const double w3 = chart ? 0.62 * W : W;
+        st = plot_draw_3d(cr, scene, opt, 0, 40, w3, H - 40, err);
+        if (st == IC_OK && chart)
+            plot_draw_chart(cr, scene->trace, w3 + 10, 50, W - w3 - 20, H - 60);
+    }
+    cairo_destroy(cr);
+    if (st == IC_OK && fmt == FMT_PNG &&
+        cairo_surface_write_to_png(surf, tmp) != CAIRO_STATUS_SUCCESS)
+        st = ic_error_set(err, IC_ERR_IO, 0, "cannot write %s", path);
+    cairo_surface_finish(surf);
+    if (st == IC_OK && cairo_surface_status(surf) != CAIRO_STATUS_SUCCESS)
+        st = ic_error_set(err, IC_ERR_IO, 0, "cannot write %s: %s", path,
+                          cairo_status_to_string(cairo_surface_status(surf)));
+    cairo_surface_destroy(surf);
+    if (st == IC_OK && rename(tmp, path) != 0)
+        st = ic_error_set(err, IC_ERR_IO, 0, "cannot write %s", path);
+    if (st != IC_OK)
+        remove(tmp);
+    free(tmp);
+    return st;
+}

@@ -20,7 +20,8 @@ static int cmp_qsort(const void *a, const void *b)
 
 /* The value range of kappa (which 0) or tau (1); *clipped when the
  * percentile range was used. */
-static void value_range(const ic_trace_result *tr, int which, double *lo, double *hi, int *clipped)
+static void value_range(const ic_trace_result *tr, int which, double scale, double *lo, double *hi,
+                        int *clipped)
 {
     *clipped = 0;
     int n = 0;
@@ -44,6 +45,13 @@ static void value_range(const ic_trace_result *tr, int which, double *lo, double
     }
     qsort(v, (size_t)m, sizeof *v, cmp_qsort);
     *lo = v[0], *hi = v[m - 1];
+    /* constant to rounding (relative to the curvature's scale for torsion) */
+    if (*hi - *lo <= 1e-9 * fmax(fmax(fabs(*lo), fabs(*hi)), scale)) {
+        const double mid = 0.5 * (*lo + *hi), pad = fmax(0.1 * fabs(mid), 0.1 * scale);
+        *lo = mid - (pad > 0 ? pad : 0.1), *hi = mid + (pad > 0 ? pad : 0.1);
+        free(v);
+        return;
+    }
     const double p2 = v[(int)(0.02 * (m - 1))], p98 = v[(int)(0.98 * (m - 1))];
     const double core = p98 - p2;
     if (core > 0 && (*hi - *lo) > 3 * core) {
@@ -52,20 +60,21 @@ static void value_range(const ic_trace_result *tr, int which, double *lo, double
     }
     if (which == 0 && *lo > 0 && *lo < 0.25 * *hi)
         *lo = 0; /* curvature from 0 when that costs little */
-    if (!(*hi - *lo > 1e-9 * fmax(fabs(*hi), 1e-12))) { /* constant */
-        const double pad = fmax(0.1 * fabs(*hi), 0.1);
-        *lo -= pad, *hi += pad;
-    }
+    /* a margin, so that extremes do not run along the frame */
+    const double pad = 0.06 * (*hi - *lo);
+    *hi += pad;
+    if (!(which == 0 && *lo == 0))
+        *lo -= pad;
     free(v);
 }
 
 /* One panel: frame, ticks, the lines, the singular points. */
 static void panel(cairo_t *cr, const ic_trace_result *tr, int which, double x, double y, double w,
-                  double h, double smax)
+                  double h, double smax, double scale)
 {
     double lo, hi;
     int clipped;
-    value_range(tr, which, &lo, &hi, &clipped);
+    value_range(tr, which, scale, &lo, &hi, &clipped);
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_rectangle(cr, x, y, w, h);
     cairo_fill(cr);
@@ -127,13 +136,15 @@ static void panel(cairo_t *cr, const ic_trace_result *tr, int which, double x, d
         cairo_set_dash(cr, dash, 2, 0);
         cairo_set_line_width(cr, 1);
         cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
-        for (int k = 0; k < cv->npoints; k++)
-            if (ic_trace_point_type(tr, cv, &cv->points[k]) != IC_POINT_TRANSVERSAL) {
+        for (int k = 0; k < cv->npoints; k++) {
+            const ic_point_type ty = ic_trace_point_type(tr, cv, &cv->points[k]);
+            if (ty != IC_POINT_TRANSVERSAL && ty != IC_POINT_TANGENTIAL_CURVE) {
                 const double xx = x + (cv->points[k].s - cv->points[0].s) / smax * w;
                 cairo_move_to(cr, xx, y);
                 cairo_line_to(cr, xx, y + h);
                 cairo_stroke(cr);
             }
+        }
         cairo_set_dash(cr, NULL, 0, 0);
     }
     cairo_restore(cr);
@@ -160,11 +171,20 @@ void plot_draw_chart(cairo_t *cr, const ic_trace_result *tr, double x, double y,
         plot_text(cr, x + 0.5 * w, y + 0.5 * h, 13, 0, "no curve: no curvature to chart", 0.5, 0.5);
         return;
     }
-    const double left = 55, ph = 0.5 * (h - 110);
-    panel(cr, tr, 0, x + left, y + 30, w - left - 15, ph, smax);
-    panel(cr, tr, 1, x + left, y + 30 + ph + 50, w - left - 15, ph, smax);
+    /* two panels, each with its s ticks below it; the axis title and the
+     * curve legend at the bottom */
+    const double left = 55, ph = 0.5 * (h - 140); /* the scale of both: the largest curvature */
+    double kscale = 0;
+    for (int c = 0; c < nc; c++) {
+        const ic_trace_curve *cv = ic_trace_result_curve(tr, c);
+        for (int k = 0; k < cv->npoints; k++)
+            if (isfinite(cv->points[k].kappa))
+                kscale = fmax(kscale, cv->points[k].kappa);
+    }
+    panel(cr, tr, 0, x + left, y + 30, w - left - 15, ph, smax, kscale);
+    panel(cr, tr, 1, x + left, y + 30 + ph + 50, w - left - 15, ph, smax, kscale);
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-    plot_text(cr, x + left + 0.5 * (w - left - 15), y + h - 22, 12, 0, "arc length s", 0.5, 0.5);
+    plot_text(cr, x + left + 0.5 * (w - left - 15), y + h - 28, 12, 0, "arc length s", 0.5, 0.5);
     /* the curve legend */
     double lx = x + left;
     for (int c = 0; c < nc && c < 8; c++) {

@@ -146,20 +146,61 @@ static void draw_axes(ctx3d *c)
     for (int k = 0; k < 3; k++)
         size = fmax(size, c->box[k][1] - c->box[k][0]);
     for (int ax = 0; ax < 3; ax++) {
-        /* ticks point away from the box along the next axis (z ticks along x) */
-        const int off = ax == 2 ? 0 : (ax + 1) % 3;
+        /* the edge to label: x and y along the bottom, the one lowest on the
+         * screen; z the vertical edge farthest left. Ticks point away from
+         * the box along the coordinate `off`. */
+        const int o1 = (ax + 1) % 3, o2 = (ax + 2) % 3;
+        double best = -INFINITY, corner[3] = {0, 0, 0};
+        int off = o1;
+        double sign = -1;
+        for (int e = 0; e < 4; e++) {
+            double p[3];
+            p[ax] = 0.5 * (c->box[ax][0] + c->box[ax][1]);
+            p[o1] = c->box[o1][e & 1];
+            p[o2] = c->box[o2][(e >> 1) & 1];
+            if (ax < 2 && p[2] != c->box[2][0])
+                continue;
+            double sx, sy;
+            plot_camera_project(&c->cam, p, &sx, &sy, NULL);
+            const double score = ax < 2 ? sy : -sx;
+            if (score > best) {
+                best = score;
+                memcpy(corner, p, sizeof p);
+                /* x, y: away along the other horizontal axis; z: along x or
+                 * y, whichever moves left on the screen */
+                const int o = ax < 2 ? (ax == 0 ? 1 : 0) : 0;
+                off = o;
+                sign = p[o] == c->box[o][0] ? -1 : 1;
+                if (ax == 2) {
+                    const int o3 = 1;
+                    double q[3], r[3], x0, y0, x1, y1, x2, y2;
+                    memcpy(q, p, sizeof p);
+                    memcpy(r, p, sizeof p);
+                    q[0] += (p[0] == c->box[0][0] ? -1 : 1) * size;
+                    r[o3] += (p[o3] == c->box[o3][0] ? -1 : 1) * size;
+                    plot_camera_project(&c->cam, p, &x0, &y0, NULL);
+                    plot_camera_project(&c->cam, q, &x1, &y1, NULL);
+                    plot_camera_project(&c->cam, r, &x2, &y2, NULL);
+                    if (x2 < x1) {
+                        off = o3;
+                        sign = p[o3] == c->box[o3][0] ? -1 : 1;
+                    }
+                }
+            }
+        }
         double first, step;
         const int n = plot_ticks(c->box[ax][0], c->box[ax][1], 4, &first, &step);
         cairo_set_source_rgb(cr, 0.25, 0.25, 0.25);
         cairo_set_line_width(cr, 1.0);
         for (int i = 0; i < n; i++) {
             const double v = first + i * step;
-            double a[3] = {c->box[0][0], c->box[1][0], c->box[2][0]}, b[3], l[3];
+            double a[3], b[3], l[3];
+            memcpy(a, corner, sizeof a);
             a[ax] = v;
             memcpy(b, a, sizeof a);
             memcpy(l, a, sizeof a);
-            b[off] -= 0.02 * size;
-            l[off] -= 0.07 * size;
+            b[off] += sign * 0.02 * size;
+            l[off] += sign * 0.07 * size;
             double x0, y0, x1, y1, xl, yl;
             plot_camera_project(&c->cam, a, &x0, &y0, NULL);
             plot_camera_project(&c->cam, b, &x1, &y1, NULL);
@@ -171,9 +212,10 @@ static void draw_axes(ctx3d *c)
             plot_tick_label(buf, sizeof buf, v, step);
             plot_text(cr, xl, yl, 11, 0, buf, 0.5, 0.5);
         }
-        double a[3] = {c->box[0][0], c->box[1][0], c->box[2][0]}, xl, yl;
-        a[ax] = c->box[ax][1] + 0.08 * size;
-        a[off] -= 0.03 * size;
+        double a[3], xl, yl;
+        memcpy(a, corner, sizeof a);
+        a[ax] = 0.5 * (c->box[ax][0] + c->box[ax][1]);
+        a[off] += sign * 0.13 * size;
         plot_camera_project(&c->cam, a, &xl, &yl, NULL);
         plot_text(cr, xl, yl, 14, 1, NAMES[ax], 0.5, 0.5);
     }
@@ -186,25 +228,26 @@ static void draw_colorbar(ctx3d *c, double x, double y, double h)
     enum { STEPS = 48 };
     for (int i = 0; i < STEPS; i++) {
         double rgb[3];
-        plot_colormap((i + 0.5) / STEPS, rgb);
+        plot_colormap(c->kmax > c->kmin ? (i + 0.5) / STEPS : 0.5, rgb);
         cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
         cairo_rectangle(cr, x, y + h - (i + 1) * h / STEPS, 16, h / STEPS + 0.5);
         cairo_fill(cr);
     }
     cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
-    double first, step;
-    const double lo = c->kmin, hi = c->kmax > c->kmin ? c->kmax : c->kmin + 1e-12;
-    const int n = plot_ticks(lo, hi, 4, &first, &step);
-    for (int i = 0; i < n; i++) {
-        const double v = first + i * step, yy = y + h - (v - lo) / (hi - lo) * h;
-        char buf[32];
-        plot_tick_label(buf, sizeof buf, v, step);
-        plot_text(cr, x + 20, yy, 11, 0, buf, 0, 0.5);
-    }
-    if (!(c->kmax > c->kmin)) {
+    if (!(c->kmax > c->kmin)) { /* constant curvature: its value, mid-bar */
         char buf[48];
-        snprintf(buf, sizeof buf, "%.6g", c->kmin);
+        snprintf(buf, sizeof buf, "%.6g (constant)", c->kmin);
         plot_text(cr, x + 20, y + 0.5 * h, 11, 0, buf, 0, 0.5);
+    } else {
+        double first, step;
+        const double lo = c->kmin, hi = c->kmax;
+        const int n = plot_ticks(lo, hi, 4, &first, &step);
+        for (int i = 0; i < n; i++) {
+            const double v = first + i * step, yy = y + h - (v - lo) / (hi - lo) * h;
+            char buf[32];
+            plot_tick_label(buf, sizeof buf, v, step);
+            plot_text(cr, x + 20, yy, 11, 0, buf, 0, 0.5);
+        }
     }
     plot_text(cr, x + 8, y - 12, 12, 1, "curvature \xce\xba", 0.5, 1);
 }
@@ -370,7 +413,7 @@ ic_status plot_draw_3d(cairo_t *cr, const ic_plot_scene *scene, const ic_plot_op
             if (par == (pass == 0))
                 st = plot_mesh_surface(&c.mesh, scene->surfaces[s], s,
                                        pass == 0 ? (scene->has_box ? scene->box : NULL) : c.box,
-                                       par ? opt->mesh : (2 * opt->mesh) / 3, err);
+                                       par ? opt->mesh : opt->mesh / 2, err);
         }
     }
     if (st != IC_OK) {

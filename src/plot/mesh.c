@@ -169,5 +169,25 @@ ic_status plot_mesh_surface(plot_mesh *mesh, ic_surface *s, int which, const dou
     if (!box)
         return ic_error_set(err, IC_ERR_INVALID, 0,
                             "plotting the implicit surface %c needs a \"box\"", 'A' + which);
-    return implicit_mesh(mesh, s, which, box, cells, err);
+    /* a coarse pass finds where the surface is in the box; the mesh is made
+     * there (a small sphere in a large box gets all the cells) */
+    const int coarse_cells = cells / 2 > 4 ? cells / 2 : 4;
+    plot_mesh coarse = {NULL, 0, 0};
+    ic_status st = implicit_mesh(&coarse, s, which, box, coarse_cells, err);
+    if (st != IC_OK || coarse.n == 0) {
+        free(coarse.t);
+        return st;
+    }
+    double sub[3][2];
+    for (int k = 0; k < 3; k++) {
+        double lo = INFINITY, hi = -INFINITY;
+        for (int i = 0; i < coarse.n; i++)
+            for (int v = 0; v < 3; v++)
+                lo = fmin(lo, coarse.t[i].v[v][k]), hi = fmax(hi, coarse.t[i].v[v][k]);
+        const double cell = (box[k][1] - box[k][0]) / coarse_cells;
+        sub[k][0] = fmax(box[k][0], lo - cell);
+        sub[k][1] = fmin(box[k][1], hi + cell);
+    }
+    free(coarse.t);
+    return implicit_mesh(mesh, s, which, (const double(*)[2])sub, cells, err);
 }

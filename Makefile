@@ -10,7 +10,7 @@ BUILD ?= build
 PREFIX ?= /usr/local
 FUZZ_SECONDS ?= 60
 CMAKE_FLAGS ?=
-DEB_PACKAGES = cmake pkg-config libcjson-dev libcairo2-dev
+DEB_PACKAGES = cmake pkg-config libcjson-dev libcairo2-dev libxml2-dev poppler-utils
 
 .PHONY: all deps configure test demo bench install fuzz sanitize clean
 

@@ -2,7 +2,8 @@
  * integrated independently (tests/curve_lengths.h): two perpendicular
  * cylinders of radii 1 and 0.7 (two closed loops) and of equal radii (two
  * ellipses through two branch points), a loop smaller than 1% of the box, and
- * a tacnode (two parabolas tangent at a degenerate tangential point). */
+ * a tacnode (two parabolas tangent at a degenerate tangential point) and a
+ * cusp. */
 #include <stdio.h>
 #include <string.h>
 
@@ -96,6 +97,30 @@ static void check_tacnode(const traced *t)
     printf("%-24s 2 parabolas through the tacnode, length error %.2g\n", "tacnode", worst);
 }
 
+/* Seed 002 Ex. 2: z = u^3 - v^2 against z = 0, the cusp u^3 = v^2 at the
+ * origin; each arc v = +-u^(3/2), u in [0, 1], has length
+ * integral_0^1 sqrt(1 + 9u/4) du = (8/27) ((13/4)^(3/2) - 1). */
+static void check_cusp(const traced *t)
+{
+    const ic_trace_result *res = t->res;
+    const ic_trace_special *sp = ic_trace_result_special(res, 0);
+    /* located as a simple root of h'' along the kernel (Gauss-Newton alone
+     * stopped 8e-9 away, where the point classified as a branch point) */
+    CHECK(ic_trace_result_num_specials(res) == 1 && sp->type == IC_POINT_CUSP && !sp->approximate &&
+              hypot(hypot(sp->xyz[0], sp->xyz[1]), sp->xyz[2]) <= 1e-12,
+          "cusp: one, at the origin, classified cusp");
+    const double L = 8.0 / 27 * (pow(3.25, 1.5) - 1);
+    double worst = 0;
+    CHECK(ic_trace_result_num_curves(res) == 2, "cusp: two arcs");
+    for (int i = 0; i < ic_trace_result_num_curves(res); i++) {
+        const ic_trace_curve *c = ic_trace_result_curve(res, i);
+        worst = fmax(worst, fabs(c->length - L) / L);
+        CHECK(fabs(c->length - L) <= 1e-9 * L, "cusp arc %d: length %.17g of %.17g", i, c->length,
+              L);
+    }
+    printf("%-24s 2 arcs to the cusp, length error %.2g\n", "cusp", worst);
+}
+
 int main(int argc, char **argv)
 {
     const char *dir = argc > 1 ? argv[1] : ".";
@@ -130,6 +155,9 @@ int main(int argc, char **argv)
     release(&t);
     if (trace_example(&t, dir, "tacnode.json") == 0)
         check_tacnode(&t);
+    release(&t);
+    if (trace_example(&t, dir, "seed002-cusp.json") == 0)
+        check_cusp(&t);
     release(&t);
     return harness_finish("test_trace_examples");
 }

@@ -214,8 +214,9 @@ static void draw_axes(ctx3d *c)
         }
         double a[3], xl, yl;
         memcpy(a, corner, sizeof a);
-        a[ax] = 0.5 * (c->box[ax][0] + c->box[ax][1]);
-        a[off] += sign * 0.13 * size;
+        /* the axis name beyond its end, in line with the tick labels */
+        a[ax] = c->box[ax][1] + 0.07 * size;
+        a[off] += sign * 0.07 * size;
         plot_camera_project(&c->cam, a, &xl, &yl, NULL);
         plot_text(cr, xl, yl, 14, 1, NAMES[ax], 0.5, 0.5);
     }

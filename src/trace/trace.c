@@ -186,8 +186,19 @@ static int finish_end(ic_trace_result *r, ic_pair *pair, const ic_trace_options 
     /* within 1e-3: the march stops about 2e-5 before a branch point; before a
      * degenerate point (a tacnode, about 2e-3 away, where the locator is
      * ill-conditioned along the curve) the end stays approximate */
-    if (ic_local_locate_tangential(pair, &P, &near, 1e-3, &opt->local, NULL) != IC_OK &&
-        ic_local_locate_degenerate(pair, &P, &near, 0.05, &opt->local, NULL) != IC_OK) {
+    if (ic_local_locate_tangential(pair, &P, &near, 1e-3, &opt->local, NULL) == IC_OK) {
+        /* Gauss-Newton also "converges" next to a cusp (to about 1e-8 for
+         * u^3 = v^2), where the point classifies as a branch point with two
+         * nearly tangent branches: then the degenerate locator decides */
+        ic_local_result q;
+        ic_local_options o = opt->local;
+        ic_local_point D;
+        if (ic_local_apparatus(pair, &q, &P, 2, IC_METHOD_AUTO, &o, NULL) == IC_OK &&
+            q.type == IC_POINT_BRANCH && q.nbranches == 2 &&
+            fabs(ic_dot3(q.branches[0].t, q.branches[1].t)) > 1 - 1e-3 &&
+            ic_local_locate_degenerate(pair, &D, &near, 0.05, &opt->local, NULL) == IC_OK)
+            P = D;
+    } else if (ic_local_locate_degenerate(pair, &P, &near, 0.05, &opt->local, NULL) != IC_OK) {
         ic_trace_add_special(r, pair, &near, 1, opt, NULL);
         return -1;
     }
@@ -230,6 +241,18 @@ static int finish_end(ic_trace_result *r, ic_pair *pair, const ic_trace_options 
         /* the arc length of the last step, end-corrected (join.c) */
         extra->s = last->s + ic_trace_gap_length(last, last->t, extra, extra->t);
         ic_trace_refit_near_special(pts, n, br, sg);
+    } else if (best >= 0 && res.type == IC_POINT_CUSP) {
+        /* the last gap to a cusp: along the cusp's tangent T the arc is
+         * y = a x^(3/2), whose length from 0 to x is
+         * 8/(27 a^2) ((1 + 9 a^2 x/4)^(3/2) - 1) (the chord misses d^2/16) */
+        double e[3], T[3];
+        ic_axpy3(e, last->xyz, -1.0, P.xyz);
+        memcpy(T, res.branches[best].t, sizeof T);
+        const double x = fabs(ic_dot3(e, T));
+        ic_axpy3(e, e, -ic_dot3(e, T), T);
+        const double y = ic_norm3(e), a2 = x > 0 ? y * y / (x * x * x) : 0.0;
+        const double arc = a2 * x > 1e-12 ? 8 / (27 * a2) * (pow(1 + 2.25 * a2 * x, 1.5) - 1) : x;
+        extra->s = last->s + arc;
     }
     return index;
 }

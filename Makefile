@@ -1,7 +1,8 @@
 # intercurve: the commands for people. CMake does the building underneath.
 #   make          build (build/)
 #   make test     install missing Debian packages, build, run every test
-#   make demo     run the main job on a bundled example
+#   make demo     run the main job on a bundled example (writes demo.png)
+#   make gallery  draw every bundled example into docs/gallery/
 #   make bench    run the benchmarks
 #   make install  install library, headers, pkg-config file and command (PREFIX)
 #   make fuzz     build the libFuzzer target with clang and run it (FUZZ_SECONDS)
@@ -12,7 +13,7 @@ FUZZ_SECONDS ?= 60
 CMAKE_FLAGS ?=
 DEB_PACKAGES = cmake pkg-config libcjson-dev libcairo2-dev libxml2-dev poppler-utils
 
-.PHONY: all deps configure test demo bench install fuzz sanitize clean
+.PHONY: all deps configure test demo gallery bench install fuzz sanitize clean
 
 all: configure
 	cmake --build $(BUILD) -j2
@@ -38,12 +39,22 @@ sanitize:
 	$(MAKE) test BUILD=build-asan CMAKE_FLAGS="-DIC_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug"
 
 demo: all
-	./$(BUILD)/intercurve eval examples/viviani.json --surface sphere --at 0.3,0.4 --order 3
 	./$(BUILD)/intercurve point examples/viviani.json --at 1.5,0.8660254037844386,1 --order 4 --format text
 	./$(BUILD)/intercurve point examples/viviani.json --at 2,0,0 --order 3 --format text
+	./$(BUILD)/intercurve trace examples/viviani-implicit.json --format text
 	./$(BUILD)/intercurve trace examples/viviani-implicit.json -o $(BUILD)/viviani-trace.json
 	./$(BUILD)/intercurve trace examples/viviani-implicit.json --format vtk -o $(BUILD)/viviani-trace.vtk
-	@echo "traced Viviani's curve into $(BUILD)/viviani-trace.json and $(BUILD)/viviani-trace.vtk (ParaView)"
+	./$(BUILD)/intercurve plot examples/viviani-implicit.json -o demo.png
+	@echo "Viviani's curve traced into $(BUILD)/viviani-trace.json and .vtk (ParaView), drawn in demo.png"
+
+# the pictures of every bundled example, for the README
+gallery: all
+	mkdir -p docs/gallery
+	for f in examples/*.json; do \
+	  n=$$(basename $$f .json); \
+	  ./$(BUILD)/intercurve plot $$f -o docs/gallery/$$n.png --size 1200x700 || exit 1; \
+	done
+	@echo "pictures in docs/gallery/"
 
 bench: all
 	./$(BUILD)/bench/bench_surface

@@ -6,7 +6,7 @@
 #include <string.h>
 
 static const char TRACE_HELP[] =
-    "usage: intercurve trace PROBLEM.json [--format json|csv|vtk|obj] [-o FILE] [--tol T]\n"
+    "usage: intercurve trace PROBLEM.json [--format json|csv|vtk|obj|text] [-o FILE] [--tol T]\n"
     "                        [--depth D]\n"
     "\n"
     "Finds the intersection curves of the problem's two surfaces and traces each, with\n"
@@ -21,8 +21,8 @@ static const char TRACE_HELP[] =
     "domain, closes, or meets a tangential point it cannot pass.\n"
     "\n"
     "  --format F   json (default), csv (one row per point), vtk (legacy PolyData with\n"
-    "               t, n, b, kappa, tau as point data, for ParaView) or obj (polylines);\n"
-    "               docs/output-formats.md\n"
+    "               t, n, b, kappa, tau as point data, for ParaView), obj (polylines) or\n"
+    "               text (a summary table of the curves and points); docs/output-formats.md\n"
     "  -o FILE      write to FILE (through a temporary file and a rename)\n"
     "  --tol T      truncation error allowed per step, a length (default 1e-10)\n"
     "  --depth D    subdivision depth of the start-point search, 1..9 (default 6)\n"
@@ -112,13 +112,59 @@ static cJSON *result_json(const ic_trace_result *r, const ic_pair *pair)
     return doc;
 }
 
-typedef enum { FORMAT_JSON, FORMAT_CSV, FORMAT_VTK, FORMAT_OBJ } out_format;
+typedef enum { FORMAT_JSON, FORMAT_CSV, FORMAT_VTK, FORMAT_OBJ, FORMAT_TEXT } out_format;
+
+/* A summary table for people: the curves, the singular points, the report. */
+static int write_summary(FILE *f, const ic_trace_result *r, const char *title)
+{
+    if (title && *title)
+        fprintf(f, "%s\n", title);
+    const int nc = ic_trace_result_num_curves(r), ns = ic_trace_result_num_specials(r);
+    fprintf(f, "curves: %d\n", nc);
+    if (nc > 0)
+        fprintf(f, "  %-3s %-7s %-12s %-20s %-7s %-14s %s\n", "#", "closed", "type", "length",
+                "points", "shape", "ends");
+    for (int i = 0; i < nc; i++) {
+        const ic_trace_curve *c = ic_trace_result_curve(r, i);
+        char ends[64];
+        if (c->closed)
+            snprintf(ends, sizeof ends, "-");
+        else
+            snprintf(ends, sizeof ends, "%s, %s", ic_trace_event_name(c->ends[0]),
+                     ic_trace_event_name(c->ends[1]));
+        fprintf(f, "  %-3d %-7s %-12s %-20.15g %-7d %-14s %s\n", i + 1, c->closed ? "yes" : "no",
+                c->tangential ? "tangential" : "transversal", c->length, c->npoints,
+                ic_shape_name(c->shape), ends);
+    }
+    fprintf(f, "singular points: %d\n", ns);
+    if (ns > 0)
+        fprintf(f, "  %-3s %-20s %-22s %-22s %-22s %s\n", "#", "type", "x", "y", "z", "branches");
+    for (int i = 0; i < ns; i++) {
+        const ic_trace_special *sp = ic_trace_result_special(r, i);
+        fprintf(f, "  %-3d %-20s %-22.15g %-22.15g %-22.15g %d%s\n", i + 1,
+                ic_point_type_name(sp->type), sp->xyz[0], sp->xyz[1], sp->xyz[2], sp->nbranches,
+                sp->approximate ? " (approximate)" : "");
+    }
+    const ic_trace_report *rep = ic_trace_result_report(r);
+    fprintf(f,
+            "search: %d cells, %d excluded by interval arithmetic (%s), %d loop-free, %d where a "
+            "small loop is not excluded, %d uncovered, %d unproven\n",
+            rep->cells, rep->cells_excluded, rep->proven ? "proven" : "sampled only",
+            rep->loop_free_cells, rep->loop_cells, rep->uncovered_cells, rep->unproven_cells);
+    fprintf(f, "failures: %d\n", rep->nfailures);
+    for (int i = 0; i < rep->nfailures; i++)
+        fprintf(f, "  %s\n", rep->failures[i]);
+    return ferror(f) ? -1 : 0;
+}
 
 /* Writes the result in the format to an open stream; 0 on success. */
-static int write_result(FILE *f, out_format fmt, const ic_trace_result *res, const ic_pair *pair)
+static int write_result(FILE *f, out_format fmt, const ic_trace_result *res, const ic_pair *pair,
+                        const char *title)
 {
     ic_error err;
     switch (fmt) {
+    case FORMAT_TEXT:
+        return write_summary(f, res, title);
     case FORMAT_CSV:
         return ic_trace_write_csv(f, res, pair, &err) == IC_OK ? 0 : -1;
     case FORMAT_VTK:
@@ -134,7 +180,7 @@ static int write_result(FILE *f, out_format fmt, const ic_trace_result *res, con
 /* Writes the result to path through a temporary file and a rename, so that an
  * interrupted run never leaves half a file under the name asked for. */
 static int write_atomic(const char *path, out_format fmt, const ic_trace_result *res,
-                        const ic_pair *pair)
+                        const ic_pair *pair, const char *title)
 {
     const size_t len = strlen(path) + 16;
     char *tmp = malloc(len);
@@ -142,7 +188,7 @@ static int write_atomic(const char *path, out_format fmt, const ic_trace_result 
         return -1;
     snprintf(tmp, len, "%s.tmp", path);
     FILE *f = fopen(tmp, "w");
-    int ok = f && write_result(f, fmt, res, pair) == 0;
+    int ok = f && write_result(f, fmt, res, pair, title) == 0;
     if (f && fclose(f) != 0)
         ok = 0;
     if (ok && rename(tmp, path) != 0)
@@ -195,12 +241,12 @@ int ic_cmd_trace(int argc, char **argv)
         fprintf(stderr, "intercurve trace: needs PROBLEM.json\n%s", TRACE_HELP);
         return EXIT_INPUT;
     }
-    static const char *const format_names[] = {"json", "csv", "vtk", "obj"};
+    static const char *const format_names[] = {"json", "csv", "vtk", "obj", "text"};
     out_format fmt = FORMAT_JSON;
-    while (fmt <= FORMAT_OBJ && strcmp(format, format_names[fmt]) != 0)
+    while (fmt <= FORMAT_TEXT && strcmp(format, format_names[fmt]) != 0)
         fmt++;
-    if (fmt > FORMAT_OBJ) {
-        fprintf(stderr, "intercurve trace: --format %s is not one of json, csv, vtk, obj\n",
+    if (fmt > FORMAT_TEXT) {
+        fprintf(stderr, "intercurve trace: --format %s is not one of json, csv, vtk, obj, text\n",
                 format);
         return EXIT_INPUT;
     }
@@ -228,11 +274,13 @@ int ic_cmd_trace(int argc, char **argv)
         goto cleanup;
     }
     if (outpath) {
-        rc = write_atomic(outpath, fmt, res, pair) == 0 ? 0 : EXIT_COMPUTE;
+        rc = write_atomic(outpath, fmt, res, pair, ic_problem_title(p)) == 0 ? 0 : EXIT_COMPUTE;
         if (rc != 0)
             fprintf(stderr, "intercurve trace: cannot write %s\n", outpath);
     } else {
-        rc = write_result(stdout, fmt, res, pair) == 0 && fflush(stdout) == 0 ? 0 : EXIT_COMPUTE;
+        rc = write_result(stdout, fmt, res, pair, ic_problem_title(p)) == 0 && fflush(stdout) == 0
+                 ? 0
+                 : EXIT_COMPUTE;
         if (rc != 0)
             fprintf(stderr, "intercurve trace: writing the output failed\n");
     }

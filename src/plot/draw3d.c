@@ -212,12 +212,23 @@ static void draw_axes(ctx3d *c)
             plot_tick_label(buf, sizeof buf, v, step);
             plot_text(cr, xl, yl, 11, 0, buf, 0.5, 0.5);
         }
-        double a[3], xl, yl;
+        /* the axis name beyond the tick labels of the axis' middle, 26 px
+         * further along the screen direction from the axis to the labels */
+        double a[3], l[3], xa, ya, xl, yl;
         memcpy(a, corner, sizeof a);
-        /* the axis name beyond its end, in line with the tick labels */
-        a[ax] = c->box[ax][1] + 0.07 * size;
-        a[off] += sign * 0.07 * size;
-        plot_camera_project(&c->cam, a, &xl, &yl, NULL);
+        a[ax] = 0.5 * (c->box[ax][0] + c->box[ax][1]);
+        memcpy(l, a, sizeof a);
+        l[off] += sign * 0.07 * size;
+        plot_camera_project(&c->cam, a, &xa, &ya, NULL);
+        plot_camera_project(&c->cam, l, &xl, &yl, NULL);
+        const double dx = xl - xa, dy = yl - ya, dl = hypot(dx, dy);
+        if (dl > 1e-9)
+            xl += 26 * dx / dl, yl += 26 * dy / dl;
+        if (ax == 2) { /* z: above the top of its edge */
+            a[2] = c->box[2][1];
+            plot_camera_project(&c->cam, a, &xl, &yl, NULL);
+            yl -= 18;
+        }
         plot_text(cr, xl, yl, 14, 1, NAMES[ax], 0.5, 0.5);
     }
 }
@@ -490,8 +501,18 @@ ic_status plot_draw_3d(cairo_t *cr, const ic_plot_scene *scene, const ic_plot_op
         draw_colorbar(&c, x + w - 95, y + 60, fmin(260, h - 160));
     draw_legend(&c, scene, x + 20, y + h - 18);
     if (c.trace && nc == 0 && ic_trace_result_num_specials(c.trace) == 0) {
+        /* "no intersection" only where the search proved it; else what was
+         * not proven */
+        const ic_trace_report *rep = ic_trace_result_report(c.trace);
         cairo_set_source_rgb(cr, 0.6, 0.1, 0.1);
         plot_text(cr, x + 0.5 * w, y + 0.5 * h, 28, 1, "no intersection", 0.5, 0.5);
+        if (!rep->proven || rep->uncovered_cells > 0 || rep->unproven_cells > 0) {
+            char buf[160];
+            snprintf(buf, sizeof buf, "found: not proven (%s%d cells uncovered, %d unproven)",
+                     rep->proven ? "" : "sampled only, ", rep->uncovered_cells,
+                     rep->unproven_cells);
+            plot_text(cr, x + 0.5 * w, y + 0.5 * h + 28, 14, 0, buf, 0.5, 0.5);
+        }
     }
     free(pr);
     free(frames);

@@ -155,6 +155,35 @@ check "sphere pole says degenerate" $?
 grep -q '"normal":.*null' "$out"
 check "sphere pole: normal is null" $?
 
+# pictures: formats, options, errors; the "no intersection" message is text
+# in the PDF (pdftotext reads it back)
+pdir=$(mktemp -d)
+trap 'rm -f "$out" "$errf"; rm -rf "$pdir"' EXIT
+"$bin" plot "$src/examples/viviani-implicit.json" -o "$pdir/v.svg" --view 60,10 --frames 3 --size 640x400 --mesh 12 --no-chart 2>"$errf"
+check "plot to SVG with every option (rc $?: $(cat "$errf"))" $?
+[ "$(grep -c 'stroke-width:2.25;' "$pdir/v.svg")" -eq 9 ]
+check "plot --frames 3: nine frame arrows" $?
+[ ! -e "$pdir/v.svg.tmp.svg" ]
+check "plot leaves no temporary file" $?
+"$bin" trace "$src/examples/viviani-implicit.json" --format text >"$out"
+grep -q "branch-point" "$out" && grep -q "15.28079115611" "$out"
+check "trace --format text: the figure-eight's length and its branch point" $?
+"$bin" plot "$src/tests/data/apart.json" -o "$pdir/apart.pdf" 2>"$errf"
+check "plot two spheres apart (rc $?: $(cat "$errf"))" $?
+if command -v pdftotext >/dev/null 2>&1; then
+    pdftotext "$pdir/apart.pdf" - | grep -q "no intersection"
+    check "the figure of two spheres apart says 'no intersection'" $?
+fi
+expect_error 1 "plot $src/examples/viviani-implicit.json" "needs PROBLEM.json and -o FIGURE"
+expect_error 1 "plot $src/examples/viviani-implicit.json -o $pdir/v.gif" "use .svg, .png or .pdf"
+expect_error 1 "plot $src/examples/viviani-implicit.json -o $pdir/v.png --view 30" "--view expects"
+expect_error 1 "plot $src/examples/viviani-implicit.json -o $pdir/v.png --size 10x10" "--size expects"
+expect_error 1 "plot $src/examples/viviani-implicit.json -o $pdir/v.png --frames 1000" "--frames"
+expect_error 2 "plot $src/examples/viviani-implicit.json -o $pdir/no/such/v.png" "cannot write"
+expect_error 1 "plot $src/tests/data/bad-formula.json -o $pdir/b.png" "surfaces[0].f"
+"$bin" plot --help | grep -q "example:"
+check "plot --help has an example" $?
+
 "$bin" --help | grep -q "eval"
 check "--help lists eval" $?
 "$bin" eval --help | grep -q "example:"

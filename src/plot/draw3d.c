@@ -264,7 +264,7 @@ static void draw_colorbar(ctx3d *c, double x, double y, double h)
     plot_text(cr, x + 8, y - 12, 12, 1, "curvature \xce\xba", 0.5, 1);
 }
 
-static void draw_legend(ctx3d *c, const ic_plot_scene *scene, double x, double y)
+static void draw_legend(ctx3d *c, const ic_plot_scene *scene, double x, double y, int frames)
 {
     cairo_t *cr = c->cr;
     for (int s = 0; s < scene->nsurfaces; s++) {
@@ -280,7 +280,7 @@ static void draw_legend(ctx3d *c, const ic_plot_scene *scene, double x, double y
     }
     static const char *const FRAME[3] = {"t", "n", "b"};
     const double *cols[3] = {PLOT_T, PLOT_N, PLOT_B};
-    for (int k = 0; k < 3; k++) {
+    for (int k = 0; k < (frames ? 3 : 0); k++) {
         cairo_set_source_rgb(cr, cols[k][0], cols[k][1], cols[k][2]);
         cairo_set_line_width(cr, 3);
         cairo_move_to(cr, x, y);
@@ -441,6 +441,10 @@ ic_status plot_draw_3d(cairo_t *cr, const ic_plot_scene *scene, const ic_plot_op
     for (int k = 0; k < 3; k++)
         diag += (c.box[k][1] - c.box[k][0]) * (c.box[k][1] - c.box[k][0]);
     c.arrow = 0.08 * sqrt(diag);
+    /* the curves lie on the surfaces: drawn after the triangles at their own
+     * depth (1% of the diagonal nearer), so a surface hides them only where
+     * it passes in front */
+    const double bias = 0.01 * sqrt(diag);
     /* the curvature range over every curve point */
     const int nc = c.trace ? ic_trace_result_num_curves(c.trace) : 0;
     c.kmin = INFINITY, c.kmax = -INFINITY;
@@ -476,14 +480,14 @@ ic_status plot_draw_3d(cairo_t *cr, const ic_plot_scene *scene, const ic_plot_op
             const double p[2][3] = {
                 {cv->points[k].xyz[0], cv->points[k].xyz[1], cv->points[k].xyz[2]},
                 {cv->points[k + 1].xyz[0], cv->points[k + 1].xyz[1], cv->points[k + 1].xyz[2]}};
-            pr[np++] = (prim){PRIM_SEG, i, k, 0, mean_depth(&c, p, 2)};
+            pr[np++] = (prim){PRIM_SEG, i, k, 0, mean_depth(&c, p, 2) - bias};
         }
     }
     for (int f = 0; f < nf; f++) {
         const ic_trace_point *p = curve_point(&c, frames[f][0], frames[f][1]);
         for (int v = 0; v < (p->frame_defined ? 3 : 1); v++)
             pr[np++] = (prim){PRIM_ARROW, frames[f][0], frames[f][1], v,
-                              mean_depth(&c, (const double(*)[3])p->xyz, 1) - 1e-9};
+                              mean_depth(&c, (const double(*)[3])p->xyz, 1) - bias};
     }
     qsort(pr, (size_t)np, sizeof *pr, by_depth);
     draw_axes(&c);
@@ -499,7 +503,7 @@ ic_status plot_draw_3d(cairo_t *cr, const ic_plot_scene *scene, const ic_plot_op
         draw_specials(&c);
     if (nc > 0)
         draw_colorbar(&c, x + w - 95, y + 60, fmin(260, h - 160));
-    draw_legend(&c, scene, x + 20, y + h - 18);
+    draw_legend(&c, scene, x + 20, y + h - 18, nf);
     if (c.trace && nc == 0 && ic_trace_result_num_specials(c.trace) == 0) {
         /* "no intersection" only where the search proved it; else what was
          * not proven */

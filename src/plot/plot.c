@@ -83,7 +83,9 @@ ic_status ic_plot_write(const char *path, const ic_plot_scene *scene, const ic_p
         cairo_set_source_rgb(cr, 1, 1, 1);
         cairo_paint(cr);
         draw_title(cr, scene->title, W);
-        const int chart = opt->chart && scene->trace;
+        /* the chart only where there is a curve to chart */
+        const int chart =
+            opt->chart && scene->trace && ic_trace_result_num_curves(scene->trace) > 0;
         const double w3 = chart ? 0.62 * W : W;
         st = plot_draw_3d(cr, scene, opt, 0, 40, w3, H - 40, err);
         if (st == IC_OK && chart)

@@ -36,7 +36,8 @@ test: all
 	cd $(BUILD) && ctest --output-on-failure -j2
 
 sanitize:
-	$(MAKE) test BUILD=build-asan CMAKE_FLAGS="-DIC_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug"
+	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp \
+	  $(MAKE) test BUILD=build-asan CMAKE_FLAGS="-DIC_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug"
 
 demo: all
 	./$(BUILD)/intercurve point examples/viviani.json --at 1.5,0.8660254037844386,1 --order 4 --format text

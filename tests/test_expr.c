@@ -229,25 +229,31 @@ static void test_eval_jet(void)
     ic_expr_free(e);
 }
 
+/* Formulas for the interval tests: every function, domains that end
+ * inside the boxes, poles, real and variable powers. */
+static const char *const INTERVAL_FORMULAS[] = {
+    "sin(3*x) * cos(y) + z^2",
+    "tan(x) - atan(y*z)",
+    "x / (y - 0.1)",
+    "sqrt(x + 1) * log(y + 2) - exp(z)",
+    "asin(x/2) + acos(y/3) * sinh(z)",
+    "atan2(y, x) + cosh(z) - tanh(x*y)",
+    "abs(x - y)^3 - pow(z + 3, 1.7)",
+    "(x + y)^-2 + x^2*y^2 - z^5",
+    "pow(x + 2, y)",
+};
+enum { NUM_INTERVAL_FORMULAS = 9 };
+
 /* Interval evaluation encloses every sampled value of the formula on the
  * box; special cases for periodic functions and division by 0. */
 static void test_intervals(harness_rng *rng)
 {
-    const char *formulas[] = {
-        "sin(3*x) * cos(y) + z^2",
-        "tan(x) - atan(y*z)",
-        "x / (y - 0.1)",
-        "sqrt(x + 1) * log(y + 2) - exp(z)",
-        "asin(x/2) + acos(y/3) * sinh(z)",
-        "atan2(y, x) + cosh(z) - tanh(x*y)",
-        "abs(x - y)^3 - pow(z + 3, 1.7)",
-        "(x + y)^-2 + x^2*y^2 - z^5",
-    };
-    const int nf = (int)(sizeof formulas / sizeof formulas[0]);
+    const char *const *formulas = INTERVAL_FORMULAS;
+    const int nf = NUM_INTERVAL_FORMULAS;
     ic_expr *e = NULL;
     CHECK(ic_expr_compile(&e, formulas, nf, XYZ, 3, NULL, 0, NULL, NULL) == IC_OK, "compile");
-    ic_interval box[3], out[8], iwork[256];
-    double pt[3], val[8], work[256];
+    ic_interval box[3], out[NUM_INTERVAL_FORMULAS], iwork[256];
+    double pt[3], val[NUM_INTERVAL_FORMULAS], work[256];
     int checked = 0;
     for (int trial = 0; trial < 300 * harness_multiplier(); trial++) {
         for (int i = 0; i < 3; i++) {
@@ -300,23 +306,13 @@ static void test_intervals(harness_rng *rng)
  * first derivatives at every sampled point of random boxes. */
 static void test_interval_gradients(harness_rng *rng)
 {
-    const char *formulas[] = {
-        "sin(3*x) * cos(y) + z^2",
-        "tan(x) - atan(y*z)",
-        "x / (y - 0.1)",
-        "sqrt(x + 1) * log(y + 2) - exp(z)",
-        "asin(x/2) + acos(y/3) * sinh(z)",
-        "atan2(y, x) + cosh(z) - tanh(x*y)",
-        "abs(x - y)^3 - pow(z + 3, 1.7)",
-        "(x + y)^-2 + x^2*y^2 - z^5",
-        "pow(x + 2, y)",
-    };
-    const int nf = (int)(sizeof formulas / sizeof formulas[0]);
+    const char *const *formulas = INTERVAL_FORMULAS;
+    const int nf = NUM_INTERVAL_FORMULAS;
     ic_expr *e = NULL;
     ic_jet_space *sp = NULL;
     CHECK(ic_expr_compile(&e, formulas, nf, XYZ, 3, NULL, 0, NULL, NULL) == IC_OK, "compile");
     CHECK(ic_jet_space_new(&sp, 3, 1, NULL) == IC_OK, "space");
-    ic_interval_grad box[3], out[9], gwork[256];
+    ic_interval_grad box[3], out[NUM_INTERVAL_FORMULAS], gwork[256];
     double X[3][4], J[9 * 4], work[4096];
     int checked = 0;
     for (int trial = 0; trial < 300 * harness_multiplier(); trial++) {

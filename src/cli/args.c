@@ -50,8 +50,8 @@ int ic_cli_parse_int(int *out, const char *text, int lo, int hi, const char *opt
     char *end = NULL;
     long v = strtol(text, &end, 10);
     if (!text[0] || *end != '\0' || v < lo || v > hi) {
-        fprintf(stderr, "intercurve: %s expects a whole number from %d to %d, got '%s'\n",
-                option, lo, hi, text);
+        fprintf(stderr, "intercurve: %s expects a whole number from %d to %d, got '%s'\n", option,
+                lo, hi, text);
         return -1;
     }
     *out = (int)v;

@@ -5,6 +5,7 @@
 
 #include <cjson/cJSON.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "intercurve.h"
 
@@ -23,6 +24,17 @@ int ic_cli_parse_list(double *out, int max, const char *text, const char *option
 int ic_cli_parse_int(int *out, const char *text, int lo, int hi, const char *option);
 /* Prints an error of the library with its file, path and column. */
 void ic_cli_print_error(const char *file, const ic_error *err);
+
+/* A problem file loaded, paired and traced (traced.c). */
+typedef struct {
+    ic_problem *problem;
+    ic_pair *pair;
+    ic_trace_result *res;
+} ic_cli_traced;
+/* 0, or the exit code after printing the error with the file's name;
+ * opt->has_box and box are set from the problem. */
+int ic_cli_trace_file(const char *file, ic_trace_options *opt, ic_cli_traced *t);
+void ic_cli_traced_free(ic_cli_traced *t);
 
 /* JSON output: arrays of doubles (non-finite values become null). */
 cJSON *ic_json_vector(const double *v, int n);

@@ -89,9 +89,12 @@ static void add_geometry(cJSON *doc, const ic_surface_geometry *g, int parametri
 
 static void add_nulls(cJSON *doc, int parametric)
 {
-    static const char *const keys[] = {"normal", "first_fundamental_form",
-                                       "second_fundamental_form", "principal_curvatures",
-                                       "principal_directions", "gaussian_curvature",
+    static const char *const keys[] = {"normal",
+                                       "first_fundamental_form",
+                                       "second_fundamental_form",
+                                       "principal_curvatures",
+                                       "principal_directions",
+                                       "gaussian_curvature",
                                        "mean_curvature"};
     for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++)
         cJSON_AddNullToObject(doc, keys[i]);

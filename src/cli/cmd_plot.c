@@ -111,49 +111,25 @@ int ic_cmd_plot(int argc, char **argv)
     int rc = parse_args(argc, argv, &file, &out, &po, &to);
     if (rc != 0)
         return rc;
-    ic_error err;
-    ic_error_clear(&err);
-    ic_problem *p = NULL;
-    ic_pair *pair = NULL;
-    ic_trace_result *res = NULL;
-    if (ic_problem_load(&p, file, &err) != IC_OK) {
-        ic_cli_print_error(file, &err);
-        return EXIT_INPUT;
-    }
-    rc = EXIT_INPUT;
+    ic_cli_traced t;
+    rc = ic_cli_trace_file(file, &to, &t);
+    if (rc != 0)
+        return rc;
     ic_plot_scene scene;
     memset(&scene, 0, sizeof scene);
-    scene.title = ic_problem_title(p);
-    scene.has_box = ic_problem_box(p, scene.box);
-    to.has_box = scene.has_box;
-    memcpy(to.box, scene.box, sizeof to.box);
-    const int self = ic_problem_is_self(p);
-    scene.nsurfaces = self ? 1 : 2;
+    scene.title = ic_problem_title(t.problem);
+    scene.has_box = to.has_box;
+    memcpy(scene.box, to.box, sizeof scene.box);
+    scene.nsurfaces = ic_problem_is_self(t.problem) ? 1 : 2;
     for (int s = 0; s < scene.nsurfaces; s++) {
-        scene.surfaces[s] = ic_problem_surface(p, s);
-        scene.names[s] = ic_problem_surface_name(p, s);
+        scene.surfaces[s] = ic_problem_surface(t.problem, s);
+        scene.names[s] = ic_problem_surface_name(t.problem, s);
     }
-    if (ic_pair_new(&pair, scene.surfaces[0], self ? NULL : scene.surfaces[1], &err) != IC_OK) {
-        ic_cli_print_error(file, &err);
-        goto cleanup;
-    }
-    ic_status st = ic_trace(&res, pair, &to, &err);
-    if (st != IC_OK) {
-        ic_cli_print_error(file, &err);
-        rc = st == IC_ERR_INVALID ? EXIT_INPUT : EXIT_COMPUTE;
-        goto cleanup;
-    }
-    scene.trace = res;
-    st = ic_plot_write(out, &scene, &po, &err);
-    if (st != IC_OK) {
+    scene.trace = t.res;
+    ic_error err;
+    const ic_status st = ic_plot_write(out, &scene, &po, &err);
+    if (st != IC_OK)
         fprintf(stderr, "intercurve plot: %s\n", err.message);
-        rc = st == IC_ERR_INVALID ? EXIT_INPUT : EXIT_COMPUTE;
-        goto cleanup;
-    }
-    rc = 0;
-cleanup:
-    ic_trace_result_free(res);
-    ic_pair_free(pair);
-    ic_problem_free(p);
-    return rc;
+    ic_cli_traced_free(&t);
+    return st == IC_OK ? 0 : st == IC_ERR_INVALID ? EXIT_INPUT : EXIT_COMPUTE;
 }

@@ -47,23 +47,27 @@ static cJSON *branch_json(const ic_branch *br, const ic_pair *pair)
     cJSON_AddItemToObject(o, "t", ic_json_vector(br->t, 3));
     if (!br->regular)
         cJSON_AddFalseToObject(o, "regular");
-    cJSON_AddItemToObject(o, "n", br->frame_defined ? ic_json_vector(br->n, 3) : cJSON_CreateNull());
-    cJSON_AddItemToObject(o, "b", br->frame_defined ? ic_json_vector(br->b, 3) : cJSON_CreateNull());
-    cJSON_AddItemToObject(o, "kappa", br->order >= 2 ? ic_json_number_or_null(br->kappa)
-                                                     : cJSON_CreateNull());
-    cJSON_AddItemToObject(o, "tau", br->tau_defined ? ic_json_number_or_null(br->tau)
-                                                    : cJSON_CreateNull());
-    cJSON_AddItemToObject(o, "kappa_prime", br->kappa_prime_defined
-                                                ? ic_json_number_or_null(br->kappa_prime)
+    cJSON_AddItemToObject(o, "n",
+                          br->frame_defined ? ic_json_vector(br->n, 3) : cJSON_CreateNull());
+    cJSON_AddItemToObject(o, "b",
+                          br->frame_defined ? ic_json_vector(br->b, 3) : cJSON_CreateNull());
+    cJSON_AddItemToObject(o, "kappa",
+                          br->order >= 2 ? ic_json_number_or_null(br->kappa) : cJSON_CreateNull());
+    cJSON_AddItemToObject(o, "tau",
+                          br->tau_defined ? ic_json_number_or_null(br->tau) : cJSON_CreateNull());
+    cJSON_AddItemToObject(o, "kappa_prime",
+                          br->kappa_prime_defined ? ic_json_number_or_null(br->kappa_prime)
+                                                  : cJSON_CreateNull());
+    cJSON_AddItemToObject(o, "tau_prime",
+                          br->tau_prime_defined ? ic_json_number_or_null(br->tau_prime)
                                                 : cJSON_CreateNull());
-    cJSON_AddItemToObject(o, "tau_prime", br->tau_prime_defined
-                                              ? ic_json_number_or_null(br->tau_prime)
-                                              : cJSON_CreateNull());
     if (!br->regular)
-        cJSON_AddStringToObject(o, "undefined", "a cusp: t, n, b are one-sided limits along "
-                                                "this half-branch; the curvature is infinite");
+        cJSON_AddStringToObject(o, "undefined",
+                                "a cusp: t, n, b are one-sided limits along "
+                                "this half-branch; the curvature is infinite");
     else if (!br->frame_defined && br->order >= 2)
-        cJSON_AddStringToObject(o, "undefined", "the curvature is 0: n, b and the torsion are undefined");
+        cJSON_AddStringToObject(o, "undefined",
+                                "the curvature is 0: n, b and the torsion are undefined");
     cJSON *d = cJSON_CreateArray();
     for (int k = 0; k < br->order; k++)
         cJSON_AddItemToArray(d, ic_json_vector(br->derivs[k], 3));
@@ -112,7 +116,8 @@ static cJSON *result_json(const ic_local_result *res, const ic_pair *pair, int o
     if (res->npaper) {
         cJSON *pc = cJSON_CreateObject();
         for (int i = 0; i < res->npaper; i++)
-            cJSON_AddItemToObject(pc, res->paper_names[i], ic_json_number_or_null(res->paper_values[i]));
+            cJSON_AddItemToObject(pc, res->paper_names[i],
+                                  ic_json_number_or_null(res->paper_values[i]));
         cJSON_AddItemToObject(doc, "paper_coefficients", pc);
     }
     if (res->method == IC_METHOD_PERTURBATION)
@@ -191,8 +196,10 @@ int ic_cmd_point(int argc, char **argv)
         } else if (strcmp(argv[i], "--method") == 0 && has_value) {
             method = ic_method_from_name(argv[++i]);
             if (method < 0) {
-                fprintf(stderr, "intercurve point: --method expects auto, jet, closed-form or "
-                                "perturbation, got '%s'\n", argv[i]);
+                fprintf(stderr,
+                        "intercurve point: --method expects auto, jet, closed-form or "
+                        "perturbation, got '%s'\n",
+                        argv[i]);
                 return EXIT_INPUT;
             }
         } else if (strcmp(argv[i], "--format") == 0 && has_value) {
@@ -210,8 +217,10 @@ int ic_cmd_point(int argc, char **argv)
             }
             opt.point_tol = v;
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            fprintf(stderr, "intercurve point: unknown option or missing value: %s\n"
-                            "try 'intercurve point --help'\n", argv[i]);
+            fprintf(stderr,
+                    "intercurve point: unknown option or missing value: %s\n"
+                    "try 'intercurve point --help'\n",
+                    argv[i]);
             return EXIT_INPUT;
         } else if (!file)
             file = argv[i];

@@ -250,43 +250,23 @@ int ic_cmd_trace(int argc, char **argv)
                 format);
         return EXIT_INPUT;
     }
-    ic_error err;
-    ic_error_clear(&err);
-    ic_problem *p = NULL;
-    ic_pair *pair = NULL;
-    ic_trace_result *res = NULL;
-    if (ic_problem_load(&p, file, &err) != IC_OK) {
-        ic_cli_print_error(file, &err);
-        return EXIT_INPUT;
-    }
-    int rc = EXIT_INPUT;
-    opt.has_box = ic_problem_box(p, opt.box);
-    const int self = ic_problem_is_self(p);
-    if (ic_pair_new(&pair, ic_problem_surface(p, 0), self ? NULL : ic_problem_surface(p, 1),
-                    &err) != IC_OK) {
-        ic_cli_print_error(file, &err);
-        goto cleanup;
-    }
-    ic_status st = ic_trace(&res, pair, &opt, &err);
-    if (st != IC_OK) {
-        ic_cli_print_error(file, &err);
-        rc = st == IC_ERR_INVALID ? EXIT_INPUT : EXIT_COMPUTE;
-        goto cleanup;
-    }
+    ic_cli_traced t;
+    int rc = ic_cli_trace_file(file, &opt, &t);
+    if (rc != 0)
+        return rc;
+    const ic_trace_result *res = t.res;
+    const ic_pair *pair = t.pair;
+    const char *title = ic_problem_title(t.problem);
     if (outpath) {
-        rc = write_atomic(outpath, fmt, res, pair, ic_problem_title(p)) == 0 ? 0 : EXIT_COMPUTE;
+        rc = write_atomic(outpath, fmt, res, pair, title) == 0 ? 0 : EXIT_COMPUTE;
         if (rc != 0)
             fprintf(stderr, "intercurve trace: cannot write %s\n", outpath);
     } else {
-        rc = write_result(stdout, fmt, res, pair, ic_problem_title(p)) == 0 && fflush(stdout) == 0
-                 ? 0
-                 : EXIT_COMPUTE;
+        rc = write_result(stdout, fmt, res, pair, title) == 0 && fflush(stdout) == 0 ? 0
+                                                                                     : EXIT_COMPUTE;
         if (rc != 0)
             fprintf(stderr, "intercurve trace: writing the output failed\n");
     }
-cleanup:
-    ic_trace_result_free(res);
-    ic_pair_free(pair);
-    ic_problem_free(p);
+    ic_cli_traced_free(&t);
     return rc;
 }

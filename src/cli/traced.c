@@ -1,0 +1,37 @@
+/* Loading a problem file and tracing it, for the commands that need the
+ * whole intersection (trace, plot). */
+#include "cli.h"
+
+int ic_cli_trace_file(const char *file, ic_trace_options *opt, ic_cli_traced *t)
+{
+    memset(t, 0, sizeof *t);
+    ic_error err;
+    ic_error_clear(&err);
+    if (ic_problem_load(&t->problem, file, &err) != IC_OK) {
+        ic_cli_print_error(file, &err);
+        return EXIT_INPUT;
+    }
+    opt->has_box = ic_problem_box(t->problem, opt->box);
+    const int self = ic_problem_is_self(t->problem);
+    if (ic_pair_new(&t->pair, ic_problem_surface(t->problem, 0),
+                    self ? NULL : ic_problem_surface(t->problem, 1), &err) != IC_OK) {
+        ic_cli_print_error(file, &err);
+        ic_cli_traced_free(t);
+        return EXIT_INPUT;
+    }
+    const ic_status st = ic_trace(&t->res, t->pair, opt, &err);
+    if (st != IC_OK) {
+        ic_cli_print_error(file, &err);
+        ic_cli_traced_free(t);
+        return st == IC_ERR_INVALID ? EXIT_INPUT : EXIT_COMPUTE;
+    }
+    return 0;
+}
+
+void ic_cli_traced_free(ic_cli_traced *t)
+{
+    ic_trace_result_free(t->res);
+    ic_pair_free(t->pair);
+    ic_problem_free(t->problem);
+    memset(t, 0, sizeof *t);
+}

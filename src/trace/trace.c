@@ -126,6 +126,9 @@ ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local
     /* order 12: the branches' series also serve the curve points nearby
      * (ic_trace_refit_near_special) */
     loc->res_ok = ic_local_apparatus(pair, &loc->res, pt, 12, IC_METHOD_AUTO, &o, NULL) == IC_OK;
+    /* a contact of high order has fewer valid orders: its branches to 3 */
+    if (!loc->res_ok)
+        loc->res_ok = ic_local_apparatus(pair, &loc->res, pt, 3, IC_METHOD_AUTO, &o, NULL) == IC_OK;
     if (loc->res_ok) {
         s->type = loc->res.type;
         s->nbranches = loc->res.nbranches;

@@ -189,7 +189,17 @@ static void draw_axes(ctx3d *c)
             }
         }
         double first, step;
-        const int n = plot_ticks(c->box[ax][0], c->box[ax][1], 4, &first, &step);
+        /* about one tick per 70 px of the axis on the screen (2 to 5), so
+         * that the labels of a foreshortened axis do not run together */
+        double e0[3], e1[3], sx0, sy0, sx1, sy1;
+        memcpy(e0, corner, sizeof e0);
+        memcpy(e1, corner, sizeof e1);
+        e0[ax] = c->box[ax][0], e1[ax] = c->box[ax][1];
+        plot_camera_project(&c->cam, e0, &sx0, &sy0, NULL);
+        plot_camera_project(&c->cam, e1, &sx1, &sy1, NULL);
+        const double px = hypot(sx1 - sx0, sy1 - sy0);
+        const int want = px < 140 ? 2 : px > 350 ? 5 : (int)(px / 70);
+        const int n = plot_ticks(c->box[ax][0], c->box[ax][1], want, &first, &step);
         cairo_set_source_rgb(cr, 0.25, 0.25, 0.25);
         cairo_set_line_width(cr, 1.0);
         for (int i = 0; i < n; i++) {

@@ -326,6 +326,7 @@ static void draw_specials(ctx3d *c)
         const ic_trace_special *sp = ic_trace_result_special(c->trace, i);
         double x, y;
         plot_camera_project(&c->cam, sp->xyz, &x, &y, NULL);
+        cairo_new_path(c->cr); /* the text before leaves a current point */
         cairo_arc(c->cr, x, y, 5.5, 0, 2 * IC_PI);
         cairo_set_source_rgb(c->cr, 1, 1, 1);
         cairo_fill_preserve(c->cr);

@@ -108,6 +108,7 @@ void plot_text(cairo_t *cr, double x, double y, double size, int bold, const cha
      * at y, 0.5 their middle, 1 the baseline */
     cairo_move_to(cr, x - align_x * ext.x_advance, y + (1 - align_y) * 0.72 * size);
     cairo_show_text(cr, text);
+    cairo_new_path(cr); /* no current point left for the next path */
 }
 
 int plot_ticks(double lo, double hi, int n, double *first, double *step)

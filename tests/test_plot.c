@@ -88,15 +88,7 @@ static void plot_example(const char *dir, const char *tmpdir, const char *name)
         return;
     }
     ic_plot_scene scene;
-    memset(&scene, 0, sizeof scene);
-    scene.title = ic_problem_title(t.problem);
-    scene.has_box = ic_problem_box(t.problem, scene.box);
-    scene.nsurfaces = ic_problem_is_self(t.problem) ? 1 : 2;
-    for (int s = 0; s < scene.nsurfaces; s++) {
-        scene.surfaces[s] = ic_problem_surface(t.problem, s);
-        scene.names[s] = ic_problem_surface_name(t.problem, s);
-    }
-    scene.trace = t.res;
+    ic_plot_scene_of_problem(&scene, t.problem, t.res);
     ic_plot_options opt;
     ic_plot_defaults(&opt);
     opt.width = WIDTH, opt.height = HEIGHT, opt.frames = FRAMES;

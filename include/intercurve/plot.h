@@ -10,6 +10,7 @@
 #define INTERCURVE_PLOT_H
 
 #include "intercurve/common.h"
+#include "intercurve/problem.h"
 #include "intercurve/surface.h"
 #include "intercurve/trace.h"
 
@@ -40,6 +41,11 @@ typedef struct {
     double box[3][2];
     const ic_trace_result *trace;
 } ic_plot_scene;
+
+/** The scene of a problem file (title, surfaces, names, box) with a trace
+ *  of it (NULL: surfaces only); the problem keeps owning the surfaces. */
+void ic_plot_scene_of_problem(ic_plot_scene *scene, const ic_problem *problem,
+                              const ic_trace_result *trace);
 
 /**
  * Draws the scene into `path`; the format comes from its extension (.svg,

@@ -116,16 +116,7 @@ int ic_cmd_plot(int argc, char **argv)
     if (rc != 0)
         return rc;
     ic_plot_scene scene;
-    memset(&scene, 0, sizeof scene);
-    scene.title = ic_problem_title(t.problem);
-    scene.has_box = to.has_box;
-    memcpy(scene.box, to.box, sizeof scene.box);
-    scene.nsurfaces = ic_problem_is_self(t.problem) ? 1 : 2;
-    for (int s = 0; s < scene.nsurfaces; s++) {
-        scene.surfaces[s] = ic_problem_surface(t.problem, s);
-        scene.names[s] = ic_problem_surface_name(t.problem, s);
-    }
-    scene.trace = t.res;
+    ic_plot_scene_of_problem(&scene, t.problem, t.res);
     ic_error err;
     const ic_status st = ic_plot_write(out, &scene, &po, &err);
     if (st != IC_OK)

@@ -22,6 +22,20 @@ void ic_plot_defaults(ic_plot_options *opt)
     opt->mesh = 36;
 }
 
+void ic_plot_scene_of_problem(ic_plot_scene *scene, const ic_problem *problem,
+                              const ic_trace_result *trace)
+{
+    memset(scene, 0, sizeof *scene);
+    scene->title = ic_problem_title(problem);
+    scene->has_box = ic_problem_box(problem, scene->box);
+    scene->nsurfaces = ic_problem_is_self(problem) ? 1 : 2;
+    for (int s = 0; s < scene->nsurfaces; s++) {
+        scene->surfaces[s] = ic_problem_surface(problem, s);
+        scene->names[s] = ic_problem_surface_name(problem, s);
+    }
+    scene->trace = trace;
+}
+
 typedef enum { FMT_SVG, FMT_PNG, FMT_PDF, FMT_NONE } plot_format;
 
 static plot_format format_of(const char *path)

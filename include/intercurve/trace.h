@@ -137,7 +137,8 @@ typedef struct {
      *  that nothing found passes near: not proven empty */
     int unproven_cells;
     /** leaf cells not excluded where the normal cones prove that no closed
-     *  curve lies wholly inside (the loop test, trace.md) */
+     *  curve lies wholly inside (the loop test, trace.md); these two counts
+     *  include the leaves of the finer searches */
     int loop_free_cells;
     /** leaf cells not excluded where the loop test fails: the only places a
      *  closed curve smaller than a cell can be (near tangency the test

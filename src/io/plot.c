@@ -73,8 +73,11 @@ ic_status ic_plot_write(const char *path, const ic_plot_scene *scene, const ic_p
                             "cannot tell the picture's format from '%s': use .svg, .png or .pdf",
                             path);
     if (opt->width < 200 || opt->height < 150 || opt->width > 10000 || opt->height > 10000)
-        return ic_error_set(err, IC_ERR_INVALID, 0, "a picture of %d x %d: each side in 200..10000",
-                            opt->width, opt->height);
+        return ic_error_set(
+            err, IC_ERR_INVALID, 0,
+            "a picture of %d x %d: the width must be in 200..10000 and the height in "
+            "150..10000",
+            opt->width, opt->height);
     if (scene->nsurfaces < 1 || scene->nsurfaces > 2)
         return ic_error_set(err, IC_ERR_INVALID, 0, "a picture shows one or two surfaces");
     const size_t len = strlen(path) + 16;

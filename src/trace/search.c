@@ -3,10 +3,14 @@
  * are split down to opt->depth levels; a cell where the interval enclosure of
  * a surface's equation excludes 0 holds no intersection point (proven, with
  * outward rounding) and is dropped. In each remaining leaf a Newton
- * iteration from the centre looks for a point on both surfaces.
+ * iteration from the centre looks for a point on both surfaces; a leaf where
+ * it finds none may still be proven empty by centred forms (centred.c); every
+ * leaf left gets the loop test (loops.c).
  *  - implicit/implicit: cells of the box; f_A and f_B over the cell;
  *  - parametric/implicit: cells of the parameter domain; f(R(U, V)) with R's
- *    enclosure over the cell.
+ *    enclosure over the cell;
+ *  - two parametric surfaces: cells of (u, v, p, q); R_A and R_B's boxes.
+ * With `within`, one leaf is searched again a few levels finer.
  * Surfaces without interval evaluation (primitives, callbacks) cannot
  * exclude anything: then the leaves of a coarser grid are sampled and the
  * report says so.

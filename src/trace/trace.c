@@ -85,6 +85,15 @@ void ic_trace_cover(ic_candidate *c, int n, const ic_trace_point *pts, int np, d
             c[i].covered = 1;
 }
 
+/* Marks the candidates within radius of the point x as covered. */
+static void cover_point(ic_candidate *c, int n, const double *x, double radius)
+{
+    ic_trace_point one;
+    memset(&one, 0, sizeof one);
+    memcpy(one.xyz, x, sizeof one.xyz);
+    ic_trace_cover(c, n, &one, 1, radius);
+}
+
 ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local_point *pt,
                                int approximate, const ic_trace_options *opt, int *index)
 {
@@ -173,6 +182,30 @@ static ic_status add_curve(ic_trace_result *r, ic_trace_point *pts, int n, int c
     return IC_OK;
 }
 
+/* The tangential point ahead of a curve end `near`; 0 when it cannot be
+ * located (then the end is recorded approximately). Gauss-Newton on the
+ * collinear normals within 1e-3 (the march stops about 2e-5 before a branch
+ * point); where it fails (a tacnode, whose end stops about 2e-3 away and
+ * where Gauss-Newton is ill-conditioned along the curve), or "converges"
+ * next to a cusp (to about 1e-8 for u^3 = v^2, a point that classifies as a
+ * branch point with two nearly tangent branches), the degenerate locator
+ * decides. */
+static int locate_end(ic_pair *pair, const ic_local_options *lopt, const ic_local_point *near,
+                      ic_local_point *P)
+{
+    if (ic_local_locate_tangential(pair, P, near, 1e-3, lopt, NULL) != IC_OK)
+        return ic_local_locate_degenerate(pair, P, near, 0.05, lopt, NULL) == IC_OK;
+    ic_local_result q;
+    ic_local_options o = *lopt;
+    ic_local_point D;
+    if (ic_local_apparatus(pair, &q, P, 2, IC_METHOD_AUTO, &o, NULL) == IC_OK &&
+        q.type == IC_POINT_BRANCH && q.nbranches == 2 &&
+        fabs(ic_dot3(q.branches[0].t, q.branches[1].t)) > 1 - 1e-3 &&
+        ic_local_locate_degenerate(pair, &D, near, 0.05, lopt, NULL) == IC_OK)
+        *P = D;
+    return 1;
+}
+
 /* A curve end at a tangential point: the point located precisely, appended
  * (the last step, about 2e-5, is straight to 1e-16) with the apparatus of
  * the branch continuing the curve, and recorded. Returns the special index,
@@ -186,22 +219,7 @@ static int finish_end(ic_trace_result *r, ic_pair *pair, const ic_trace_options 
     memcpy(near.xyz, last->xyz, sizeof near.xyz);
     memcpy(near.params, last->params, sizeof near.params);
     int index = -1;
-    /* within 1e-3: the march stops about 2e-5 before a branch point; before a
-     * degenerate point (a tacnode, about 2e-3 away, where the locator is
-     * ill-conditioned along the curve) the end stays approximate */
-    if (ic_local_locate_tangential(pair, &P, &near, 1e-3, &opt->local, NULL) == IC_OK) {
-        /* Gauss-Newton also "converges" next to a cusp (to about 1e-8 for
-         * u^3 = v^2), where the point classifies as a branch point with two
-         * nearly tangent branches: then the degenerate locator decides */
-        ic_local_result q;
-        ic_local_options o = opt->local;
-        ic_local_point D;
-        if (ic_local_apparatus(pair, &q, &P, 2, IC_METHOD_AUTO, &o, NULL) == IC_OK &&
-            q.type == IC_POINT_BRANCH && q.nbranches == 2 &&
-            fabs(ic_dot3(q.branches[0].t, q.branches[1].t)) > 1 - 1e-3 &&
-            ic_local_locate_degenerate(pair, &D, &near, 0.05, &opt->local, NULL) == IC_OK)
-            P = D;
-    } else if (ic_local_locate_degenerate(pair, &P, &near, 0.05, &opt->local, NULL) != IC_OK) {
+    if (!locate_end(pair, &opt->local, &near, &P)) {
         ic_trace_add_special(r, pair, &near, 1, opt, NULL);
         return -1;
     }
@@ -363,10 +381,7 @@ static ic_status trace_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *pa
                              cand[i].xyz[1], cand[i].xyz[2], e2.message);
             /* the candidates at the same place (a pole's many preimages)
              * would fail the same way: one failure is listed */
-            ic_trace_point one;
-            memset(&one, 0, sizeof one);
-            memcpy(one.xyz, cand[i].xyz, sizeof one.xyz);
-            ic_trace_cover(cand, nc, &one, 1, 1e-9 * (1 + ic_norm3(one.xyz)));
+            cover_point(cand, nc, cand[i].xyz, 1e-9 * (1 + ic_norm3(cand[i].xyz)));
             cand[i].covered = 1;
             continue;
         }
@@ -378,10 +393,7 @@ static ic_status trace_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *pa
             int curve;
             st = ic_trace_record_tangential(r, tr, pair, &pt, 2 * r->report.cell_size + 1e-6, 1,
                                             opt, &curve);
-            ic_trace_point one;
-            memset(&one, 0, sizeof one);
-            memcpy(one.xyz, pt.xyz, sizeof one.xyz);
-            ic_trace_cover(cand, nc, &one, 1, fmax(radius, 2 * r->report.cell_size));
+            cover_point(cand, nc, pt.xyz, fmax(radius, 2 * r->report.cell_size));
             if (curve >= 0)
                 ic_trace_cover(cand, nc, r->curves[curve].points, r->curves[curve].npoints, radius);
             continue;
@@ -396,10 +408,10 @@ static ic_status trace_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *pa
     return st;
 }
 
-/* Searches each unresolved loop cell (loops.c) that nothing found passes
- * near a few levels finer (a loop smaller than the cell, missed by Newton
- * from its centre)
- * and traces what it finds; *unres is replaced by the finer search's
+/* Searches each unresolved cell that nothing found passes near, where the
+ * loop test failed or Newton found nothing at all, a few levels finer (a
+ * loop smaller than the cell, missed by Newton from its centre), and traces
+ * what it finds; *unres is replaced by the finer search's
  * unresolved cells there (and the cells passed over). */
 enum { MAX_REFINED = 64 };
 

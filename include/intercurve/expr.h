@@ -111,8 +111,13 @@ size_t ic_expr_interval_grad_work_len(const ic_expr *e);
  * the identity for a gradient). out[i].d[k] then encloses the derivative of
  * formula i along direction k at every point of the box where the formula
  * is differentiable (abs contributes [-1, 1] where its argument holds 0).
+ * Returns 1 when every operation is defined over the whole enclosure of its
+ * arguments (no sqrt or log of a negative part, no division by an interval
+ * holding 0, ...) and no enclosure is empty; 0 otherwise. Arguments that
+ * need the formula on the whole box (the mean value theorem of centred
+ * forms, the normal cones of the loop test) must decide nothing on 0.
  */
-void ic_expr_eval_interval_grad(const ic_expr *e, ic_interval_grad *out,
+int ic_expr_eval_interval_grad(const ic_expr *e, ic_interval_grad *out,
                                 const ic_interval_grad *x, int ngrad, ic_interval_grad *work);
 
 /** Doubles of work memory for ic_expr_eval_jet in space sp. */

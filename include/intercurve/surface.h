@@ -152,7 +152,9 @@ IC_NODISCARD ic_status ic_surface_eval_interval(ic_surface *s, ic_interval *out,
  * The same with the derivatives: out[3] for a parametric surface (out[i].d[0]
  * and d[1] enclose dx_i/du and dx_i/dv over the box), out[1] for an implicit
  * one (out->d[0..2] enclose grad f). Formula surfaces and implicit
- * primitives; IC_ERR_UNABLE otherwise.
+ * primitives; IC_ERR_UNABLE otherwise; IC_ERR_DOMAIN when the formula is
+ * not defined over the whole box (then the enclosures prove nothing about
+ * the box as a whole).
  */
 IC_NODISCARD ic_status ic_surface_eval_interval_grad(ic_surface *s, ic_interval_grad *out,
                                                      const ic_interval *in, ic_error *err);

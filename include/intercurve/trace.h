@@ -37,6 +37,8 @@ typedef struct {
     int depth;        /**< subdivision depth of the start-point search (default 6:
                        *   64 cells per axis) */
     double shape_tol; /**< relative tolerance of the shape tests (default 1e-6) */
+    double time_limit; /**< seconds of wall time for the whole trace; 0: none (default).
+                        *   Reaching it stops with what was found, complete = 0 */
     ic_local_options local;
 } ic_trace_options;
 
@@ -123,6 +125,11 @@ typedef struct {
 
 /** What the search proved and what it only sampled (trace.md). */
 typedef struct {
+    /** 1 only when every part of the search space was proven free of
+     *  curves, proven loop-free and passed near by what was traced, or
+     *  traced, and every curve ended where it should (docs/tracing.md,
+     *  "Completeness"); 0 lists in failures every region left undecided */
+    int complete;
     int cells;          /**< cells examined by the subdivision */
     int cells_excluded; /**< cells proven empty by interval arithmetic */
     int cells_excluded_centred; /**< of those, leaves cleared by centred forms */
@@ -144,9 +151,13 @@ typedef struct {
      *  closed curve smaller than a cell can be (near tangency the test
      *  cannot succeed: N_A x N_B vanishes there) */
     int loop_cells;
-    /** unresolved leaf cells that nothing found passed near, searched again
-     *  a few levels finer (their finer cells replace them in the counts) */
+    /** cells subdivided again after the first search, adaptively, until
+     *  decided (docs/tracing.md, "Completeness"); their finer cells join the
+     *  counts above */
     int refined_cells;
+    /** cells left undecided because a closed curve may hide there (the loop
+     *  test failed down to the finest level) or the work ran out first */
+    int undecided_loop_cells;
     int nfailures;
     char failures[IC_TRACE_MAX_FAILURES][240];
 } ic_trace_report;

@@ -1,6 +1,8 @@
 /* intercurve trace: the whole intersection as JSON (DESIGN.md 3.3). */
 #include "cli.h"
 
+#include "io/safe_file.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -90,6 +92,7 @@ static cJSON *result_json(const ic_trace_result *r, const ic_pair *pair)
     cJSON_AddItemToObject(doc, "points", points);
     const ic_trace_report *rep = ic_trace_result_report(r);
     cJSON *ro = cJSON_CreateObject();
+    cJSON_AddBoolToObject(ro, "complete", rep->complete);
     cJSON_AddNumberToObject(ro, "cells", rep->cells);
     cJSON_AddNumberToObject(ro, "cells_excluded_by_intervals", rep->cells_excluded);
     cJSON_AddNumberToObject(ro, "cells_excluded_by_centred_forms", rep->cells_excluded_centred);
@@ -104,6 +107,7 @@ static cJSON *result_json(const ic_trace_result *r, const ic_pair *pair)
     cJSON_AddNumberToObject(ro, "loop_free_cells", rep->loop_free_cells);
     cJSON_AddNumberToObject(ro, "loop_cells", rep->loop_cells);
     cJSON_AddNumberToObject(ro, "refined_cells", rep->refined_cells);
+    cJSON_AddNumberToObject(ro, "undecided_loop_cells", rep->undecided_loop_cells);
     cJSON *f = cJSON_CreateArray();
     for (int i = 0; i < rep->nfailures; i++)
         cJSON_AddItemToArray(f, cJSON_CreateString(rep->failures[i]));
@@ -146,11 +150,16 @@ static int write_summary(FILE *f, const ic_trace_result *r, const char *title)
                 sp->approximate ? " (approximate)" : "");
     }
     const ic_trace_report *rep = ic_trace_result_report(r);
+    fprintf(f, "result: %s\n",
+            rep->complete ? "complete (every cell of the search was decided)"
+                          : "INCOMPLETE (see the failures: parts of the search were not decided)");
     fprintf(f,
             "search: %d cells, %d excluded by interval arithmetic (%s), %d loop-free, %d where a "
-            "small loop is not excluded, %d uncovered, %d unproven\n",
+            "small loop is not excluded, %d refined, %d uncovered, %d unproven, %d undecided "
+            "loop cells\n",
             rep->cells, rep->cells_excluded, rep->proven ? "proven" : "sampled only",
-            rep->loop_free_cells, rep->loop_cells, rep->uncovered_cells, rep->unproven_cells);
+            rep->loop_free_cells, rep->loop_cells, rep->refined_cells, rep->uncovered_cells,
+            rep->unproven_cells, rep->undecided_loop_cells);
     fprintf(f, "failures: %d\n", rep->nfailures);
     for (int i = 0; i < rep->nfailures; i++)
         fprintf(f, "  %s\n", rep->failures[i]);
@@ -177,26 +186,32 @@ static int write_result(FILE *f, out_format fmt, const ic_trace_result *res, con
     return ic_json_write(f, result_json(res, pair));
 }
 
-/* Writes the result to path through a temporary file and a rename, so that an
- * interrupted run never leaves half a file under the name asked for. */
+/* What write_atomic hands to the safe file's stream. */
+typedef struct {
+    out_format fmt;
+    const ic_trace_result *res;
+    const ic_pair *pair;
+    const char *title;
+} trace_output;
+
+static int fill_output(FILE *f, void *ctx)
+{
+    const trace_output *o = ctx;
+    return write_result(f, o->fmt, o->res, o->pair, o->title);
+}
+
+/* Writes the result to path as a safe file (io/safe_file.h): a temporary and
+ * a rename, so an interrupted run never leaves half a file, or a device in
+ * place. Prints the reason of a failure. */
 static int write_atomic(const char *path, out_format fmt, const ic_trace_result *res,
                         const ic_pair *pair, const char *title)
 {
-    const size_t len = strlen(path) + 16;
-    char *tmp = malloc(len);
-    if (!tmp)
-        return -1;
-    snprintf(tmp, len, "%s.tmp", path);
-    FILE *f = fopen(tmp, "w");
-    int ok = f && write_result(f, fmt, res, pair, title) == 0;
-    if (f && fclose(f) != 0)
-        ok = 0;
-    if (ok && rename(tmp, path) != 0)
-        ok = 0;
-    if (!ok)
-        remove(tmp);
-    free(tmp);
-    return ok ? 0 : -1;
+    trace_output o = {fmt, res, pair, title};
+    ic_error err;
+    if (ic_safe_write_stream(path, fill_output, &o, &err) == IC_OK)
+        return 0;
+    fprintf(stderr, "intercurve trace: %s\n", err.message);
+    return -1;
 }
 
 int ic_cmd_trace(int argc, char **argv)
@@ -259,8 +274,6 @@ int ic_cmd_trace(int argc, char **argv)
     const char *title = ic_problem_title(t.problem);
     if (outpath) {
         rc = write_atomic(outpath, fmt, res, pair, title) == 0 ? 0 : EXIT_COMPUTE;
-        if (rc != 0)
-            fprintf(stderr, "intercurve trace: cannot write %s\n", outpath);
     } else {
         rc = write_result(stdout, fmt, res, pair, title) == 0 && fflush(stdout) == 0 ? 0
                                                                                      : EXIT_COMPUTE;

@@ -49,6 +49,8 @@ double ic_op_eval_double(ic_opcode op, double a, double b, long n, double c);
 /* One instruction on intervals (src/expr/interval.c): the enclosure of
  * op(a, b) where it is defined. */
 ic_interval ic_interval_op(const ic_instr *in, ic_interval a, ic_interval b);
+/* 1 when the operation is defined at every point of the enclosures a, b. */
+int ic_interval_op_defined(const ic_instr *in, ic_interval a, ic_interval b);
 
 /* Name of the operation as written in formulas ("sin", "+", ...). */
 const char *ic_op_name(ic_opcode op);

@@ -21,24 +21,30 @@ static const ic_interval ENTIRE = {-INFINITY, INFINITY};
 
 int ic_interval_is_empty(ic_interval a) { return !(a.lo <= a.hi); }
 
-/* Moves x down (up) by at least k ulps; infinities stay. */
+/* Moves x down (up) by at least k ulps. A lower bound that overflowed to
+ * +inf stands for a finite value above DBL_MAX, so it becomes DBL_MAX (and
+ * an upper bound of -inf becomes -DBL_MAX): [inf, inf] would enclose no real
+ * number, and an interval built on it could exclude zero wrongly. */
 static double down(double x, double k)
 {
     if (isinf(x))
-        return x;
+        return x > 0 ? DBL_MAX : x;
     return x - k * fabs(x) * DBL_EPSILON - DBL_TRUE_MIN;
 }
 
 static double up(double x, double k)
 {
     if (isinf(x))
-        return x;
+        return x < 0 ? -DBL_MAX : x;
     return x + k * fabs(x) * DBL_EPSILON + DBL_TRUE_MIN;
 }
 
+/* [lo, hi] widened outward. A NaN bound (inf - inf, after an overflow)
+ * means that bound is unknown: it becomes infinite, never empty, since an
+ * empty interval proves that no value exists. */
 static ic_interval make(double lo, double hi, double k)
 {
-    ic_interval r = {down(lo, k), up(hi, k)};
+    ic_interval r = {isnan(lo) ? -INFINITY : down(lo, k), isnan(hi) ? INFINITY : up(hi, k)};
     return r;
 }
 
@@ -357,6 +363,35 @@ ic_interval ic_interval_op(const ic_instr *in, ic_interval a, ic_interval b)
         break;
     }
     return ENTIRE;
+}
+
+int ic_interval_op_defined(const ic_instr *in, ic_interval a, ic_interval b)
+{
+    const int holds0 = a.lo <= 0.0 && a.hi >= 0.0;
+    switch (in->op) {
+    case OP_DIV:
+        return !(b.lo <= 0.0 && b.hi >= 0.0);
+    case OP_POWI:
+        return in->n >= 0 || !holds0;
+    case OP_POWR:
+        return in->c > 0.0 ? a.lo >= 0.0 : a.lo > 0.0;
+    case OP_POW:
+    case OP_LOG:
+        return a.lo > 0.0;
+    case OP_SQRT:
+        return a.lo >= 0.0;
+    case OP_ASIN:
+    case OP_ACOS:
+        return a.lo >= -1.0 && a.hi <= 1.0;
+    case OP_TAN:
+        return !(a.hi - a.lo < IC_PI) || fabs(a.lo) > 1e15 || fabs(a.hi) > 1e15
+                   ? 0
+                   : !may_contain(a.lo, a.hi, 0.5 * IC_PI, IC_PI);
+    case OP_ATAN2: /* a = y, b = x: undefined at the origin */
+        return !(holds0 && b.lo <= 0.0 && b.hi >= 0.0);
+    default:
+        return 1;
+    }
 }
 
 void ic_expr_eval_interval(const ic_expr *e, ic_interval *out, const ic_interval *x,

@@ -105,18 +105,33 @@ static void grad_op(const ic_instr *in, ic_interval_grad *r, const ic_interval_g
     }
 }
 
-void ic_expr_eval_interval_grad(const ic_expr *e, ic_interval_grad *out, const ic_interval_grad *x,
-                                int ngrad, ic_interval_grad *work)
+/* 1 when no enclosure of r is empty. */
+static int all_nonempty(const ic_interval_grad *r, int ngrad)
 {
+    int ok = !ic_interval_is_empty(r->v);
+    for (int k = 0; k < ngrad; k++)
+        ok = ok && !ic_interval_is_empty(r->d[k]);
+    return ok;
+}
+
+int ic_expr_eval_interval_grad(const ic_expr *e, ic_interval_grad *out, const ic_interval_grad *x,
+                               int ngrad, ic_interval_grad *work)
+{
+    int whole = 1;
     for (int i = 0; i < e->len; i++) {
         const ic_instr *in = &e->code[i];
         if (in->op == OP_VAR) {
             work[i] = x[in->n];
             continue;
         }
-        grad_op(in, &work[i], in->a >= 0 ? &work[in->a] : NULL, in->b >= 0 ? &work[in->b] : NULL,
-                ngrad);
+        const ic_interval_grad *A = in->a >= 0 ? &work[in->a] : NULL;
+        const ic_interval_grad *B = in->b >= 0 ? &work[in->b] : NULL;
+        whole = whole && ic_interval_op_defined(in, A ? A->v : (ic_interval){0, 0},
+                                                B ? B->v : (ic_interval){0, 0});
+        grad_op(in, &work[i], A, B, ngrad);
+        whole = whole && all_nonempty(&work[i], ngrad);
     }
     for (int k = 0; k < e->noutputs; k++)
         out[k] = work[e->outputs[k]];
+    return whole;
 }

@@ -67,14 +67,24 @@ static int fail(parser *p, const char *what)
     return -1;
 }
 
-/* A power whose exponent is a constant becomes POWI or POWR. */
+/* Whole exponents up to 2^53 are stored as integers (every double of that
+ * size is exact in a long); beyond it every double is an even integer. */
+#define WHOLE_POWER_MAX 9007199254740992.0
+
+/* A power whose exponent is a constant becomes POWI or POWR. A whole
+ * exponent is a whole power for every base, negative ones included: above
+ * 2^53 it is even, so x^c = |x|^c. */
 static int emit_power(parser *p, int base, int expo, int col)
 {
     const ic_instr *x = &p->e->code[expo];
     if (x->op == OP_CONST) {
         double c = x->c;
-        if (c == floor(c) && fabs(c) <= 1024)
+        if (c == floor(c) && fabs(c) <= WHOLE_POWER_MAX)
             return ic_tape_emit(p->e, OP_POWI, base, -1, (long)c, 0.0, col, p->err);
+        if (c == floor(c)) {
+            const int a = ic_tape_emit(p->e, OP_ABS, base, -1, 0, 0.0, col, p->err);
+            return a < 0 ? a : ic_tape_emit(p->e, OP_POWR, a, -1, 0, c, col, p->err);
+        }
         return ic_tape_emit(p->e, OP_POWR, base, -1, 0, c, col, p->err);
     }
     return ic_tape_emit(p->e, OP_POW, base, expo, 0, 0.0, col, p->err);

@@ -1,9 +1,11 @@
 /*
  * A figure: the title, the 3D panel (left) and the chart (right), on a
- * cairo surface chosen by the file's extension, written through a
- * temporary file and a rename.
+ * cairo surface chosen by the file's extension, streamed into a safe file
+ * (io/safe_file.h: a temporary and a rename, or a device in place).
  */
 #include "plot_internal.h"
+
+#include "io/safe_file.h"
 
 #include <cairo-pdf.h>
 #include <cairo-svg.h>
@@ -64,6 +66,75 @@ static void draw_title(cairo_t *cr, const char *title, double w)
     plot_text(cr, 0.5 * w, 16, size, 1, title, 0.5, 0);
 }
 
+/* Where cairo's bytes go: the open file and the first write error, kept
+ * apart from the caller's err so that no later message hides its reason. */
+typedef struct {
+    ic_safe_file *file;
+    ic_status st;
+    ic_error err;
+} plot_sink;
+
+/* cairo's write callback: passes the bytes on until the first failure. */
+static cairo_status_t sink_write(void *closure, const unsigned char *data, unsigned int length)
+{
+    plot_sink *s = closure;
+    if (s->st == IC_OK)
+        s->st = ic_safe_write(s->file, data, length, &s->err);
+    return s->st == IC_OK ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
+}
+
+static ic_status cairo_failed(ic_error *err, const char *path, cairo_status_t cs)
+{
+    return ic_error_set(err, IC_ERR_IO, 0, "cannot write %s: %s", path,
+                        cairo_status_to_string(cs));
+}
+
+/* The figure: background, title, 3D panel and chart. */
+static ic_status draw_figure(cairo_t *cr, const ic_plot_scene *scene, const ic_plot_options *opt,
+                             ic_error *err)
+{
+    const double W = opt->width, H = opt->height;
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    draw_title(cr, scene->title, W);
+    /* the chart only where there is a curve to chart */
+    const int chart = opt->chart && scene->trace && ic_trace_result_num_curves(scene->trace) > 0;
+    const double w3 = chart ? 0.62 * W : W;
+    const ic_status st = plot_draw_3d(cr, scene, opt, 0, 40, w3, H - 40, err);
+    if (st == IC_OK && chart)
+        plot_draw_chart(cr, scene->trace, w3 + 10, 50, W - w3 - 20, H - 60);
+    return st;
+}
+
+/* Draws the figure and streams it into the sink's file: SVG and PDF as cairo
+ * finishes them, PNG from an image surface at the end. */
+static ic_status render(plot_sink *sink, plot_format fmt, const char *path,
+                        const ic_plot_scene *scene, const ic_plot_options *opt, ic_error *err)
+{
+    const double W = opt->width, H = opt->height;
+    cairo_surface_t *surf =
+        fmt == FMT_SVG   ? cairo_svg_surface_create_for_stream(sink_write, sink, W, H)
+        : fmt == FMT_PDF ? cairo_pdf_surface_create_for_stream(sink_write, sink, W, H)
+                         : cairo_image_surface_create(CAIRO_FORMAT_ARGB32, opt->width, opt->height);
+    cairo_t *cr = cairo_create(surf);
+    ic_status st = cairo_status(cr) == CAIRO_STATUS_SUCCESS
+                       ? draw_figure(cr, scene, opt, err)
+                       : cairo_failed(err, path, cairo_status(cr));
+    cairo_destroy(cr);
+    cairo_status_t cs = CAIRO_STATUS_SUCCESS;
+    if (st == IC_OK && fmt == FMT_PNG)
+        cs = cairo_surface_write_to_png_stream(surf, sink_write, sink);
+    cairo_surface_finish(surf);
+    if (cs == CAIRO_STATUS_SUCCESS)
+        cs = cairo_surface_status(surf);
+    cairo_surface_destroy(surf);
+    if (sink->st != IC_OK) /* the system's reason, e.g. "No space left on device" */
+        return ic_error_set(err, sink->st, 0, "%s", sink->err.message);
+    if (st == IC_OK && cs != CAIRO_STATUS_SUCCESS)
+        st = cairo_failed(err, path, cs);
+    return st;
+}
+
 ic_status ic_plot_write(const char *path, const ic_plot_scene *scene, const ic_plot_options *opt,
                         ic_error *err)
 {
@@ -80,47 +151,14 @@ ic_status ic_plot_write(const char *path, const ic_plot_scene *scene, const ic_p
             opt->width, opt->height);
     if (scene->nsurfaces < 1 || scene->nsurfaces > 2)
         return ic_error_set(err, IC_ERR_INVALID, 0, "a picture shows one or two surfaces");
-    const size_t len = strlen(path) + 16;
-    char *tmp = malloc(len);
-    if (!tmp)
-        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
-    /* the temporary name keeps the extension (some viewers look at it) */
-    snprintf(tmp, len, "%s.tmp%s", path, strrchr(path, '.'));
-    const double W = opt->width, H = opt->height;
-    cairo_surface_t *surf =
-        fmt == FMT_SVG   ? cairo_svg_surface_create(tmp, W, H)
-        : fmt == FMT_PDF ? cairo_pdf_surface_create(tmp, W, H)
-                         : cairo_image_surface_create(CAIRO_FORMAT_ARGB32, opt->width, opt->height);
-    cairo_t *cr = cairo_create(surf);
-    ic_status st = IC_OK;
-    if (cairo_status(cr) != CAIRO_STATUS_SUCCESS)
-        st = ic_error_set(err, IC_ERR_IO, 0, "cannot draw into %s: %s", tmp,
-                          cairo_status_to_string(cairo_status(cr)));
-    if (st == IC_OK) {
-        cairo_set_source_rgb(cr, 1, 1, 1);
-        cairo_paint(cr);
-        draw_title(cr, scene->title, W);
-        /* the chart only where there is a curve to chart */
-        const int chart =
-            opt->chart && scene->trace && ic_trace_result_num_curves(scene->trace) > 0;
-        const double w3 = chart ? 0.62 * W : W;
-        st = plot_draw_3d(cr, scene, opt, 0, 40, w3, H - 40, err);
-        if (st == IC_OK && chart)
-            plot_draw_chart(cr, scene->trace, w3 + 10, 50, W - w3 - 20, H - 60);
-    }
-    cairo_destroy(cr);
-    if (st == IC_OK && fmt == FMT_PNG &&
-        cairo_surface_write_to_png(surf, tmp) != CAIRO_STATUS_SUCCESS)
-        st = ic_error_set(err, IC_ERR_IO, 0, "cannot write %s", path);
-    cairo_surface_finish(surf);
-    if (st == IC_OK && cairo_surface_status(surf) != CAIRO_STATUS_SUCCESS)
-        st = ic_error_set(err, IC_ERR_IO, 0, "cannot write %s: %s", path,
-                          cairo_status_to_string(cairo_surface_status(surf)));
-    cairo_surface_destroy(surf);
-    if (st == IC_OK && rename(tmp, path) != 0)
-        st = ic_error_set(err, IC_ERR_IO, 0, "cannot write %s", path);
+    plot_sink sink = {NULL, IC_OK, {0}};
+    ic_status st = ic_safe_open(&sink.file, path, err);
     if (st != IC_OK)
-        remove(tmp);
-    free(tmp);
-    return st;
+        return st;
+    st = render(&sink, fmt, path, scene, opt, err);
+    if (st != IC_OK) {
+        ic_safe_abort(sink.file);
+        return st;
+    }
+    return ic_safe_commit(sink.file, err);
 }

@@ -291,9 +291,12 @@ ic_status ic_surface_eval_interval_grad(ic_surface *s, ic_interval_grad *out, co
         if (!w)
             return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
     }
-    ic_expr_eval_interval_grad(s->expr, out, x, nin, w);
+    const int whole = ic_expr_eval_interval_grad(s->expr, out, x, nin, w);
     if (w != work)
         free(w);
+    if (!whole) /* not defined everywhere on the box: the callers' arguments fail */
+        return ic_error_set(err, IC_ERR_DOMAIN, 0,
+                            "the surface's formula is not defined over the whole box");
     return IC_OK;
 }
 

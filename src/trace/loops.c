@@ -103,3 +103,24 @@ int ic_trace_cell_loop_free(ic_surface *const S[2], int par0, int par1, const do
     cross(T, fa.d, fb.d);
     return one_sided(T);
 }
+
+/* 1 when R_u x R_v of a parametric sheet may vanish over the cell: a pole
+ * or another degenerate point of the parametrization, where the loop test
+ * cannot succeed (R_u x R_v is its normal). */
+int ic_trace_cell_may_degenerate(ic_surface *const S[2], int par0, int par1, const double *lo,
+                                 const double *hi)
+{
+    const int par[2] = {par0, par1};
+    int off = 0;
+    for (int s = 0; s < 2; s++) {
+        if (!par[s])
+            continue;
+        ic_interval N[3];
+        if (!param_normal(S[s], lo + off, hi + off, N, NULL))
+            return 1;
+        if (!excludes_zero(N[0]) && !excludes_zero(N[1]) && !excludes_zero(N[2]))
+            return 1;
+        off += 2;
+    }
+    return 0;
+}

@@ -3,7 +3,7 @@
  * plane normal to the curve, step control by truncation error and chord
  * height, events.
  */
-#include "intercurve/trace.h"
+#include "trace_internal.h"
 #include "common/vec3.h"
 #include "tangential_curve.h"
 
@@ -26,6 +26,7 @@ struct ic_tracer {
     int n, cap;
     int done;
     int tcurve; /* marching along a tangential curve */
+    double deadline; /* monotonic seconds; 0: none (ic_tracer_set_deadline) */
 };
 
 const char *ic_trace_event_name(ic_trace_event ev)
@@ -481,12 +482,20 @@ ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
                         tr->s, tr->cur.xyz[0], tr->cur.xyz[1], tr->cur.xyz[2], tr->opt.min_step);
 }
 
+void ic_tracer_set_deadline(ic_tracer *tr, double deadline) { tr->deadline = deadline; }
+
 ic_status ic_tracer_run(ic_tracer *tr, ic_trace_event *event, ic_error *err)
 {
-    do {
+    /* the clock is read every TIME_CHECK_STEPS steps (a step costs tens of
+     * microseconds); past the deadline the curve stops as at its budget */
+    enum { TIME_CHECK_STEPS = 32 };
+    for (long k = 1;; k++) {
         ic_status st = ic_tracer_step(tr, event, err);
-        if (st != IC_OK)
+        if (st != IC_OK || *event != IC_TRACE_CONTINUE)
             return st;
-    } while (*event == IC_TRACE_CONTINUE);
-    return IC_OK;
+        if (tr->deadline > 0 && k % TIME_CHECK_STEPS == 0 && ic_trace_now() > tr->deadline) {
+            *event = IC_TRACE_BUDGET;
+            return IC_OK;
+        }
+    }
 }

@@ -149,13 +149,12 @@ static int newton_params(ic_surface *A, ic_surface *B, const ic_jet_space *sp2, 
 
 /* The parameter box of sheet s: its domain, which must be finite. */
 static ic_status domain_box(ic_surface *const S[2], int s, double lo[2], double hi[2],
-                            ic_error *err)
+                            int per[2], ic_error *err)
 {
     double dom[2][2];
-    int per[2];
     ic_surface_get_domain(S[s], dom, per);
     for (int i = 0; i < 2; i++) {
-        if (!isfinite(dom[i][0]) || !isfinite(dom[i][1]))
+        if (!isfinite(dom[i][0]) || !isfinite(dom[i][1]) || !isfinite(dom[i][1] - dom[i][0]))
             return ic_error_set(err, IC_ERR_INVALID, 0,
                                 "tracing needs a finite \"domain\" for the parametric surface %c "
                                 "(surfaces[%d] of a problem file)",
@@ -165,128 +164,354 @@ static ic_status domain_box(ic_surface *const S[2], int s, double lo[2], double 
     return IC_OK;
 }
 
-ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt,
-                              const ic_unresolved *within, ic_candidate **out, int *nout,
-                              ic_unresolved **unres, int *nunres, ic_trace_report *rep,
-                              ic_error *err)
+/* What one search needs: the surfaces, the pairing, the region and the
+ * jet spaces of the Newton iterations. */
+typedef struct {
+    ic_surface *S[2];
+    int par[2], both, self, mixed, P, I, dim;
+    double lo[4], hi[4]; /* the whole search region */
+    int periodic[4];     /* coordinates whose domain is a period */
+    double dwidth[2];    /* a leaf's width in (u, v) at the first search's depth */
+    int proven;
+    ic_jet_space *sp2, *sp3;
+} search_ctx;
+
+static ic_status ctx_init(search_ctx *x, ic_pair *pair, const ic_trace_options *opt,
+                          ic_error *err)
 {
-    *out = NULL;
-    *nout = 0;
-    *unres = NULL;
-    *nunres = 0;
-    int capu = 0;
-    ic_surface *S[2] = {ic_pair_surface(pair, 0), ic_pair_surface(pair, 1)};
-    const int par[2] = {ic_surface_get_kind(S[0]) == IC_PARAMETRIC,
-                        ic_surface_get_kind(S[1]) == IC_PARAMETRIC};
-    const int both = par[0] && par[1], self = ic_pair_is_self(pair);
-    const int mixed = !both && (par[0] || par[1]);
-    const int P = par[0] ? 0 : 1, I = 1 - P;
-    int dim = 3;
-    double lo[4], hi[4];
-    if (both) { /* (u, v, p, q) */
-        if (domain_box(S, 0, lo, hi, err) != IC_OK ||
-            domain_box(S, 1, lo + 2, hi + 2, err) != IC_OK)
+    memset(x, 0, sizeof *x);
+    ic_surface **S = x->S;
+    S[0] = ic_pair_surface(pair, 0), S[1] = ic_pair_surface(pair, 1);
+    x->par[0] = ic_surface_get_kind(S[0]) == IC_PARAMETRIC;
+    x->par[1] = ic_surface_get_kind(S[1]) == IC_PARAMETRIC;
+    x->both = x->par[0] && x->par[1], x->self = ic_pair_is_self(pair);
+    x->mixed = !x->both && (x->par[0] || x->par[1]);
+    x->P = x->par[0] ? 0 : 1, x->I = 1 - x->P;
+    x->dim = x->both ? 4 : x->mixed ? 2 : 3;
+    if (x->both) { /* (u, v, p, q) */
+        if (domain_box(S, 0, x->lo, x->hi, x->periodic, err) != IC_OK ||
+            domain_box(S, 1, x->lo + 2, x->hi + 2, x->periodic + 2, err) != IC_OK)
             return IC_ERR_INVALID;
-        dim = 4;
-    } else if (mixed) {
-        if (domain_box(S, P, lo, hi, err) != IC_OK)
+    } else if (x->mixed) {
+        if (domain_box(S, x->P, x->lo, x->hi, x->periodic, err) != IC_OK)
             return IC_ERR_INVALID;
-        dim = 2;
     } else {
         if (!opt->has_box)
             return ic_error_set(err, IC_ERR_INVALID, 0,
                                 "tracing two implicit surfaces needs a \"box\"");
-        for (int k = 0; k < 3; k++)
-            lo[k] = opt->box[k][0], hi[k] = opt->box[k][1];
+        for (int k = 0; k < 3; k++) {
+            x->lo[k] = opt->box[k][0], x->hi[k] = opt->box[k][1];
+            if (!isfinite(x->hi[k] - x->lo[k]) || !(x->hi[k] > x->lo[k]))
+                return ic_error_set(err, IC_ERR_INVALID, 0,
+                                    "the box must have finite, increasing bounds");
+        }
     }
-    /* can the surfaces be enclosed? (formula surfaces only) */
+    /* can the surfaces be enclosed? (formula surfaces and implicit primitives) */
     ic_interval probe_in[4], probe_out[3];
     for (int k = 0; k < 4; k++)
-        probe_in[k] = (ic_interval){k < dim ? lo[k] : 0, k < dim ? hi[k] : 0};
-    if (!within) /* a finer search keeps the whole search's answer */
-        rep->proven =
-            ic_surface_eval_interval(S[0], probe_out, probe_in, NULL) == IC_OK &&
-            ic_surface_eval_interval(S[1], probe_out, probe_in + (both ? 2 : 0), NULL) == IC_OK;
-    /* four parameters: one level less (16 children a split) */
-    const int full = both ? opt->depth - 1 : opt->depth;
-    int depth = rep->proven ? full : (full < 4 ? full : 4);
-    if (within) { /* a finer search of one leaf cell: 2^(dim * levels) leaves */
-        memcpy(lo, within->lo, sizeof lo);
-        memcpy(hi, within->hi, sizeof hi);
-        depth = dim == 4 ? 2 : 3;
-    }
-    ic_jet_space *sp2 = NULL, *sp3 = NULL;
-    ic_status st = ic_jet_space_new(&sp2, 2, 1, err);
+        probe_in[k] = (ic_interval){k < x->dim ? x->lo[k] : 0, k < x->dim ? x->hi[k] : 0};
+    x->proven =
+        ic_surface_eval_interval(S[0], probe_out, probe_in, NULL) == IC_OK &&
+        ic_surface_eval_interval(S[1], probe_out, probe_in + (x->both ? 2 : 0), NULL) == IC_OK;
+    const int full = x->both ? opt->depth - 1 : opt->depth;
+    for (int k = 0; k < 2; k++)
+        x->dwidth[k] = (x->hi[k] - x->lo[k]) / (1 << full);
+    ic_status st = ic_jet_space_new(&x->sp2, 2, 1, err);
     if (st == IC_OK)
-        st = ic_jet_space_new(&sp3, 3, 1, err);
+        st = ic_jet_space_new(&x->sp3, 3, 1, err);
+    return st;
+}
+
+static void ctx_free(search_ctx *x)
+{
+    ic_jet_space_free(x->sp2);
+    ic_jet_space_free(x->sp3);
+}
+
+/* 1 when interval arithmetic proves that the cell holds no intersection
+ * point (an enclosure that failed excludes nothing). */
+static int cell_excluded(const search_ctx *x, const cell *c)
+{
+    if (!x->proven)
+        return 0;
+    ic_surface *const *S = x->S;
+    if (x->both) {
+        const ic_interval ua[2] = {{c->lo[0], c->hi[0]}, {c->lo[1], c->hi[1]}};
+        const ic_interval ub[2] = {{c->lo[2], c->hi[2]}, {c->lo[3], c->hi[3]}};
+        ic_interval xa[3], xb[3];
+        if (ic_surface_eval_interval(S[0], xa, ua, NULL) != IC_OK ||
+            ic_surface_eval_interval(S[1], xb, ub, NULL) != IC_OK)
+            return 0;
+        for (int k = 0; k < 3; k++)
+            if (ic_interval_is_empty(xa[k]) || ic_interval_is_empty(xb[k]) ||
+                xa[k].hi < xb[k].lo || xb[k].hi < xa[k].lo)
+                return 1;
+        return 0;
+    }
+    ic_interval box[3], fa, fb, xyz[3];
+    for (int k = 0; k < x->dim; k++)
+        box[k] = (ic_interval){c->lo[k], c->hi[k]};
+    if (x->mixed)
+        return ic_surface_eval_interval(S[x->P], xyz, box, NULL) == IC_OK &&
+               ic_surface_eval_interval(S[x->I], &fb, xyz, NULL) == IC_OK && excludes_zero(fb);
+    return (ic_surface_eval_interval(S[0], &fa, box, NULL) == IC_OK && excludes_zero(fa)) ||
+           (ic_surface_eval_interval(S[1], &fb, box, NULL) == IC_OK && excludes_zero(fb));
+}
+
+/* Self-intersections: one sheet pair per curve ((u, v) before (p, q)), and
+ * away from the trivial diagonal (u, v) = (p, q) by two leaf widths of the
+ * first search (the band does not shrink with refinement: the diagonal is a
+ * whole surface of trivial solutions). */
+static int off_diagonal_skip(const search_ctx *x, const cell *c, int leaf)
+{
+    const double *w = x->dwidth;
+    return c->lo[0] > c->hi[2] ||
+           (leaf && c->hi[0] >= c->lo[2] - 2 * w[0] && c->lo[0] <= c->hi[2] + 2 * w[0] &&
+            c->hi[1] >= c->lo[3] - 2 * w[1] && c->lo[1] <= c->hi[3] + 2 * w[1]);
+}
+
+/* Newton from the cell's centre: 1 with *cand set when it converged near
+ * the cell (within a cell width, inside the region); *converged says
+ * whether it converged at all. */
+static int leaf_newton(const search_ctx *x, const cell *c, ic_candidate *cand, int *converged)
+{
+    memset(cand, 0, sizeof *cand);
+    double z[4], xyz[3] = {0, 0, 0};
+    for (int k = 0; k < x->dim; k++)
+        z[k] = 0.5 * (c->lo[k] + c->hi[k]);
+    if (x->both)
+        *converged = newton_params(x->S[0], x->S[1], x->sp2, z, xyz) == 0;
+    else if (x->mixed)
+        *converged = newton_mixed(x->S[x->P], x->S[x->I], x->sp2, x->sp3, z, xyz) == 0;
+    else {
+        memcpy(xyz, z, sizeof xyz);
+        *converged = newton_implicit(x->S[0], x->S[1], x->sp3, xyz) == 0;
+        memcpy(z, xyz, sizeof xyz);
+    }
+    int ok = *converged;
+    for (int k = 0; ok && k < x->dim; k++) {
+        const double w = c->hi[k] - c->lo[k];
+        ok = z[k] >= c->lo[k] - w && z[k] <= c->hi[k] + w && z[k] >= x->lo[k] && z[k] <= x->hi[k];
+    }
+    if (ok && x->self) /* distinct preimages */
+        ok = fabs(z[0] - z[2]) + fabs(z[1] - z[3]) > 4 * (x->dwidth[0] + x->dwidth[1]);
+    if (x->both) {
+        cand->params[0][0] = z[0], cand->params[0][1] = z[1];
+        cand->params[1][0] = z[2], cand->params[1][1] = z[3];
+    } else if (x->mixed)
+        cand->params[x->P][0] = z[0], cand->params[x->P][1] = z[1];
+    memcpy(cand->xyz, xyz, sizeof xyz);
+    return ok;
+}
+
+/* The place of a cell in space: its centre's point and a radius covering
+ * the cell. Where the surface cannot be evaluated at the centre (a kink, a
+ * pole) the interval enclosure of the cell's image is used; where neither
+ * works the radius stays 0 (the cell is then never counted as covered). */
+static void describe_cell(const search_ctx *x, const cell *c, ic_unresolved *u)
+{
+    memcpy(u->lo, c->lo, sizeof u->lo);
+    memcpy(u->hi, c->hi, sizeof u->hi);
+    if (!x->mixed && !x->both) {
+        double half[3];
+        for (int k = 0; k < 3; k++) {
+            u->xyz[k] = 0.5 * (c->lo[k] + c->hi[k]);
+            half[k] = 0.5 * (c->hi[k] - c->lo[k]);
+        }
+        u->radius = 2 * ic_norm3(half);
+        return;
+    }
+    const int sheet = x->both ? 0 : x->P;
+    const double uvc[2] = {0.5 * (c->lo[0] + c->hi[0]), 0.5 * (c->lo[1] + c->hi[1])};
+    u->params[sheet][0] = uvc[0], u->params[sheet][1] = uvc[1];
+    if (x->both)
+        u->params[1][0] = 0.5 * (c->lo[2] + c->hi[2]), u->params[1][1] = 0.5 * (c->lo[3] + c->hi[3]);
+    double t[9];
+    if (ic_surface_taylor(x->S[sheet], t, uvc, x->sp2, NULL) == IC_OK && isfinite(t[0] + t[3] + t[6])) {
+        const double Ru[3] = {t[1], t[4], t[7]}, Rv[3] = {t[2], t[5], t[8]};
+        u->xyz[0] = t[0], u->xyz[1] = t[3], u->xyz[2] = t[6];
+        u->radius = (c->hi[0] - c->lo[0]) * ic_norm3(Ru) + (c->hi[1] - c->lo[1]) * ic_norm3(Rv);
+        if (isfinite(u->radius))
+            return;
+    }
+    const ic_interval box[2] = {{c->lo[0], c->hi[0]}, {c->lo[1], c->hi[1]}};
+    ic_interval X[3];
+    u->radius = 0.0;
+    if (ic_surface_eval_interval(x->S[sheet], X, box, NULL) != IC_OK)
+        return;
+    double half[3];
+    for (int k = 0; k < 3; k++) {
+        u->xyz[k] = 0.5 * (X[k].lo + X[k].hi);
+        half[k] = 0.5 * (X[k].hi - X[k].lo);
+    }
+    const double r = 2 * ic_norm3(half);
+    u->radius = isfinite(r) && isfinite(ic_norm3(u->xyz)) ? r : 0.0;
+}
+
+/* 1 when the cell, enlarged by a quarter each side, is proven loop-free: a
+ * closed curve of extent below a quarter cell through a point of this cell
+ * lies inside the enlarged one. The enlargement stops at the region's
+ * edges, where no curve is sought, except across a period (the curve goes
+ * on there). */
+static int leaf_loop_free(const search_ctx *x, const cell *c)
+{
+    if (!x->proven)
+        return 0;
+    double elo[4], ehi[4];
+    for (int k = 0; k < x->dim; k++) {
+        const double q = 0.25 * (c->hi[k] - c->lo[k]);
+        elo[k] = c->lo[k] - q, ehi[k] = c->hi[k] + q;
+        if (!x->periodic[k])
+            elo[k] = fmax(elo[k], x->lo[k]), ehi[k] = fmin(ehi[k], x->hi[k]);
+    }
+    return ic_trace_cell_loop_free(x->S, x->par[0], x->par[1], elo, ehi);
+}
+
+typedef struct {
+    ic_unresolved *u;
+    int n, cap;
+} unres_list;
+
+static int push_unresolved(unres_list *l, const ic_unresolved *u)
+{
+    if (l->n == l->cap) {
+        const int cap = l->cap ? 2 * l->cap : 64;
+        ic_unresolved *p = realloc(l->u, (size_t)cap * sizeof *p);
+        if (!p)
+            return -1;
+        l->u = p;
+        l->cap = cap;
+    }
+    l->u[l->n++] = *u;
+    return 0;
+}
+
+/* A leaf: Newton, centred forms, the loop test; a start point is kept, a
+ * leaf that holds none, or that fails the loop test, is returned as
+ * unresolved. -1: out of memory. */
+static int process_leaf(const search_ctx *x, const cell *c, int level, cand_list *list,
+                        unres_list *unres, ic_trace_report *rep)
+{
+    ic_candidate cand;
+    int converged;
+    const int ok = leaf_newton(x, c, &cand, &converged);
+    /* nothing found: centred forms may still prove the leaf empty (they
+     * separate two surfaces closer than a cell, centred.c) */
+    if (!ok && x->proven && ic_trace_cell_excluded_centred(x->S, x->par[0], x->par[1], c->lo, c->hi)) {
+        rep->cells_excluded++;
+        rep->cells_excluded_centred++;
+        return 0;
+    }
+    const int loop = !leaf_loop_free(x, c);
+    if (x->proven) {
+        if (loop)
+            rep->loop_cells++;
+        else
+            rep->loop_free_cells++;
+    }
+    if (ok && push_candidate(list, &cand) != 0)
+        return -1;
+    if (ok && !loop)
+        return 0;
+    ic_unresolved u;
+    memset(&u, 0, sizeof u);
+    u.converged_elsewhere = converged && !ok;
+    u.loop = loop;
+    u.has_candidate = ok;
+    u.level = level;
+    u.degenerate = loop && (x->mixed || x->both) &&
+                   ic_trace_cell_may_degenerate(x->S, x->par[0], x->par[1], c->lo, c->hi);
+    describe_cell(x, c, &u);
+    return push_unresolved(unres, &u);
+}
+
+/* A cell the budget left unexamined: returned as unresolved, unplaced
+ * (radius 0), so that it is never counted as covered. */
+static int push_unexamined(const search_ctx *x, const cell *c, int level, unres_list *unres)
+{
+    ic_unresolved u;
+    memset(&u, 0, sizeof u);
+    u.loop = 1;
+    u.level = level;
+    describe_cell(x, c, &u);
+    u.radius = 0.0;
+    return push_unresolved(unres, &u);
+}
+
+static int out_of_budget(ic_trace_budget *b)
+{
+    if (b->stopped)
+        return 1;
+    if (b->cells_left <= 0) {
+        b->stopped = IC_TRACE_STOP_CELLS;
+        return 1;
+    }
+    b->cells_left--;
+    /* the clock is read every 256 cells: a cell costs microseconds */
+    return (b->cells_left & 255) == 0 && ic_trace_out_of_time(b);
+}
+
+ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt,
+                              const ic_unresolved *within, ic_candidate **out, int *nout,
+                              ic_unresolved **unres, int *nunres, ic_trace_report *rep,
+                              ic_trace_budget *budget, ic_error *err)
+{
+    *out = NULL, *nout = 0, *unres = NULL, *nunres = 0;
+    search_ctx x;
+    ic_status st = ctx_init(&x, pair, opt, err);
+    if (st != IC_OK) {
+        ctx_free(&x);
+        return st;
+    }
+    if (!within)
+        rep->proven = x.proven;
+    x.proven = rep->proven; /* a finer search keeps the whole search's answer */
+    /* four parameters: one level less (16 children a split); without
+     * enclosures nothing is excluded: a coarser grid is sampled */
+    const int full = x.both ? opt->depth - 1 : opt->depth;
+    int depth = x.proven ? full : (full < 4 ? full : 4), level = 0;
+    double lo[4], hi[4];
+    memcpy(lo, x.lo, sizeof lo), memcpy(hi, x.hi, sizeof hi);
+    if (within) { /* a finer search of one cell: its 2^dim children */
+        memcpy(lo, within->lo, sizeof lo), memcpy(hi, within->hi, sizeof hi);
+        depth = 1;
+        level = within->level + 1;
+    }
+    double size = 0.0;
+    for (int k = 0; k < x.dim; k++)
+        size = fmax(size, (hi[k] - lo[k]) / (1 << depth));
+    rep->cell_size = within ? fmin(rep->cell_size, size) : size;
     cand_list list = {0};
-    const size_t max_stack = 16 * (size_t)depth + 16;
-    cell *stack = malloc(max_stack * sizeof *stack);
-    const double dwidth[2] = {(hi[0] - lo[0]) / (1 << depth), (hi[1] - lo[1]) / (1 << depth)};
-    if (st == IC_OK && !stack)
+    unres_list ul = {0};
+    cell *stack = malloc(((size_t)16 * depth + 16) * sizeof *stack);
+    if (!stack)
         st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory searching start points");
     int top = 0;
     if (st == IC_OK) {
-        memcpy(stack[0].lo, lo, sizeof lo);
-        memcpy(stack[0].hi, hi, sizeof hi);
+        memcpy(stack[0].lo, lo, sizeof lo), memcpy(stack[0].hi, hi, sizeof hi);
         stack[0].depth = 0;
         top = 1;
     }
-    double size = 0.0;
-    for (int k = 0; k < dim; k++)
-        size = fmax(size, (hi[k] - lo[k]) / (1 << depth));
-    rep->cell_size = within ? fmin(rep->cell_size, size) : size;
     while (st == IC_OK && top > 0) {
         const cell c = stack[--top];
+        const int leaf = c.depth == depth;
+        if (x.self && off_diagonal_skip(&x, &c, leaf))
+            continue;
+        if (out_of_budget(budget)) {
+            if (push_unexamined(&x, &c, level + c.depth - depth, &ul) != 0)
+                st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
+            continue;
+        }
         rep->cells++;
-        if (self) {
-            /* one sheet pair per curve: (u, v) before (p, q); and away from the
-             * trivial diagonal (u, v) = (p, q), two leaf widths at least */
-            if (c.lo[0] > c.hi[2] ||
-                (c.hi[0] >= c.lo[2] - 2 * dwidth[0] && c.lo[0] <= c.hi[2] + 2 * dwidth[0] &&
-                 c.hi[1] >= c.lo[3] - 2 * dwidth[1] && c.lo[1] <= c.hi[3] + 2 * dwidth[1] &&
-                 c.depth == depth))
-                continue;
+        if (cell_excluded(&x, &c)) {
+            rep->cells_excluded++;
+            continue;
         }
-        if (rep->proven && both) {
-            ic_interval ua[2] = {{c.lo[0], c.hi[0]}, {c.lo[1], c.hi[1]}};
-            ic_interval ub[2] = {{c.lo[2], c.hi[2]}, {c.lo[3], c.hi[3]}};
-            ic_interval xa[3], xb[3];
-            int empty = 0;
-            if (ic_surface_eval_interval(S[0], xa, ua, NULL) == IC_OK &&
-                ic_surface_eval_interval(S[1], xb, ub, NULL) == IC_OK)
-                for (int k = 0; k < 3; k++)
-                    if (ic_interval_is_empty(xa[k]) || ic_interval_is_empty(xb[k]) ||
-                        xa[k].hi < xb[k].lo || xb[k].hi < xa[k].lo)
-                        empty = 1;
-            if (empty) {
-                rep->cells_excluded++;
-                continue;
-            }
-        } else if (rep->proven) {
-            ic_interval box[3], fa, fb, xyz[3];
-            for (int k = 0; k < dim; k++)
-                box[k] = (ic_interval){c.lo[k], c.hi[k]};
-            int empty; /* an enclosure that failed excludes nothing */
-            if (mixed)
-                empty = ic_surface_eval_interval(S[P], xyz, box, NULL) == IC_OK &&
-                        ic_surface_eval_interval(S[I], &fb, xyz, NULL) == IC_OK &&
-                        excludes_zero(fb);
-            else
-                empty =
-                    (ic_surface_eval_interval(S[0], &fa, box, NULL) == IC_OK &&
-                     excludes_zero(fa)) ||
-                    (ic_surface_eval_interval(S[1], &fb, box, NULL) == IC_OK && excludes_zero(fb));
-            if (empty) {
-                rep->cells_excluded++;
-                continue;
-            }
-        }
-        if (c.depth < depth) { /* split into 2^dim children */
-            for (int m = 0; m < (1 << dim); m++) {
+        if (!leaf) { /* split into 2^dim children */
+            for (int m = 0; m < (1 << x.dim); m++) {
                 cell ch;
                 ch.depth = c.depth + 1;
-                for (int k = 0; k < dim; k++) {
+                for (int k = 0; k < x.dim; k++) {
                     const double mid = 0.5 * (c.lo[k] + c.hi[k]);
                     ch.lo[k] = (m >> k) & 1 ? mid : c.lo[k];
                     ch.hi[k] = (m >> k) & 1 ? c.hi[k] : mid;
@@ -295,121 +520,18 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt,
             }
             continue;
         }
-        /* a leaf: Newton from the centre, kept if it stays near the cell */
-        ic_candidate cand;
-        memset(&cand, 0, sizeof cand);
-        double x[3], uv[2];
-        int ok, converged;
-        if (both) {
-            double z[4];
-            for (int k = 0; k < 4; k++)
-                z[k] = 0.5 * (c.lo[k] + c.hi[k]);
-            ok = converged = newton_params(S[0], S[1], sp2, z, x) == 0;
-            for (int k = 0; ok && k < 4; k++) {
-                const double w = c.hi[k] - c.lo[k];
-                ok = z[k] >= c.lo[k] - w && z[k] <= c.hi[k] + w && z[k] >= lo[k] && z[k] <= hi[k];
-            }
-            if (ok && self) /* distinct preimages */
-                ok = fabs(z[0] - z[2]) + fabs(z[1] - z[3]) > 4 * (dwidth[0] + dwidth[1]);
-            cand.params[0][0] = z[0], cand.params[0][1] = z[1];
-            cand.params[1][0] = z[2], cand.params[1][1] = z[3];
-        } else if (mixed) {
-            uv[0] = 0.5 * (c.lo[0] + c.hi[0]), uv[1] = 0.5 * (c.lo[1] + c.hi[1]);
-            ok = converged = newton_mixed(S[P], S[I], sp2, sp3, uv, x) == 0;
-            for (int k = 0; ok && k < 2; k++) {
-                const double w = c.hi[k] - c.lo[k];
-                ok = uv[k] >= c.lo[k] - w && uv[k] <= c.hi[k] + w && uv[k] >= lo[k] &&
-                     uv[k] <= hi[k];
-            }
-            cand.params[P][0] = uv[0], cand.params[P][1] = uv[1];
-        } else {
-            for (int k = 0; k < 3; k++)
-                x[k] = 0.5 * (c.lo[k] + c.hi[k]);
-            ok = converged = newton_implicit(S[0], S[1], sp3, x) == 0;
-            for (int k = 0; ok && k < 3; k++) {
-                const double w = c.hi[k] - c.lo[k];
-                ok = x[k] >= c.lo[k] - w && x[k] <= c.hi[k] + w && x[k] >= lo[k] && x[k] <= hi[k];
-            }
-        }
-        /* nothing found: centred forms may still prove the leaf empty (they
-         * separate two surfaces closer than a cell, centred.c) */
-        if (!ok && rep->proven && ic_trace_cell_excluded_centred(S, par[0], par[1], c.lo, c.hi)) {
-            rep->cells_excluded++;
-            rep->cells_excluded_centred++;
-            continue;
-        }
-        /* the loop test */
-        int loop = 1;
-        if (rep->proven) {
-            /* enlarged by a quarter cell each side: a closed curve of extent
-             * below a quarter cell through a point of this cell lies inside */
-            double elo[4], ehi[4];
-            for (int k = 0; k < dim; k++) {
-                const double q = 0.25 * (c.hi[k] - c.lo[k]);
-                elo[k] = c.lo[k] - q, ehi[k] = c.hi[k] + q;
-            }
-            loop = !ic_trace_cell_loop_free(S, par[0], par[1], elo, ehi);
-            if (loop)
-                rep->loop_cells++;
-            else
-                rep->loop_free_cells++;
-        }
-        if (ok) {
-            memcpy(cand.xyz, x, sizeof x);
-            if (push_candidate(&list, &cand) != 0)
-                st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory searching start points");
-        } else { /* no start point in this cell: a curve may pass here unfound */
-            ic_unresolved u;
-            memset(&u, 0, sizeof u);
-            u.converged_elsewhere = converged;
-            u.loop = loop;
-            memcpy(u.lo, c.lo, sizeof u.lo);
-            memcpy(u.hi, c.hi, sizeof u.hi);
-            double t[9];
-            if (mixed || both) {
-                const double uvc[2] = {0.5 * (c.lo[0] + c.hi[0]), 0.5 * (c.lo[1] + c.hi[1])};
-                if (ic_surface_taylor(S[both ? 0 : P], t, uvc, sp2, NULL) != IC_OK)
-                    continue;
-                const double Ru[3] = {t[1], t[4], t[7]}, Rv[3] = {t[2], t[5], t[8]};
-                u.xyz[0] = t[0], u.xyz[1] = t[3], u.xyz[2] = t[6];
-                u.radius = (c.hi[0] - c.lo[0]) * ic_norm3(Ru) + (c.hi[1] - c.lo[1]) * ic_norm3(Rv);
-                const int sheet = both ? 0 : P;
-                u.params[sheet][0] = uvc[0], u.params[sheet][1] = uvc[1];
-                if (both)
-                    u.params[1][0] = 0.5 * (c.lo[2] + c.hi[2]),
-                    u.params[1][1] = 0.5 * (c.lo[3] + c.hi[3]);
-            } else {
-                double half[3];
-                for (int k = 0; k < 3; k++) {
-                    u.xyz[k] = 0.5 * (c.lo[k] + c.hi[k]);
-                    half[k] = 0.5 * (c.hi[k] - c.lo[k]);
-                }
-                u.radius = 2 * ic_norm3(half);
-            }
-            if (*nunres == capu) {
-                capu = capu ? 2 * capu : 64;
-                ic_unresolved *p = realloc(*unres, (size_t)capu * sizeof *p);
-                if (!p) {
-                    st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
-                    continue;
-                }
-                *unres = p;
-            }
-            (*unres)[(*nunres)++] = u;
-        }
+        if (process_leaf(&x, &c, level, &list, &ul, rep) != 0)
+            st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory searching start points");
     }
     free(stack);
-    ic_jet_space_free(sp2);
-    ic_jet_space_free(sp3);
+    ctx_free(&x);
     if (st != IC_OK) {
         free(list.c);
-        free(*unres);
-        *unres = NULL;
-        *nunres = 0;
+        free(ul.u);
         return st;
     }
     rep->candidates += list.n;
-    *out = list.c;
-    *nout = list.n;
+    *out = list.c, *nout = list.n;
+    *unres = ul.u, *nunres = ul.n;
     return IC_OK;
 }

@@ -35,16 +35,21 @@ static int near_curves(const ic_trace_result *r, const double *x, double bound)
     return 0;
 }
 
-/* Whether a traced curve or a recorded point passes within the cell's radius. */
-int ic_trace_found_near(const ic_trace_result *r, const ic_unresolved *u)
+int ic_trace_point_near_found(const ic_trace_result *r, const double *x, double bound)
 {
     for (int k = 0; k < r->nspecials; k++) {
         double d[3];
-        ic_axpy3(d, r->specials[k].xyz, -1.0, u->xyz);
-        if (ic_norm3(d) <= u->radius)
+        ic_axpy3(d, r->specials[k].xyz, -1.0, x);
+        if (ic_norm3(d) <= bound)
             return 1;
     }
-    return near_curves(r, u->xyz, u->radius);
+    return near_curves(r, x, bound);
+}
+
+/* Whether a traced curve or a recorded point passes within the cell's radius. */
+int ic_trace_found_near(const ic_trace_result *r, const ic_unresolved *u)
+{
+    return ic_trace_point_near_found(r, u->xyz, u->radius);
 }
 
 /* Records a tangential point near `near`: located to full precision on the

@@ -4,6 +4,7 @@
  * are located and recorded. The singular points (singular.c), the joining
  * (join.c) and the shapes (shape.c) have their own files.
  */
+#include "trace_constants.h"
 #include "trace_internal.h"
 #include "common/vec3.h"
 
@@ -54,22 +55,38 @@ static double box_distance(const ic_trace_point *pts, int k0, int k1, const doub
     return sqrt(d2);
 }
 
+/* How far the curve between two traced points may stray from their chord:
+ * the sagitta kappa h^2 / 8 of an arc of curvature kappa over a chord h,
+ * doubled for the curvature's change along the step. */
+static double sagitta(const ic_trace_point *p, const ic_trace_point *q)
+{
+    double d[3];
+    ic_axpy3(d, q->xyz, -1.0, p->xyz);
+    const double h2 = ic_dot3(d, d), k = fmax(fabs(p->kappa), fabs(q->kappa));
+    const double s = 0.25 * k * h2;
+    return isfinite(s) ? s : 0.5 * sqrt(h2);
+}
+
 double ic_trace_polyline_distance(const ic_trace_point *pts, int np, const double *x, double bound)
 {
     if (np == 1)
         return segment_distance(x, pts[0].xyz, pts[0].xyz);
-    /* chunks of 16 segments whose bounding box is farther than the bound
-     * are skipped, and the first segment within it ends the search (the
-     * coverage checks call this for every cell and candidate against every
-     * curve) */
+    /* the distance to the curve itself, not to its polyline: each segment's
+     * distance less the segment's sagitta. Chunks of 16 segments whose
+     * bounding box is farther than the bound and their largest sagitta are
+     * skipped, and the first segment within it ends the search (the coverage
+     * checks call this for every cell and candidate against every curve) */
     enum { CHUNK = 16 };
     double best = INFINITY;
     for (int k0 = 0; k0 + 1 < np; k0 += CHUNK) {
         const int k1 = k0 + CHUNK < np - 1 ? k0 + CHUNK : np - 1;
-        if (box_distance(pts, k0, k1, x) > bound)
+        double sag[CHUNK], most = 0.0;
+        for (int k = k0; k < k1; k++)
+            most = fmax(most, sag[k - k0] = sagitta(&pts[k], &pts[k + 1]));
+        if (box_distance(pts, k0, k1, x) - most > bound)
             continue;
         for (int k = k0; k < k1; k++) {
-            const double d = segment_distance(x, pts[k].xyz, pts[k + 1].xyz);
+            const double d = fmax(0.0, segment_distance(x, pts[k].xyz, pts[k + 1].xyz) - sag[k - k0]);
             if (d <= bound)
                 return d;
             best = d < best ? d : best;
@@ -356,14 +373,63 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
 /* Traces a curve from every start candidate that no curve traced so far
  * covers; a tangential candidate is recorded (or its tangential curve
  * traced). */
-static ic_status trace_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
-                                  ic_candidate *cand, int nc, const ic_trace_options *opt,
-                                  ic_error *err)
+static int defer_failure(ic_trace_result *r, const ic_candidate *c, const char *why)
+{
+    if (r->ndeferred == r->capd) {
+        const int cap = r->capd ? 2 * r->capd : 8;
+        ic_candidate *p = realloc(r->deferred, (size_t)cap * sizeof *p);
+        if (p)
+            r->deferred = p;
+        char(*q)[200] = realloc(r->deferred_why, (size_t)cap * sizeof *q);
+        if (q)
+            r->deferred_why = q;
+        if (!p || !q)
+            return -1;
+        r->capd = cap;
+    }
+    r->deferred[r->ndeferred] = *c;
+    snprintf(r->deferred_why[r->ndeferred++], sizeof r->deferred_why[0], "%s", why);
+    return 0;
+}
+
+/* The deferred start candidates that nothing traced passes near, listed
+ * (one per place). */
+static void list_deferred(ic_trace_result *r, double radius)
+{
+    for (int i = 0; i < r->ndeferred; i++) {
+        const double *x = r->deferred[i].xyz;
+        int dup = 0;
+        for (int j = 0; j < i && !dup; j++) {
+            double d[3];
+            ic_axpy3(d, r->deferred[j].xyz, -1.0, x);
+            dup = ic_norm3(d) <= 1e-9 * (1 + ic_norm3(x));
+        }
+        if (!dup && !ic_trace_point_near_found(r, x, radius))
+            ic_trace_failure(&r->report, "start candidate (%g, %g, %g): %s", x[0], x[1], x[2],
+                             r->deferred_why[i]);
+    }
+}
+
+/* An exact (located) singular point within bound of x. */
+static int near_exact_special(const ic_trace_result *r, const double *x, double bound)
+{
+    for (int k = 0; k < r->nspecials; k++) {
+        double d[3];
+        ic_axpy3(d, r->specials[k].xyz, -1.0, x);
+        if (!r->specials[k].approximate && ic_norm3(d) <= bound)
+            return 1;
+    }
+    return 0;
+}
+
+ic_status ic_trace_from_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
+                                   ic_candidate *cand, int nc, const ic_trace_options *opt,
+                                   ic_error *err)
 {
     const double radius = 2 * opt->chord + 1e-9;
     ic_status st = IC_OK;
     for (int i = 0; st == IC_OK && i < nc; i++) {
-        if (cand[i].covered)
+        if (cand[i].covered || ic_trace_point_near_found(r, cand[i].xyz, radius))
             continue;
         ic_local_point pt;
         ic_local_options lo = opt->local;
@@ -377,19 +443,23 @@ static ic_status trace_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *pa
         ic_error e2;
         if ((np ? ic_local_locate_params(pair, &pt, flat, np, &lo, &e2)
                 : ic_local_locate(pair, &pt, cand[i].xyz, &lo, &e2)) != IC_OK) {
-            ic_trace_failure(&r->report, "start candidate (%g, %g, %g): %s", cand[i].xyz[0],
-                             cand[i].xyz[1], cand[i].xyz[2], e2.message);
             /* the candidates at the same place (a pole's many preimages)
-             * would fail the same way: one failure is listed */
+             * would fail the same way: one is kept */
             cover_point(cand, nc, cand[i].xyz, 1e-9 * (1 + ic_norm3(cand[i].xyz)));
             cand[i].covered = 1;
+            if (defer_failure(r, &cand[i], e2.message) != 0)
+                st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
             continue;
         }
         ic_local_result res;
         if (ic_local_apparatus(pair, &res, &pt, 2, IC_METHOD_JET, &lo, &e2) != IC_OK ||
             res.type != IC_POINT_TRANSVERSAL) {
             /* a tangential candidate: recorded (or its tangential curve
-             * traced), and covered around it */
+             * traced), and covered around it; beside a singular point
+             * already located (a finer search's Newton lands there) it is
+             * that point */
+            if (near_exact_special(r, pt.xyz, fmax(radius, 2 * r->first_cell_size)))
+                continue;
             int curve;
             st = ic_trace_record_tangential(r, tr, pair, &pt, 2 * r->report.cell_size + 1e-6, 1,
                                             opt, &curve);
@@ -408,60 +478,23 @@ static ic_status trace_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *pa
     return st;
 }
 
-/* Searches each unresolved cell that nothing found passes near, where the
- * loop test failed or Newton found nothing at all, a few levels finer (a
- * loop smaller than the cell, missed by Newton from its centre), and traces
- * what it finds; *unres is replaced by the finer search's
- * unresolved cells there (and the cells passed over). */
-enum { MAX_REFINED = 64 };
-
-static ic_status refine_unresolved(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
-                                   const ic_trace_options *opt, ic_unresolved **unres, int *nu,
-                                   ic_error *err)
+/* The dimension of the search space of the pair: 3 (x, y, z), 2 (u, v)
+ * or 4 (u, v, p, q). */
+static int search_dim(ic_pair *pair)
 {
-    ic_unresolved *kept = NULL;
-    int nk = 0, capk = 0;
-    ic_status st = IC_OK;
-    for (int i = 0; st == IC_OK && i < *nu; i++) {
-        const ic_unresolved *u = &(*unres)[i];
-        ic_candidate *cand = NULL;
-        ic_unresolved *sub = NULL;
-        int nc = 0, ns = 0;
-        /* where the loop test failed (a closed curve can hide whole there),
-         * or where Newton found nothing at all; at most MAX_REFINED cells */
-        const int refine = r->report.proven && r->report.refined_cells < MAX_REFINED &&
-                           (u->loop || !u->converged_elsewhere) && !ic_trace_found_near(r, u);
-        if (refine) {
-            r->report.refined_cells++;
-            st = ic_trace_candidates(pair, opt, u, &cand, &nc, &sub, &ns, &r->report, err);
-            if (st == IC_OK)
-                st = trace_candidates(r, tr, pair, cand, nc, opt, err);
-        }
-        const ic_unresolved *add = refine ? sub : u;
-        const int nadd = refine ? ns : 1;
-        if (st == IC_OK && nk + nadd > capk) {
-            capk = 2 * (nk + nadd) + 16;
-            ic_unresolved *p = realloc(kept, (size_t)capk * sizeof *p);
-            if (!p)
-                st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
-            else
-                kept = p;
-        }
-        if (st == IC_OK && nadd > 0) {
-            memcpy(kept + nk, add, (size_t)nadd * sizeof *add);
-            nk += nadd;
-        }
-        free(cand);
-        free(sub);
-    }
-    if (st != IC_OK) {
-        free(kept);
-        return st;
-    }
-    free(*unres);
-    *unres = kept;
-    *nu = nk;
-    return IC_OK;
+    const int p0 = ic_surface_get_kind(ic_pair_surface(pair, 0)) == IC_PARAMETRIC;
+    const int p1 = ic_surface_get_kind(ic_pair_surface(pair, 1)) == IC_PARAMETRIC;
+    return p0 && p1 ? 4 : p0 || p1 ? 2 : 3;
+}
+
+/* complete: the search was proven, every cell decided, nothing failed and
+ * no work limit was reached (docs/tracing.md, "Completeness"). */
+static void set_complete(ic_trace_result *r)
+{
+    const ic_trace_report *rep = &r->report;
+    r->report.complete = rep->proven && rep->nfailures == 0 && !r->budget.stopped &&
+                         rep->uncovered_cells == 0 && rep->unproven_cells == 0 &&
+                         rep->undecided_loop_cells == 0;
 }
 
 ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options *opt, ic_error *err)
@@ -470,46 +503,49 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
     ic_trace_result *r = calloc(1, sizeof *r);
     if (!r)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory tracing");
+    r->budget.cells_left = IC_TRACE_MAX_CELLS;
+    if (opt->time_limit > 0)
+        r->budget.deadline = ic_trace_now() + opt->time_limit;
     ic_candidate *cand = NULL;
     ic_unresolved *unres = NULL;
     int nc = 0, nu = 0;
     ic_tracer *tr = NULL;
-    ic_status st = ic_trace_candidates(pair, opt, NULL, &cand, &nc, &unres, &nu, &r->report, err);
+    ic_status st = ic_trace_candidates(pair, opt, NULL, &cand, &nc, &unres, &nu, &r->report,
+                                       &r->budget, err);
+    r->first_cell_size = r->report.cell_size;
     if (st == IC_OK)
         st = ic_tracer_new(&tr, pair, opt, err);
-    if (st == IC_OK)
-        st = trace_candidates(r, tr, pair, cand, nc, opt, err);
-    /* unresolved cells that nothing found passes near: a tangential point is
-     * looked for in each (an isolated contact has no curve to find it by),
-     * then a finer search; then every branch out of the singular points found
-     * so far is traced; what is still far from everything found is counted */
+    if (st == IC_OK) {
+        ic_tracer_set_deadline(tr, r->budget.deadline);
+        st = ic_trace_from_candidates(r, tr, pair, cand, nc, opt, err);
+    }
+    /* open cells that nothing found passes near: a tangential point is
+     * looked for in each (an isolated contact has no curve to find it by);
+     * every branch out of the singular points found is traced; then every
+     * open cell is refined until decided; what is left is listed */
     for (int i = 0; st == IC_OK && i < nu; i++)
         /* a loop-free cell has N_A x N_B != 0 throughout (or grad F != 0):
          * no tangential point there (loops.c) */
-        if ((unres[i].loop || !r->report.proven) && !ic_trace_found_near(r, &unres[i]))
+        if ((unres[i].loop || !r->report.proven) && !unres[i].has_candidate &&
+            unres[i].radius > 0 && !ic_trace_found_near(r, &unres[i]))
             st = ic_trace_tangential_in_cell(r, tr, pair, &unres[i], opt);
     if (st == IC_OK)
-        st = refine_unresolved(r, tr, pair, opt, &unres, &nu, err);
+        st = ic_trace_complete_branches(r, tr, pair, opt);
+    if (st == IC_OK)
+        st = ic_trace_resolve_cells(r, tr, pair, opt, &unres, &nu, err);
     if (st == IC_OK)
         st = ic_trace_complete_branches(r, tr, pair, opt);
-    for (int i = 0; st == IC_OK && i < nu; i++) {
-        const int near = ic_trace_found_near(r, &unres[i]);
-        if (!near && unres[i].converged_elsewhere) {
-            r->report.unproven_cells++;
-        } else if (!near) {
-            if (r->report.uncovered_cells == 0 || r->report.uncovered_cells % 1000 == 0)
-                ic_trace_failure(
-                    &r->report,
-                    "a cell around (%.6g, %.6g, %.6g) may hold an intersection that was not "
-                    "found (not excluded, no start point converged there)",
-                    unres[i].xyz[0], unres[i].xyz[1], unres[i].xyz[2]);
-            r->report.uncovered_cells++;
-        }
-    }
     if (st == IC_OK)
         ic_trace_drop_duplicates(r, 2 * opt->chord + 1e-9);
     if (st == IC_OK && ic_trace_join_curves(r, opt->shape_tol, 50 * opt->chord) != IC_OK)
         st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory joining curves");
+    /* after joining: the arcs meeting at a pole of a parametrization are
+     * bridged there, and the cells around the pole are near the bridge */
+    if (st == IC_OK) {
+        list_deferred(r, 2 * opt->chord + 1e-9);
+        ic_trace_report_open_cells(r, unres, nu, search_dim(pair));
+    }
+    set_complete(r);
     ic_tracer_free(tr);
     free(cand);
     free(unres);
@@ -532,6 +568,8 @@ void ic_trace_result_free(ic_trace_result *r)
     free(r->at);
     free(r->specials);
     free(r->located);
+    free(r->deferred);
+    free(r->deferred_why);
     free(r);
 }
 

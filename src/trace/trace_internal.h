@@ -18,19 +18,57 @@ typedef struct {
 typedef struct {
     double xyz[3];
     double params[2][2];
-    double radius;
+    double radius;           /* 0 when no point of the cell could be evaluated */
     int converged_elsewhere; /* Newton from the centre left the cell */
     int loop;                /* the loop test failed (loops.c) */
+    int has_candidate;       /* a start point was found in it (a loop cell) */
+    int degenerate;          /* R_u x R_v of a parametric sheet may vanish in it */
+    int level;               /* levels of refinement below the first search */
     double lo[4], hi[4];     /* the cell in the search's coordinates */
 } ic_unresolved;
 
+/* The work limits of one trace (docs/tracing.md, "Work limits"): a wall
+ * clock deadline and a count of search cells; `stopped` says which ran out. */
+typedef struct {
+    double deadline; /* seconds on the monotonic clock; 0: none */
+    long cells_left; /* search cells that may still be examined */
+    int stopped;     /* 0, or IC_TRACE_STOP_TIME / IC_TRACE_STOP_CELLS */
+} ic_trace_budget;
+
+enum { IC_TRACE_STOP_TIME = 1, IC_TRACE_STOP_CELLS = 2 };
+
+/* Seconds on the monotonic clock. */
+double ic_trace_now(void);
+/* ic_tracer_run stops a curve (IC_TRACE_BUDGET) past this time (march.c). */
+void ic_tracer_set_deadline(ic_tracer *tr, double deadline);
+/* 1 (and b->stopped set) when the deadline has passed. */
+int ic_trace_out_of_time(ic_trace_budget *b);
+
 /* Start candidates by subdivision (search.c) of the whole search region, or,
- * when `within` is not NULL, of that leaf cell a few levels finer; adds to
- * the report's search part. *out and *unres are malloc'ed (free them). */
+ * when `within` is not NULL, of that cell one level finer; adds to the
+ * report's search part. *unres receives the leaves without a start point
+ * and the loop leaves (has_candidate set where one was found). Cells left
+ * when the budget runs out are returned as unresolved too. *out and *unres
+ * are malloc'ed (free them). */
 ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt,
                               const ic_unresolved *within, ic_candidate **out, int *n,
                               ic_unresolved **unres, int *nunres, ic_trace_report *rep,
-                              ic_error *err);
+                              ic_trace_budget *budget, ic_error *err);
+
+/* Traces a curve from every start candidate that no curve traced so far
+ * covers (trace.c). */
+ic_status ic_trace_from_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
+                                   ic_candidate *cand, int nc, const ic_trace_options *opt,
+                                   ic_error *err);
+
+/* resolve.c: every open cell refined until decided or out of levels or
+ * budget (*cells is taken and replaced by the cells left open); then the
+ * ones still open counted and listed, merged into regions of the search's
+ * dim coordinates. */
+ic_status ic_trace_resolve_cells(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
+                                 const ic_trace_options *opt, ic_unresolved **cells, int *n,
+                                 ic_error *err);
+void ic_trace_report_open_cells(ic_trace_result *r, const ic_unresolved *u, int n, int dim);
 
 /* A recorded singular point: where it was located, and its apparatus to
  * order 3 (res_ok: it could be computed), computed once and shared by every
@@ -51,7 +89,19 @@ struct ic_trace_result {
     ic_trace_located *located; /* each special's point and apparatus */
     int nspecials, caps;
     ic_trace_report report;
+    ic_trace_budget budget;
+    double first_cell_size; /* the first search's leaf size */
+    /* start candidates where the location failed (a pole of a
+     * parametrization, say): listed as failures only when nothing traced
+     * passes there in the end */
+    ic_candidate *deferred;
+    char (*deferred_why)[200];
+    int ndeferred, capd;
 };
+
+/* Whether a traced curve or recorded singular point lies within bound of x
+ * (singular.c). */
+int ic_trace_point_near_found(const ic_trace_result *r, const double *x, double bound);
 
 /* trace.c: the report's failure list (at most IC_TRACE_MAX_FAILURES). */
 void ic_trace_failure(ic_trace_report *rep, const char *fmt, ...) IC_PRINTF(2, 3);
@@ -96,6 +146,11 @@ ic_status ic_trace_tangential_in_cell(ic_trace_result *r, ic_tracer *tr, ic_pair
  * closed intersection curve lies wholly inside it (loops.c). */
 int ic_trace_cell_loop_free(ic_surface *const S[2], int par0, int par1, const double *lo,
                             const double *hi);
+
+/* 1 when the normal R_u x R_v of a parametric sheet may vanish in the
+ * search cell (loops.c). */
+int ic_trace_cell_may_degenerate(ic_surface *const S[2], int par0, int par1, const double *lo,
+                                 const double *hi);
 
 /* 1 when centred forms prove the search cell [lo, hi] holds no point of
  * both surfaces (centred.c). */

@@ -1,0 +1,33 @@
+/*
+ * The register of the tracer's constants (docs/tracing.md, "Constants"):
+ * each with its unit and the reason for its value. Lengths are never
+ * absolute here: they are fractions of the search region or of a cell, or
+ * counts. tests/test_trace_limits.c pins each one.
+ */
+#ifndef IC_TRACE_CONSTANTS_H
+#define IC_TRACE_CONSTANTS_H
+
+/* count: search cells one trace may examine, first search and refinement
+ * together. A cell costs 1 to 10 microseconds (interval enclosures, a
+ * Newton iteration, the loop test), so this bounds the search to seconds on
+ * any input; reaching it leaves the rest undecided (complete: false). */
+#define IC_TRACE_MAX_CELLS 2000000L
+
+/* levels: how far below the first search's leaves an undecided cell is
+ * subdivided (one level halves each side). 16 levels reach 2^-22 of the
+ * region at the default depth 6: far below any curve feature the marching
+ * resolves, and a refinement that needs more is reported, not pursued. */
+#define IC_TRACE_MAX_REFINE_LEVELS 16
+
+/* levels: a loop cell holding a located singular point or a traced
+ * tangential curve (where the loop test cannot succeed: N_A x N_B vanishes
+ * there) is explained by that point's local analysis once it is this many
+ * levels below the first search (1/8 of a first-search cell): nearer cells
+ * beside it are refined until proven loop-free. */
+#define IC_TRACE_EXPLAIN_LEVELS 3
+
+/* count: undecided cells are merged into at most this many regions, each
+ * listed in the report's failures with its box and reason. */
+#define IC_TRACE_MAX_REGIONS 64
+
+#endif

@@ -5,7 +5,7 @@
 #   make gallery  draw every bundled example into docs/gallery/
 #   make bench    run the benchmarks
 #   make install  install library, headers, pkg-config file and command (PREFIX)
-#   make fuzz     build the libFuzzer target with clang and run it (FUZZ_SECONDS)
+#   make fuzz     build the libFuzzer targets with clang and run each (FUZZ_SECONDS)
 
 BUILD ?= build
 PREFIX ?= /usr/local
@@ -61,15 +61,18 @@ bench: all
 	./$(BUILD)/bench/bench_surface
 	./$(BUILD)/bench/bench_local
 	./$(BUILD)/bench/bench_trace examples
+	./$(BUILD)/bench/bench_torture .
 
 install: all
 	cmake --install $(BUILD) --prefix $(PREFIX)
 
 fuzz: deps
 	cmake -S . -B build-fuzz -DCMAKE_C_COMPILER=clang -DIC_FUZZ=ON -DIC_BUILD_TESTS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
-	cmake --build build-fuzz -j2 --target fuzz_expr
-	mkdir -p fuzz/corpus/expr
+	cmake --build build-fuzz -j2 --target fuzz_expr fuzz_problem
+	mkdir -p fuzz/corpus/expr fuzz/corpus/problem
 	./build-fuzz/fuzz/fuzz_expr -max_total_time=$(FUZZ_SECONDS) -max_len=256 fuzz/corpus/expr fuzz/seeds/expr
+	./build-fuzz/fuzz/fuzz_problem -max_total_time=$(FUZZ_SECONDS) -max_len=4096 \
+	  -dict=fuzz/problem.dict -artifact_prefix=fuzz/ fuzz/corpus/problem fuzz/seeds/problem
 
 clean:
 	rm -rf build build-asan build-fuzz

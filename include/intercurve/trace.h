@@ -158,6 +158,9 @@ typedef struct {
     /** cells left undecided because a closed curve may hide there (the loop
      *  test failed down to the finest level) or the work ran out first */
     int undecided_loop_cells;
+    /** cells where the two surfaces coincide (a region of both, listed in
+     *  failures by its box): complete is then 0 */
+    int coincident_cells;
     int nfailures;
     char failures[IC_TRACE_MAX_FAILURES][240];
 } ic_trace_report;

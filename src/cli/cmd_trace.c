@@ -108,6 +108,7 @@ static cJSON *result_json(const ic_trace_result *r, const ic_pair *pair)
     cJSON_AddNumberToObject(ro, "loop_cells", rep->loop_cells);
     cJSON_AddNumberToObject(ro, "refined_cells", rep->refined_cells);
     cJSON_AddNumberToObject(ro, "undecided_loop_cells", rep->undecided_loop_cells);
+    cJSON_AddNumberToObject(ro, "coincident_cells", rep->coincident_cells);
     cJSON *f = cJSON_CreateArray();
     for (int i = 0; i < rep->nfailures; i++)
         cJSON_AddItemToArray(f, cJSON_CreateString(rep->failures[i]));

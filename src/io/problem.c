@@ -13,6 +13,14 @@
 #define MAX_SURFACES 2
 #define MAX_CONSTANTS 64
 #define NAME_LEN 64
+/* Largest magnitude of a coordinate (box bounds, a primitive's center,
+ * normal and lengths) or a parameter bound, in the problem's units: lengths
+ * are squared and summed (norms, r^2 in the equations, the plot's
+ * diagonal), which overflows above sqrt(DBL_MAX) ~ 1.3e154; 1e150 leaves
+ * room for sums and products of a few such terms. A positive length must
+ * also be at least 1/MAX_MAGNITUDE, so 1/r^2 (an ellipsoid's equation)
+ * stays finite. */
+#define MAX_MAGNITUDE 1e150
 
 struct ic_problem {
     char title[200];
@@ -41,6 +49,30 @@ static ic_status invalid(ic_error *err, const char *path, const char *msg)
 {
     ic_error_set_path(err, "%s", path);
     return ic_error_set(err, IC_ERR_INVALID, 0, "%s", msg);
+}
+
+/* A value beyond MAX_MAGNITUDE: its square, or the width of its interval,
+ * would overflow. */
+static ic_status too_large(ic_error *err, const char *path, double v)
+{
+    ic_error_set_path(err, "%s", path);
+    return ic_error_set(err, IC_ERR_INVALID, 0,
+                        "%g is too large: values must lie within +-%g, where their squares "
+                        "and differences stay finite",
+                        v, MAX_MAGNITUDE);
+}
+
+/* An interval [lo, hi] of a box or a domain: bounds within MAX_MAGNITUDE,
+ * so hi - lo (and the squares of coordinates in it) stay finite. */
+static ic_status check_bounds(const double iv[2], const char *path, ic_error *err)
+{
+    char sub[IC_ERROR_PATH_LEN];
+    for (int k = 0; k < 2; k++)
+        if (fabs(iv[k]) > MAX_MAGNITUDE) {
+            snprintf(sub, sizeof sub, "%s[%d]", path, k);
+            return too_large(err, sub, iv[k]);
+        }
+    return IC_OK;
 }
 
 static ic_status read_constants(ic_problem *p, const cJSON *obj, ic_error *err)
@@ -121,6 +153,8 @@ static ic_status read_domain(ic_problem *p, ic_surface *s, const cJSON *js, cons
             snprintf(sub, sizeof sub, "%s.domain[%d]", path, i);
             ic_status st = ic_json_numbers(domain[i], 2, cJSON_GetArrayItem(jd, i), sub,
                                            p->consts, p->nconsts, err);
+            if (st == IC_OK)
+                st = check_bounds(domain[i], sub, err);
             if (st != IC_OK)
                 return st;
         }
@@ -210,8 +244,34 @@ static ic_status read_implicit(ic_problem *p, ic_surface **s, const cJSON *js, c
     return IC_OK;
 }
 
-/* A field of a primitive: one number (count 1) or an array of `count`. */
-static ic_status prim_field(ic_problem *p, double *out, int count, const cJSON *js,
+/* The magnitude rule of a primitive's numbers: every one within
+ * MAX_MAGNITUDE, a positive length (radii, axes) also at least its inverse.
+ * Lengths that are not positive are left to the primitive's own message. */
+static ic_status check_magnitudes(const double *v, int count, int is_length, const char *path,
+                                  ic_error *err)
+{
+    char sub[IC_ERROR_PATH_LEN];
+    for (int k = 0; k < count; k++) {
+        if (count > 1)
+            snprintf(sub, sizeof sub, "%s[%d]", path, k);
+        else
+            snprintf(sub, sizeof sub, "%s", path);
+        if (fabs(v[k]) > MAX_MAGNITUDE)
+            return too_large(err, sub, v[k]);
+        if (is_length && v[k] > 0 && v[k] < 1 / MAX_MAGNITUDE) {
+            ic_error_set_path(err, "%s", sub);
+            return ic_error_set(err, IC_ERR_INVALID, 0,
+                                "%g is too small: a length must be at least %g, where its "
+                                "square and inverse square stay finite",
+                                v[k], 1 / MAX_MAGNITUDE);
+        }
+    }
+    return IC_OK;
+}
+
+/* A field of a primitive: one number (count 1) or an array of `count`;
+ * is_length: radii and axes (see check_magnitudes). */
+static ic_status prim_field(ic_problem *p, double *out, int count, int is_length, const cJSON *js,
                            const char *key, const char *path, int required, ic_error *err)
 {
     char sub[IC_ERROR_PATH_LEN];
@@ -223,9 +283,11 @@ static ic_status prim_field(ic_problem *p, double *out, int count, const cJSON *
         return ic_error_set(err, IC_ERR_INVALID, 0, "missing key \"%s\"", key);
     }
     snprintf(sub, sizeof sub, "%s.%s", path, key);
-    if (count == 1)
-        return ic_json_number(out, it, sub, p->consts, p->nconsts, err);
-    return ic_json_numbers(out, count, it, sub, p->consts, p->nconsts, err);
+    ic_status st = count == 1 ? ic_json_number(out, it, sub, p->consts, p->nconsts, err)
+                              : ic_json_numbers(out, count, it, sub, p->consts, p->nconsts, err);
+    if (st != IC_OK)
+        return st;
+    return check_magnitudes(out, count, is_length, sub, err);
 }
 
 static ic_status read_primitive(ic_problem *p, ic_surface **s, const cJSON *js,
@@ -250,26 +312,26 @@ static ic_status read_primitive(ic_problem *p, ic_surface **s, const cJSON *js,
         else if (!(cJSON_IsString(jform) && strcmp(jform->valuestring, "implicit") == 0))
             return invalid(err, sub, "expected \"implicit\" or \"parametric\"");
     }
-    if ((st = prim_field(p, prim.center, 3, js, "center", path, 0, err)) != IC_OK)
+    if ((st = prim_field(p, prim.center, 3, 0, js, "center", path, 0, err)) != IC_OK)
         return st;
     switch (kind) {
     case IC_PRIM_PLANE:
-        st = prim_field(p, prim.normal, 3, js, "normal", path, 1, err);
+        st = prim_field(p, prim.normal, 3, 0, js, "normal", path, 1, err);
         break;
     case IC_PRIM_SPHERE:
     case IC_PRIM_CYLINDER:
-        st = prim_field(p, &prim.radius, 1, js, "radius", path, 1, err);
+        st = prim_field(p, &prim.radius, 1, 1, js, "radius", path, 1, err);
         break;
     case IC_PRIM_CONE:
-        st = prim_field(p, &prim.half_angle, 1, js, "half_angle", path, 1, err);
+        st = prim_field(p, &prim.half_angle, 1, 0, js, "half_angle", path, 1, err);
         break;
     case IC_PRIM_TORUS:
-        st = prim_field(p, &prim.major_radius, 1, js, "major_radius", path, 1, err);
+        st = prim_field(p, &prim.major_radius, 1, 1, js, "major_radius", path, 1, err);
         if (st == IC_OK)
-            st = prim_field(p, &prim.radius, 1, js, "minor_radius", path, 1, err);
+            st = prim_field(p, &prim.radius, 1, 1, js, "minor_radius", path, 1, err);
         break;
     case IC_PRIM_ELLIPSOID:
-        st = prim_field(p, prim.axes, 3, js, "axes", path, 1, err);
+        st = prim_field(p, prim.axes, 3, 1, js, "axes", path, 1, err);
         break;
     }
     if (st != IC_OK)
@@ -371,6 +433,8 @@ static ic_status read_problem(ic_problem *p, const cJSON *root, ic_error *err)
             snprintf(path, sizeof path, "box[%d]", i);
             st = ic_json_numbers(p->box[i], 2, cJSON_GetArrayItem(jb, i), path, p->consts,
                                  p->nconsts, err);
+            if (st == IC_OK)
+                st = check_bounds(p->box[i], path, err);
             if (st != IC_OK)
                 return st;
             if (!(p->box[i][0] < p->box[i][1]))
@@ -381,26 +445,59 @@ static ic_status read_problem(ic_problem *p, const cJSON *root, ic_error *err)
     return IC_OK;
 }
 
+/* A parse error at byte `at` of the text, by line and column. */
+static ic_status json_error(ic_error *err, const char *json, size_t at, const char *what)
+{
+    int line = 1, col = 1;
+    ic_json_line_col(json, at, &line, &col);
+    ic_error_set_path(err, "(line %d, column %d)", line, col);
+    return ic_error_set(err, IC_ERR_PARSE, 0, "%s near line %d, column %d", what, line, col);
+}
+
+/* JSON's white space (cJSON also skips control characters and NUL). */
+static int json_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
+
+/* The JSON text into a tree that keeps the document rules
+ * (ic_json_check_document); after the document only whitespace may follow
+ * (cJSON stops at the end of the first value and ignores the rest). */
+static ic_status parse_document(cJSON **root, const char *json, size_t len, ic_error *err)
+{
+    const char *end = NULL;
+    *root = json ? cJSON_ParseWithLengthOpts(json, len, &end, 0) : NULL;
+    if (!*root) {
+        const size_t at = end && end >= json && end <= json + len ? (size_t)(end - json) : 0;
+        return json_error(err, json ? json : "", json ? at : 0, "invalid JSON");
+    }
+    const size_t used = (size_t)(end - json);
+    ic_status st = IC_OK;
+    for (size_t i = used; i < len && st == IC_OK; i++)
+        if (!json_space(json[i]))
+            st = json_error(err, json, i,
+                            json[i] == '\0' ? "a NUL byte after the JSON document"
+                                            : "invalid JSON: text after the end of the document");
+    if (st == IC_OK)
+        st = ic_json_check_document(*root, json, used, err);
+    if (st != IC_OK) {
+        cJSON_Delete(*root);
+        *root = NULL;
+    }
+    return st;
+}
+
 ic_status ic_problem_parse(ic_problem **out, const char *json, size_t len, ic_error *err)
 {
     *out = NULL;
     ic_error_clear(err);
-    cJSON *root = cJSON_ParseWithLength(json, len);
-    if (!root) {
-        const char *where = cJSON_GetErrorPtr();
-        int line = 1, col = 1;
-        if (where && where >= json && where <= json + len)
-            ic_json_line_col(json, (size_t)(where - json), &line, &col);
-        ic_error_set_path(err, "(line %d, column %d)", line, col);
-        return ic_error_set(err, IC_ERR_PARSE, 0, "invalid JSON near line %d, column %d", line,
-                            col);
-    }
+    cJSON *root = NULL;
+    ic_status st = parse_document(&root, json, len, err);
+    if (st != IC_OK)
+        return st;
     ic_problem *p = calloc(1, sizeof *p);
     if (!p) {
         cJSON_Delete(root);
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory reading a problem");
     }
-    ic_status st = read_problem(p, root, err);
+    st = read_problem(p, root, err);
     cJSON_Delete(root);
     if (st != IC_OK) {
         ic_problem_free(p);

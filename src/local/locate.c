@@ -7,7 +7,10 @@
  *    two preimages). Each implicit sheet: the distance by Newton projection
  *    along the gradient.
  * 2. A point farther than opt->point_tol from either surface is an error that
- *    says how far.
+ *    says how far. When locating fails, pt->residual keeps the largest
+ *    distance of the given point measured so far (infinite off an implicit
+ *    sheet whose gradient vanishes there), so a caller can say first that
+ *    the point is not on the surfaces.
  * 3. Refinement onto both surfaces: Newton on the equations of the pairing
  *    plus t . (X - X0) = 0, i.e. in the plane through X0 normal to the curve.
  */
@@ -264,11 +267,15 @@ static ic_status implicit_distance(ic_pair *pair, ic_surface *s, const double *X
         if (st != IC_OK)
             return st;
         const double g2 = ic_dot3(grad, grad);
-        if (!(g2 > 0.0))
+        if (!(g2 > 0.0)) {
+            double moved[3];
+            ic_axpy3(moved, Y, -1.0, X);
+            *dist = f == 0.0 ? ic_norm3(moved) : INFINITY; /* f != 0: off, by no known length */
             return ic_error_set(err, IC_ERR_DOMAIN, 0,
                                 "grad f = 0 at (%.17g, %.17g, %.17g): the implicit surface is "
                                 "singular there",
                                 Y[0], Y[1], Y[2]);
+        }
         const double step = f / g2;
         ic_axpy3(Y, Y, -step, grad);
         if (fabs(step) * sqrt(g2) <= opt->newton_tol * (1 + ic_norm3(Y)))
@@ -537,8 +544,9 @@ ic_status ic_local_locate(ic_pair *pair, ic_local_point *pt, const double xyz[3]
     for (int s = 0; s < 2; s++) {
         ic_surface *srf = pair->s[s];
         if (ic_surface_get_kind(srf) == IC_IMPLICIT) {
-            double d;
+            double d = 0.0;
             ic_status st = implicit_distance(pair, srf, xyz, &d, opt, err);
+            pt->residual = fmax(pt->residual, d);
             if (st != IC_OK)
                 return st;
             if (d > opt->point_tol)
@@ -552,12 +560,14 @@ ic_status ic_local_locate(ic_pair *pair, ic_local_point *pt, const double xyz[3]
                                     "the point is on the surface at (%.17g, %.17g) only; no "
                                     "second preimage within %g, so it is no self-intersection",
                                     cand[0].uv[0], cand[0].uv[1], opt->point_tol);
+            pt->residual = fmax(pt->residual, cand[1].dist);
             memcpy(pt->params[1], cand[1].uv, sizeof cand[1].uv);
             continue;
         }
         ic_status st = closest_candidates(pair, srf, xyz, cand, &ncand, opt, err);
         if (st != IC_OK)
             return st;
+        pt->residual = fmax(pt->residual, cand[0].dist);
         if (cand[0].dist > opt->point_tol)
             return too_far_param(err, NAMES[s], cand[0].dist, opt->point_tol, srf, xyz);
         memcpy(pt->params[s], cand[0].uv, sizeof cand[0].uv);

@@ -65,6 +65,8 @@ static int explained(const ic_trace_result *r, const ic_unresolved *u)
 
 static int decided(const ic_trace_result *r, const ic_unresolved *u)
 {
+    if (u->radius > 0 && ic_trace_in_coincident(r, u->xyz))
+        return 0; /* a region of its own: never refined, listed */
     const int covered = u->radius > 0 && ic_trace_found_near(r, u);
     if (!r->report.proven) /* sampled only: nothing is proven anyway */
         return u->has_candidate || covered;
@@ -131,7 +133,9 @@ ic_status ic_trace_resolve_cells(ic_trace_result *r, ic_tracer *tr, ic_pair *pai
         const ic_unresolved u = work.u[--work.n];
         if (decided(r, &u))
             continue;
-        const int can_refine = r->report.proven && u.level < IC_TRACE_MAX_REFINE_LEVELS &&
+        const int can_refine = !u.overflow &&
+                               !(u.radius > 0 && ic_trace_in_coincident(r, u.xyz)) &&
+                               r->report.proven && u.level < IC_TRACE_MAX_REFINE_LEVELS &&
                                !r->budget.stopped && !ic_trace_out_of_time(&r->budget);
         if (can_refine)
             st = refine(r, tr, pair, opt, &u, &work, err);
@@ -150,17 +154,29 @@ ic_status ic_trace_resolve_cells(ic_trace_result *r, ic_tracer *tr, ic_pair *pai
 
 /* ---- what is left: counted, merged into regions, listed ---- */
 
-enum { WHY_LOOP = 1, WHY_ELSEWHERE = 2, WHY_NOTHING = 4, WHY_UNPLACED = 8, WHY_SAMPLED = 16 };
+enum {
+    WHY_LOOP = 1,
+    WHY_ELSEWHERE = 2,
+    WHY_NOTHING = 4,
+    WHY_UNPLACED = 8,
+    WHY_SAMPLED = 16,
+    WHY_COINCIDENT = 32,
+    WHY_OVERFLOW = 64
+};
 
 typedef struct {
     double lo[4], hi[4];
     int cells, why;
 } region;
 
-static int why_open(const ic_unresolved *u, int proven)
+static int why_open(const ic_trace_result *r, const ic_unresolved *u)
 {
-    if (!proven)
+    if (u->radius > 0 && ic_trace_in_coincident(r, u->xyz))
+        return WHY_COINCIDENT;
+    if (!r->report.proven)
         return WHY_SAMPLED;
+    if (u->overflow)
+        return WHY_OVERFLOW;
     if (!(u->radius > 0))
         return WHY_UNPLACED;
     if (u->loop && u->has_candidate)
@@ -180,19 +196,20 @@ static int touches(const region *g, const ic_unresolved *u, int dim)
     return 1;
 }
 
-static void grow(region *g, const ic_unresolved *u, int dim, int proven)
+static void grow(const ic_trace_result *r, region *g, const ic_unresolved *u, int dim)
 {
     for (int k = 0; k < dim; k++) {
         g->lo[k] = fmin(g->lo[k], u->lo[k]);
         g->hi[k] = fmax(g->hi[k], u->hi[k]);
     }
     g->cells++;
-    g->why |= why_open(u, proven);
+    g->why |= why_open(r, u);
 }
 
 /* Greedy merging: a cell joins the first region it touches (within a cell
  * width); past IC_TRACE_MAX_REGIONS regions it joins the last one. */
-static int merge_regions(const ic_unresolved *u, int n, int dim, int proven, region *g)
+static int merge_regions(const ic_trace_result *r, const ic_unresolved *u, int n, int dim,
+                         region *g)
 {
     int ng = 0;
     for (int i = 0; i < n; i++) {
@@ -206,13 +223,17 @@ static int merge_regions(const ic_unresolved *u, int n, int dim, int proven, reg
             ng++;
         } else if (j == ng)
             j = ng - 1;
-        grow(&g[j], &u[i], dim, proven);
+        grow(r, &g[j], &u[i], dim);
     }
     return ng;
 }
 
 static const char *why_text(int why)
 {
+    if (why & WHY_COINCIDENT)
+        return "the surfaces coincide there: a region of both, not a curve";
+    if (why & WHY_OVERFLOW)
+        return "the surfaces' values overflow double precision there (or a pole)";
     if (why & WHY_SAMPLED)
         return "sampled only: a surface has no interval evaluation, nothing was excluded";
     if (why & WHY_UNPLACED)
@@ -243,10 +264,11 @@ void ic_trace_report_open_cells(ic_trace_result *r, const ic_unresolved *u, int 
     for (int i = 0; i < n; i++) {
         if (decided(r, &u[i]))
             continue;
-        const int why = why_open(&u[i], rep->proven);
-        rep->undecided_loop_cells += why == WHY_LOOP || why == WHY_UNPLACED;
+        const int why = why_open(r, &u[i]);
+        rep->undecided_loop_cells += why == WHY_LOOP || why == WHY_UNPLACED || why == WHY_OVERFLOW;
         rep->unproven_cells += why == WHY_ELSEWHERE;
         rep->uncovered_cells += why == WHY_NOTHING || why == WHY_SAMPLED;
+        rep->coincident_cells += why == WHY_COINCIDENT;
         left++;
     }
     if (r->budget.stopped == IC_TRACE_STOP_TIME)
@@ -267,7 +289,7 @@ void ic_trace_report_open_cells(ic_trace_result *r, const ic_unresolved *u, int 
     for (int i = 0; i < n; i++)
         if (!decided(r, &u[i]))
             open[k++] = u[i];
-    const int ng = merge_regions(open, k, dim, rep->proven, g);
+    const int ng = merge_regions(r, open, k, dim, g);
     for (int j = 0; j < ng; j++)
         list_region(rep, &g[j], dim);
     free(open);

@@ -48,14 +48,19 @@ static int push_candidate(cand_list *l, const ic_candidate *c)
 
 static int excludes_zero(ic_interval a) { return ic_interval_is_empty(a) || a.lo > 0 || a.hi < 0; }
 
-/* f and grad f of an implicit surface */
+/* f and grad f of an implicit surface, both divided by the largest
+ * component of grad f (the same zero set; squares of gradients near
+ * overflow stay finite). */
 static int value_grad(ic_surface *s, const ic_jet_space *sp, const double *x, double *f, double *g)
 {
     double t[4];
     if (ic_surface_taylor(s, t, x, sp, NULL) != IC_OK)
         return -1;
-    *f = t[0];
-    g[0] = t[1], g[1] = t[2], g[2] = t[3];
+    const double m = fmax(fabs(t[1]), fmax(fabs(t[2]), fabs(t[3])));
+    if (!(m > 0) || !isfinite(m))
+        return -1;
+    *f = t[0] / m;
+    g[0] = t[1] / m, g[1] = t[2] / m, g[2] = t[3] / m;
     return 0;
 }
 
@@ -258,6 +263,33 @@ static int cell_excluded(const search_ctx *x, const cell *c)
            (ic_surface_eval_interval(S[1], &fb, box, NULL) == IC_OK && excludes_zero(fb));
 }
 
+static int unbounded(ic_interval a) { return !(isfinite(a.lo) && isfinite(a.hi)); }
+
+/* 1 when an enclosure of the surfaces over the cell is unbounded (values
+ * beyond double precision, or a pole): subdividing such a cell near the
+ * overflow does not bound it, so it is left undecided, not refined. */
+static int cell_overflows(const search_ctx *x, const cell *c)
+{
+    if (!x->proven)
+        return 0;
+    ic_interval box[4], out[2][3], f;
+    for (int k = 0; k < x->dim; k++)
+        box[k] = (ic_interval){c->lo[k], c->hi[k]};
+    for (int s = 0; s < 2; s++) {
+        ic_surface *S = x->S[s];
+        const int par = x->par[s];
+        const ic_interval *in = x->both && s == 1 ? box + 2 : box;
+        if (!par && x->mixed) /* f over the parametric sheet's image */
+            in = out[x->P];
+        if (ic_surface_eval_interval(S, par ? out[s] : &f, in, NULL) != IC_OK)
+            return 1;
+        for (int k = 0; k < (par ? 3 : 1); k++)
+            if (unbounded(par ? out[s][k] : f))
+                return 1;
+    }
+    return 0;
+}
+
 /* Self-intersections: one sheet pair per curve ((u, v) before (p, q)), and
  * away from the trivial diagonal (u, v) = (p, q) by two leaf widths of the
  * first search (the band does not shrink with refinement: the diagonal is a
@@ -419,6 +451,7 @@ static int process_leaf(const search_ctx *x, const cell *c, int level, cand_list
     u.loop = loop;
     u.has_candidate = ok;
     u.level = level;
+    u.overflow = cell_overflows(x, c);
     u.degenerate = loop && (x->mixed || x->both) &&
                    ic_trace_cell_may_degenerate(x->S, x->par[0], x->par[1], c->lo, c->hi);
     describe_cell(x, c, &u);

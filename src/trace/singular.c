@@ -71,6 +71,11 @@ ic_status ic_trace_record_tangential(ic_trace_result *r, ic_tracer *tr, ic_pair 
         pt = *near;
         approximate = 1;
     }
+    /* two surfaces that coincide around it: a region, not a point */
+    if (ic_trace_in_coincident(r, pt.xyz))
+        return IC_OK;
+    if (!approximate && ic_trace_coincident_at(pair, &pt, r->scale))
+        return ic_trace_add_coincident(r, pt.xyz) == 0 ? IC_OK : IC_ERR_NOMEM;
     ic_local_result res;
     if (!approximate &&
         ic_local_apparatus(pair, &res, &pt, opt->order, IC_METHOD_JET, &lo, NULL) == IC_OK &&

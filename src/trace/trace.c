@@ -410,6 +410,32 @@ static void list_deferred(ic_trace_result *r, double radius)
     }
 }
 
+int ic_trace_add_coincident(ic_trace_result *r, const double *x)
+{
+    if (r->ncoincident == r->capk) {
+        const int cap = r->capk ? 2 * r->capk : 16;
+        double(*p)[3] = realloc(r->coincident, (size_t)cap * sizeof *p);
+        if (!p)
+            return -1;
+        r->coincident = p;
+        r->capk = cap;
+    }
+    memcpy(r->coincident[r->ncoincident++], x, 3 * sizeof *x);
+    return 0;
+}
+
+int ic_trace_in_coincident(const ic_trace_result *r, const double *x)
+{
+    const double reach = IC_TRACE_COINCIDENT_REACH * r->scale;
+    for (int k = 0; k < r->ncoincident; k++) {
+        double d[3];
+        ic_axpy3(d, r->coincident[k], -1.0, x);
+        if (ic_norm3(d) <= reach)
+            return 1;
+    }
+    return 0;
+}
+
 /* An exact (located) singular point within bound of x. */
 static int near_exact_special(const ic_trace_result *r, const double *x, double bound)
 {
@@ -426,11 +452,18 @@ ic_status ic_trace_from_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *p
                                    ic_candidate *cand, int nc, const ic_trace_options *opt,
                                    ic_error *err)
 {
-    const double radius = 2 * opt->chord + 1e-9;
+    /* a start candidate is a point of the intersection (Newton converged
+     * there): it lies on a traced curve when within the curve's sagitta
+     * (ic_trace_polyline_distance) and this fraction of L. A wider radius
+     * would take a second curve beside the first for the first. */
+    const double radius = IC_TRACE_ON_CURVE * r->scale;
+    const double near_point = 2 * opt->chord + 1e-9; /* beside a singular point */
     ic_status st = IC_OK;
     for (int i = 0; st == IC_OK && i < nc; i++) {
         if (cand[i].covered || ic_trace_point_near_found(r, cand[i].xyz, radius))
             continue;
+        if (ic_trace_out_of_time(&r->budget))
+            break;
         ic_local_point pt;
         ic_local_options lo = opt->local;
         double flat[4];
@@ -458,12 +491,19 @@ ic_status ic_trace_from_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *p
              * traced), and covered around it; beside a singular point
              * already located (a finer search's Newton lands there) it is
              * that point */
-            if (near_exact_special(r, pt.xyz, fmax(radius, 2 * r->first_cell_size)))
+            if (near_exact_special(r, pt.xyz, fmax(near_point, 2 * r->first_cell_size)) ||
+                ic_trace_in_coincident(r, pt.xyz))
                 continue;
+            /* surfaces that coincide around it: a region, not a point */
+            if (ic_trace_coincident_at(pair, &pt, r->scale)) {
+                if (ic_trace_add_coincident(r, pt.xyz) != 0)
+                    st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
+                continue;
+            }
             int curve;
             st = ic_trace_record_tangential(r, tr, pair, &pt, 2 * r->report.cell_size + 1e-6, 1,
                                             opt, &curve);
-            cover_point(cand, nc, pt.xyz, fmax(radius, 2 * r->report.cell_size));
+            cover_point(cand, nc, pt.xyz, fmax(near_point, 2 * r->report.cell_size));
             if (curve >= 0)
                 ic_trace_cover(cand, nc, r->curves[curve].points, r->curves[curve].npoints, radius);
             continue;
@@ -494,7 +534,7 @@ static void set_complete(ic_trace_result *r)
     const ic_trace_report *rep = &r->report;
     r->report.complete = rep->proven && rep->nfailures == 0 && !r->budget.stopped &&
                          rep->uncovered_cells == 0 && rep->unproven_cells == 0 &&
-                         rep->undecided_loop_cells == 0;
+                         rep->undecided_loop_cells == 0 && rep->coincident_cells == 0;
 }
 
 ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options *opt, ic_error *err)
@@ -504,6 +544,7 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
     if (!r)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory tracing");
     r->budget.cells_left = IC_TRACE_MAX_CELLS;
+    r->scale = ic_trace_problem_scale(pair, opt);
     if (opt->time_limit > 0)
         r->budget.deadline = ic_trace_now() + opt->time_limit;
     ic_candidate *cand = NULL;
@@ -536,7 +577,7 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
     if (st == IC_OK)
         st = ic_trace_complete_branches(r, tr, pair, opt);
     if (st == IC_OK)
-        ic_trace_drop_duplicates(r, 2 * opt->chord + 1e-9);
+        ic_trace_drop_duplicates(r, IC_TRACE_ON_CURVE * r->scale);
     if (st == IC_OK && ic_trace_join_curves(r, opt->shape_tol, 50 * opt->chord) != IC_OK)
         st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory joining curves");
     /* after joining: the arcs meeting at a pole of a parametrization are
@@ -569,6 +610,7 @@ void ic_trace_result_free(ic_trace_result *r)
     free(r->specials);
     free(r->located);
     free(r->deferred);
+    free(r->coincident);
     free(r->deferred_why);
     free(r);
 }

@@ -30,4 +30,19 @@
  * listed in the report's failures with its box and reason. */
 #define IC_TRACE_MAX_REGIONS 64
 
+/* relative (of the problem's scale L): two surfaces through a common point
+ * with parallel normals coincide there when points of A at L/8 .. L/64
+ * from it lie on B within this fraction of L. Rounding leaves 1e-15; a
+ * contact of finite order separates them by far more at L/8. Cells within
+ * IC_TRACE_COINCIDENT_REACH L of such a point are part of the coincident
+ * region. */
+#define IC_TRACE_COINCIDENT_TOL 1e-10
+#define IC_TRACE_COINCIDENT_REACH (1.0 / 64)
+
+/* relative (of L): a start candidate, a converged point of both surfaces,
+ * lies on a traced curve when it is within the curve's sagitta and this
+ * fraction of L of its polyline. Newton leaves 1e-10 L at most; curves
+ * closer together than this are taken as one. */
+#define IC_TRACE_ON_CURVE 1e-8
+
 #endif

@@ -23,6 +23,7 @@ typedef struct {
     int loop;                /* the loop test failed (loops.c) */
     int has_candidate;       /* a start point was found in it (a loop cell) */
     int degenerate;          /* R_u x R_v of a parametric sheet may vanish in it */
+    int overflow;            /* an enclosure over it is unbounded: not refined */
     int level;               /* levels of refinement below the first search */
     double lo[4], hi[4];     /* the cell in the search's coordinates */
 } ic_unresolved;
@@ -91,6 +92,10 @@ struct ic_trace_result {
     ic_trace_report report;
     ic_trace_budget budget;
     double first_cell_size; /* the first search's leaf size */
+    double scale;           /* the problem's length scale L (coincident.c) */
+    /* points around which the two surfaces coincide (coincident.c) */
+    double (*coincident)[3];
+    int ncoincident, capk;
     /* start candidates where the location failed (a pole of a
      * parametrization, say): listed as failures only when nothing traced
      * passes there in the end */
@@ -98,6 +103,15 @@ struct ic_trace_result {
     char (*deferred_why)[200];
     int ndeferred, capd;
 };
+
+/* coincident.c: the problem's length scale L, and whether the surfaces
+ * coincide around pt (a point of both with parallel normals). */
+double ic_trace_problem_scale(ic_pair *pair, const ic_trace_options *opt);
+int ic_trace_coincident_at(ic_pair *pair, const ic_local_point *pt, double L);
+/* Records a point where the surfaces coincide; 1 when x is within
+ * IC_TRACE_COINCIDENT_REACH L of one recorded (trace.c). */
+int ic_trace_add_coincident(ic_trace_result *r, const double *x);
+int ic_trace_in_coincident(const ic_trace_result *r, const double *x);
 
 /* Whether a traced curve or recorded singular point lies within bound of x
  * (singular.c). */

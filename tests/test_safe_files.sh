@@ -45,12 +45,10 @@ only() { # description dir names...
     local what="$1" dir="$2"
     shift 2
     local want got
-    want=$(printf '%s\n' "$@" | sort)
-    got=$(ls -A "$dir" | sort)
-    # the status first: a command substitution in the message would reset $?
+    want=$(printf '%s\n' "$@" | sort | tr '\n' ' ')
+    got=$(find "$dir" -mindepth 1 -maxdepth 1 -printf '%f\n' | sort | tr '\n' ' ')
     [ "$got" = "$want" ]
-    local ok=$?
-    check "$what: the directory holds only '$(echo $want)' (has '$(echo $got)')" $ok
+    check "$what: the directory holds only '$want' (has '$got')" $?
 }
 # A failure: exit status 2 and a message with each part.
 failed() { # description parts...
@@ -288,7 +286,7 @@ if [ "$all_dev_ok" -eq 1 ]; then
     failed "trace -o /dev/full" "cannot write /dev/full: No space left on device"
     [ -c /dev/null ] && [ -c /dev/full ]
     check "/dev/null and /dev/full: still character devices" $?
-    [ -z "$(ls -A /dev | grep -E '^\.(null|full)\.')" ]
+    [ -z "$(find /dev -maxdepth 1 \( -name '.null.*' -o -name '.full.*' \))" ]
     check "no temporary file in /dev" $?
 else
     echo "note: the machine's /dev left alone: device nodes were not written in place"

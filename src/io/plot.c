@@ -85,8 +85,7 @@ static cairo_status_t sink_write(void *closure, const unsigned char *data, unsig
 
 static ic_status cairo_failed(ic_error *err, const char *path, cairo_status_t cs)
 {
-    return ic_error_set(err, IC_ERR_IO, 0, "cannot write %s: %s", path,
-                        cairo_status_to_string(cs));
+    return ic_error_set(err, IC_ERR_IO, 0, "cannot write %s: %s", path, cairo_status_to_string(cs));
 }
 
 /* The figure: background, title, 3D panel and chart. */

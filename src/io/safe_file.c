@@ -7,7 +7,6 @@
 
 #include <errno.h>
 #include <fcntl.h>
-#include <limits.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -64,8 +63,8 @@ static void random_suffix(char out[7], unsigned attempt)
     static const char chars[] = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
     struct timespec ts;
     clock_gettime(CLOCK_REALTIME, &ts);
-    uint64_t x = (uint64_t)ts.tv_nsec ^ ((uint64_t)ts.tv_sec << 30) ^
-                 ((uint64_t)getpid() << 20) ^ ((uint64_t)attempt * 0x9E3779B97F4A7C15u);
+    uint64_t x = (uint64_t)ts.tv_nsec ^ ((uint64_t)ts.tv_sec << 30) ^ ((uint64_t)getpid() << 20) ^
+                 ((uint64_t)attempt * 0x9E3779B97F4A7C15u);
     x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9u;
     x = (x ^ (x >> 27)) * 0x94D049BB133111EBu;
     x ^= x >> 31;
@@ -103,7 +102,9 @@ static char *temp_prefix(const char *target)
 /* Creates sf->tmp beside sf->target. O_EXCL never follows a link planted at
  * the name and never opens a file someone else made, so a user's own files
  * (FILE.tmp or any other) are never touched. mode < 0: a new file, 0666 less
- * the umask like fopen; else the permission bits of the file replaced. */
+ * the umask like fopen; else the permission bits of the file replaced. Not
+ * mkstemp: its 0600 would need the umask, and reading that (umask() sets it)
+ * races with other threads creating files. */
 static ic_status create_temp(ic_safe_file *sf, int mode, ic_error *err)
 {
     char *prefix = temp_prefix(sf->target);

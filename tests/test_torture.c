@@ -30,7 +30,8 @@
 #include "torture/torture_run.h"
 
 /* AddressSanitizer (make sanitize) runs the traces several times slower:
- * the limits grow with it, so a case that passes does not meet them. */
+ * the limits grow with it, so that a case passing in a normal build does not
+ * run into them. */
 #ifdef __SANITIZE_ADDRESS__
 #define TT_SLOWDOWN 5.0
 #else

@@ -253,9 +253,11 @@ static void tt_child(int fd, const char *path, double time_limit)
             s.stage = st == IC_OK ? TT_OK : TT_TRACE_ERROR;
         }
     }
-    if (s.stage != TT_OK)
+    if (s.stage != TT_OK) {
         snprintf(s.message, sizeof s.message, "%s%s%s", err.path[0] ? err.path : "",
                  err.path[0] ? ": " : "", err.message);
+        s.message[strcspn(s.message, "\n")] = 0; /* the first line, without the caret picture */
+    }
     tt_found_curve *cv = NULL;
     tt_found_point *pt = NULL;
     if (res) {
@@ -427,7 +429,7 @@ static void tt_say(tt_verdict *v, const char *fmt, ...)
     va_end(ap);
 }
 
-static int tt_cmp_double(const void *a, const void *b)
+static int tt_cmp_length(const void *a, const void *b)
 {
     const double x = ((const tt_found_curve *)a)->length, y = ((const tt_found_curve *)b)->length;
     return (x > y) - (x < y);
@@ -465,7 +467,7 @@ static int tt_judge_curves(const tt_case *c, const tt_result *r, tt_verdict *v)
     }
     tt_found_curve *sorted = malloc(((size_t)n + 1) * sizeof *sorted);
     memcpy(sorted, r->curves, (size_t)n * sizeof *sorted);
-    qsort(sorted, (size_t)n, sizeof *sorted, tt_cmp_double);
+    qsort(sorted, (size_t)n, sizeof *sorted, tt_cmp_length);
     /* the truth's curves are written sorted by length */
     double worst = 0;
     int worst_i = -1, nbad_len = 0, nbad_kind = 0, nbad_shape = 0, first_shape = -1,

@@ -95,7 +95,7 @@ static void check_viviani(const traced *t, const char *what)
 static void test_tolerances(void)
 {
     const double box[3][2] = {{-2.5, 2.5}, {-2.5, 2.5}, {-2.5, 2.5}};
-    const double tols[4] = {1e-6, 1e-8, 1e-10, 1e-12};
+    const double tols[4] = {1e-10, 1e-11, 1e-12, 1e-13};
     for (int k = 0; k < 4; k++) {
         traced t;
         char what[64];

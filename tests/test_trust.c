@@ -10,6 +10,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "curve_lengths.h"
 #include "harness.h"
 #include "intercurve.h"
 
@@ -300,6 +301,105 @@ static void test_time_limit(void)
     release(&t);
 }
 
+/* Scale-free tolerances (item 4): the sphere of radius s cut by z = 0.3 s
+ * in the box [-1.5 s, 1.5 s]^3, for s from 1e-6 to 1e6: one circle of
+ * length 2 pi s sqrt(0.91), with the same number of points at every scale
+ * (before: 17 points at 1e-6, the point budget at 1e4). */
+static void test_scales(void)
+{
+    const double scales[5] = {1e-6, 1e-3, 1, 1e3, 1e6};
+    int npoints[5] = {0};
+    for (int k = 0; k < 5; k++) {
+        const double s = scales[k];
+        char fa[96], fb[64];
+        snprintf(fa, sizeof fa, "x^2 + y^2 + z^2 - %.17g", s * s);
+        snprintf(fb, sizeof fb, "z - %.17g", 0.3 * s);
+        traced t;
+        const ic_trace_options opt = box_options(-1.5 * s, 1.5 * s);
+        if (!trace_implicit(&t, fa, fb, &opt)) {
+            CHECK(0, "scale %g traced", s);
+            continue;
+        }
+        char what[64];
+        snprintf(what, sizeof what, "sphere and plane at scale %g", s);
+        expect_curves(what, t.res, 1, 2 * PI * s * sqrt(0.91), 1);
+        if (ic_trace_result_num_curves(t.res) == 1) {
+            npoints[k] = ic_trace_result_curve(t.res, 0)->npoints;
+            CHECK(ic_trace_result_curve(t.res, 0)->shape == IC_SHAPE_CIRCLE, "%s: a circle", what);
+        }
+        release(&t);
+    }
+    for (int k = 1; k < 5; k++)
+        CHECK(npoints[k] == npoints[0], "points at scale %g: %d, at 1e-6: %d", scales[k],
+              npoints[k], npoints[0]);
+}
+
+/* Viviani's curve, (x - s)^2 + y^2 = s^2 and x^2 + y^2 + z^2 = 4 s^2, at
+ * s = 1e-3 and 1e4: one closed curve of length s times the Simpson length
+ * of the unit one (tests/curve_lengths.h), one branch point at (2 s, 0, 0)
+ * (before: approximate branch points, curves not joined). */
+static void test_viviani_scaled(void)
+{
+    const double scales[2] = {1e-3, 1e4};
+    for (int k = 0; k < 2; k++) {
+        const double s = scales[k];
+        char fa[96], fb[96];
+        snprintf(fa, sizeof fa, "(x - %.17g)^2 + y^2 - %.17g", s, s * s);
+        snprintf(fb, sizeof fb, "x^2 + y^2 + z^2 - %.17g", 4 * s * s);
+        traced t;
+        const ic_trace_options opt = box_options(-2.5 * s, 2.5 * s);
+        if (!trace_implicit(&t, fa, fb, &opt)) {
+            CHECK(0, "Viviani at scale %g traced", s);
+            continue;
+        }
+        char what[64];
+        snprintf(what, sizeof what, "Viviani at scale %g", s);
+        expect_curves(what, t.res, 1, 2 * viviani_lobe() * s, 1);
+        const ic_trace_special *sp = ic_trace_result_special(t.res, 0);
+        CHECK(ic_trace_result_num_specials(t.res) == 1 && !sp->approximate &&
+                  sp->type == IC_POINT_BRANCH && fabs(sp->xyz[0] - 2 * s) <= 1e-10 * s,
+              "%s: one exact branch point at (2 s, 0, 0)", what);
+        release(&t);
+    }
+}
+
+/* Two unit spheres overlapping by 1e-6 meet at 2e-3 rad in a circle of
+ * radius sqrt(1 - (1 - 5e-7)^2): a circle, not a line. */
+static void test_tiny_overlap(void)
+{
+    traced t;
+    ic_trace_options opt = box_options(-1.5, 1.5);
+    opt.box[0][1] = 3.5;
+    if (!trace_implicit(&t, "x^2 + y^2 + z^2 - 1", "(x - 1.999999)^2 + y^2 + z^2 - 1", &opt)) {
+        CHECK(0, "overlap trace");
+        return;
+    }
+    const double h = 1.999999 / 2, L = 2 * PI * sqrt(1 - h * h);
+    expect_curves("spheres overlapping by 1e-6", t.res, 1, L, 1);
+    CHECK(ic_trace_result_num_curves(t.res) == 1 &&
+              ic_trace_result_curve(t.res, 0)->shape == IC_SHAPE_CIRCLE,
+          "spheres overlapping by 1e-6: a circle");
+    release(&t);
+}
+
+/* Two coincident surfaces: a coincident region, no points, not complete. */
+static void test_coincident(void)
+{
+    traced t;
+    const ic_trace_options opt = box_options(-1, 1);
+    if (!trace_implicit(&t, "x + y - z", "2 * z - 2 * x - 2 * y", &opt)) {
+        CHECK(0, "coincident planes trace");
+        return;
+    }
+    const ic_trace_report *rep = ic_trace_result_report(t.res);
+    CHECK(ic_trace_result_num_specials(t.res) == 0 && ic_trace_result_num_curves(t.res) == 0 &&
+              rep->coincident_cells > 0 && !rep->complete,
+          "coincident planes: %d points, %d curves, %d coincident cells, complete %d",
+          ic_trace_result_num_specials(t.res), ic_trace_result_num_curves(t.res),
+          rep->coincident_cells, rep->complete);
+    release(&t);
+}
+
 /* Runs one case and prints its time (the budgets keep each to seconds). */
 static void timed(const char *name, void (*fn)(void))
 {
@@ -323,5 +423,9 @@ int main(void)
     timed("huge box", test_huge_box);
     timed("huge domain", test_huge_domain);
     timed("time limit", test_time_limit);
+    timed("scales", test_scales);
+    timed("Viviani scaled", test_viviani_scaled);
+    timed("tiny overlap", test_tiny_overlap);
+    timed("coincident", test_coincident);
     return harness_finish("trust");
 }

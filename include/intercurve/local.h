@@ -86,6 +86,11 @@ typedef struct {
      *  difference counts as zero when it is below contact_tol times the
      *  scale of its degree (default 1e-8; docs/tangential.md) */
     double contact_tol;
+    /** length: the problem's size L. Residuals that are lengths are
+     *  measured in units of it where they meet dimensionless ones (the
+     *  tangential locator), and its difference steps are fractions of it
+     *  (default 1; the tracer sets its problem scale, docs/tracing.md) */
+    double scale;
 } ic_local_options;
 
 /** Fills the defaults above. */

@@ -26,10 +26,15 @@ extern "C" {
 #endif
 
 typedef struct {
-    double tol;      /**< length: truncation error allowed per step (default 1e-10) */
-    double chord;    /**< length: chord-height bound of a step (default 1e-3) */
-    double max_step; /**< length: longest step (default 0.5) */
-    double min_step; /**< length: a step shorter than this fails (default 1e-12) */
+    /* The four lengths below are fractions of the problem's size L: the
+     * diagonal of the box for two implicit surfaces, else of the bounding
+     * box of the parametric surfaces over their domains, cut to the box
+     * (docs/tracing.md, "Scale"). A problem scaled by any factor is then
+     * traced with the same points and the same relative accuracy. */
+    double tol;      /**< relative: truncation error allowed per step (default 1e-11) */
+    double chord;    /**< relative: chord-height bound of a step (default 1e-4) */
+    double max_step; /**< relative: longest step (default 0.05) */
+    double min_step; /**< relative: a step shorter than this fails (default 1e-13) */
     int order;       /**< predictor order K, 3..12 (default 6) */
     int max_points;  /**< point budget of one curve (default 100000) */
     int has_box;     /**< 1: stop when the curve leaves box */

@@ -9,13 +9,14 @@
 
 static const char TRACE_HELP[] =
     "usage: intercurve trace PROBLEM.json [--format json|csv|vtk|obj|text] [-o FILE] [--tol T]\n"
-    "                        [--depth D]\n"
+    "                        [--depth D] [--time-limit SECONDS]\n"
     "\n"
     "Finds the intersection curves of the problem's two surfaces and traces each, with\n"
     "t, n, b, curvature and torsion at every point, its length and its shape (line,\n"
     "circle, planar, circular-helix, helix, general), the tangential points met, and a\n"
     "report of what was proven (cells excluded by interval arithmetic), what was only\n"
-    "sampled, and every failure.\n"
+    "sampled, and every failure. The report says \"complete\": true only when every part\n"
+    "of the search was decided (docs/tracing.md, \"Completeness\").\n"
     "\n"
     "Two implicit surfaces are searched inside the problem's \"box\"; a parametric\n"
     "surface over its \"domain\" (both domains, or twice the one, for two parametric\n"
@@ -26,8 +27,12 @@ static const char TRACE_HELP[] =
     "               t, n, b, kappa, tau as point data, for ParaView), obj (polylines) or\n"
     "               text (a summary table of the curves and points); docs/output-formats.md\n"
     "  -o FILE      write to FILE (through a temporary file and a rename)\n"
-    "  --tol T      truncation error allowed per step, a length (default 1e-10)\n"
+    "  --tol T      truncation error allowed per step, a fraction of the problem's size\n"
+    "               (the diagonal of the region searched; default 1e-11)\n"
     "  --depth D    subdivision depth of the start-point search, 1..9 (default 6)\n"
+    "  --time-limit SECONDS\n"
+    "               stop after this wall time with what was found (complete: false);\n"
+    "               default none (the search's own cell budget still bounds it)\n"
     "\n"
     "example:\n"
     "  intercurve trace examples/viviani-implicit.json -o viviani.json\n"
@@ -240,6 +245,14 @@ int ic_cmd_trace(int argc, char **argv)
         } else if (strcmp(argv[i], "--depth") == 0 && has_value) {
             if (ic_cli_parse_int(&opt.depth, argv[++i], 1, 9, "--depth") < 0)
                 return EXIT_INPUT;
+        } else if (strcmp(argv[i], "--time-limit") == 0 && has_value) {
+            double v;
+            if (ic_cli_parse_list(&v, 1, argv[++i], "--time-limit") != 1 || !(v > 0) ||
+                !(v <= 1e6)) {
+                fprintf(stderr, "intercurve trace: --time-limit expects seconds in (0, 1e6]\n");
+                return EXIT_INPUT;
+            }
+            opt.time_limit = v;
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
             fprintf(stderr,
                     "intercurve trace: unknown option or missing value: %s\n"

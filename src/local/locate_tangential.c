@@ -19,6 +19,7 @@ typedef struct {
     int par[2];
     int n; /* unknowns */
     ic_local_point base;
+    double L; /* the problem's size: length residuals are divided by it */
 } tctx;
 
 /* Builds the point from the unknowns. */
@@ -55,14 +56,14 @@ static int residuals(const tctx *c, const double *z, double *F)
     int m = 0;
     if (c->par[0] && c->par[1]) {
         for (int k = 0; k < 3; k++)
-            F[m++] = X[0][k] - X[1][k];
+            F[m++] = (X[0][k] - X[1][k]) / c->L;
     } else {
         const double *P = c->par[0] ? X[0] : c->par[1] ? X[1] : pt.xyz;
         for (int s = 0; s < 2; s++)
             if (!c->par[s]) {
                 if (ic_surface_normal_at(ic_pair_surface(c->pair, s), &g[s], P, NULL) != IC_OK)
                     return -1;
-                F[m++] = g[s].value / g[s].normal_length;
+                F[m++] = g[s].value / g[s].normal_length / c->L;
             }
     }
     double cr[3];
@@ -79,6 +80,7 @@ ic_status ic_local_locate_tangential(ic_pair *pair, ic_local_point *pt, const ic
     memset(&c, 0, sizeof c);
     c.pair = pair;
     c.base = *near;
+    c.L = opt->scale > 0 && isfinite(opt->scale) ? opt->scale : 1.0;
     double z[4];
     for (int s = 0; s < 2; s++) {
         c.par[s] = ic_surface_get_kind(ic_pair_surface(pair, s)) == IC_PARAMETRIC;
@@ -98,7 +100,9 @@ ic_status ic_local_locate_tangential(ic_pair *pair, ic_local_point *pt, const ic
         for (int j = 0; j < c.n; j++) { /* forward differences */
             double zj[4], Fj[6];
             memcpy(zj, z, sizeof zj);
-            const double h = 1e-7 * (1 + fabs(z[j]));
+            /* a coordinate steps by 1e-7 of the problem's size, a
+             * parameter by 1e-7 of its own size */
+            const double h = 1e-7 * ((c.par[0] || c.par[1] ? 1.0 : c.L) + fabs(z[j]));
             zj[j] += h;
             if (residuals(&c, zj, Fj) != m)
                 return ic_error_set(err, IC_ERR_UNABLE, 0, "a surface is singular near the point");

@@ -47,6 +47,7 @@ void ic_local_defaults(ic_local_options *opt)
     opt->tangential_angle = 1e-5; /* about eps^(1/3): docs/tangential.md */
     opt->distinct_params = 1e-6;
     opt->kappa_zero = 1e-12;
+    opt->scale = 1.0;
     opt->contact_tol = 1e-8;
 }
 

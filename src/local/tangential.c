@@ -283,6 +283,17 @@ static ic_status polar_curve_new(const tctx *cx, polar_curve *pc, const double *
     return IC_OK;
 }
 
+/* The curvature (1/length) that sets the rounding noise of the heights'
+ * coefficients at each degree: the largest of the heights' own along the
+ * polar curve and 8/L (L the problem's size; the surfaces curve across it
+ * more than along it: the torus of seed 002 Ex. 3, radius 1 across, needs
+ * 1/length 1 where L is 5.7, and 1/L let rounding pass as contact terms). */
+static double noise_curvature(const polar_curve *pc, double L)
+{
+    const double k = fmax(fabs(pc->lambda), fmax(fabs(pc->hA[2]), fabs(pc->hB[2])));
+    return fmax(k, 8 / L);
+}
+
 /* Delta = 0 with a nonzero quadratic part: follow dg/dw = 0 across the kernel. */
 static ic_status degenerate(const tctx *cx, ic_local_result *res, const double *g, double a,
                             double b, double c, int order, ic_error *err)
@@ -298,7 +309,10 @@ static ic_status degenerate(const tctx *cx, ic_local_result *res, const double *
     int m = 0;
     for (int j = 3; j <= H && !m; j++)
         if (fabs(h[j]) > cx->opt->contact_tol * fmax(fabs(hA[j]), fabs(hB[j])) &&
-            fabs(h[j]) > DBL_EPSILON * fmax(fabs(lambda), 1e-300))
+            /* h_j has the units of length^(1-j): rounding noise at
+             * eps k^(j-1), k the largest curvature at hand (lambda, the
+             * two heights' second coefficients, 1/L), is no contact term */
+            fabs(h[j]) > DBL_EPSILON * pow(noise_curvature(&pc, cx->opt->scale), j - 1))
             m = j;
     res->contact_order = m;
     if (m == 0) { /* g vanishes along the curve to order H: a tangential curve */

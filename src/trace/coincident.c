@@ -5,8 +5,11 @@
  * The scale L is the diagonal of the region where the intersection is
  * sought: the box for two implicit surfaces; otherwise the bounding box of
  * the parametric surfaces sampled over their domains (cut to the box when
- * there is one). Tolerances of the tracer that are lengths are fractions of
- * L, so a problem scaled by any factor gives the same answer.
+ * there is one). After the first search it shrinks to the bounding box of
+ * what that search left: its start points and the cells it could not
+ * exclude (a parametric surface may reach far beyond the intersection).
+ * Tolerances of the tracer that are lengths are fractions of L, so a
+ * problem scaled by any factor gives the same answer.
  *
  * Two surfaces coincide around a common point with parallel normals when
  * points of A around it, at distances L 2^-k in eight directions of the
@@ -63,6 +66,25 @@ double ic_trace_problem_scale(ic_pair *pair, const ic_trace_options *opt)
         d2 += hi[k] > lo[k] ? (hi[k] - lo[k]) * (hi[k] - lo[k]) : 0.0;
     const double L = sqrt(d2);
     return isfinite(L) && L > 0 ? L : 1.0;
+}
+
+double ic_trace_found_scale(double L, const ic_candidate *c, int nc, const ic_unresolved *u,
+                            int nu)
+{
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int i = 0; i < nc; i++)
+        for (int k = 0; k < 3; k++)
+            lo[k] = fmin(lo[k], c[i].xyz[k]), hi[k] = fmax(hi[k], c[i].xyz[k]);
+    for (int i = 0; i < nu; i++)
+        for (int k = 0; u[i].radius > 0 && k < 3; k++)
+            lo[k] = fmin(lo[k], u[i].xyz[k] - u[i].radius),
+            hi[k] = fmax(hi[k], u[i].xyz[k] + u[i].radius);
+    double d2 = 0;
+    for (int k = 0; k < 3; k++)
+        d2 += hi[k] > lo[k] ? (hi[k] - lo[k]) * (hi[k] - lo[k]) : 0.0;
+    const double F = sqrt(d2);
+    /* never below a thousandth of the region: a lone point has no size */
+    return isfinite(F) && F > 1e-3 * L && F < L ? F : L;
 }
 
 /* The distance from x to surface s (first order for an implicit one; a

@@ -208,7 +208,12 @@ ic_status ic_trace_join_curves(ic_trace_result *r, double shape_tol, double max_
                              * before the degenerate point */
                             const double reach = fmax(max_gap, 2 * (last_step(&r->curves[a], ea) +
                                                                     last_step(&r->curves[b], eb)));
-                            if (dist > reach || ic_dot3(oa, ob) > -cos(fmin(0.5, 4 * dist)) ||
+                            /* the turn allowed across the gap: four times
+                             * what the ends' curvature turns over it (at
+                             * least 1/L) */
+                            const double kappa = fmax(fmax(pa->kappa, pb->kappa), 1 / r->scale);
+                            const double turn = fmin(0.5, 4 * kappa * dist);
+                            if (dist > reach || ic_dot3(oa, ob) > -cos(turn) ||
                                 ic_dot3(d, t0) < 0.9 * dist)
                                 continue;
                             gap = ic_trace_gap_length(pa, t0, pb, ob);

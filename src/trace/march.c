@@ -3,6 +3,7 @@
  * plane normal to the curve, step control by truncation error and chord
  * height, events.
  */
+#include "trace_constants.h"
 #include "trace_internal.h"
 #include "common/vec3.h"
 #include "tangential_curve.h"
@@ -39,10 +40,13 @@ const char *ic_trace_event_name(ic_trace_event ev)
 void ic_trace_defaults(ic_trace_options *opt)
 {
     memset(opt, 0, sizeof *opt);
-    opt->tol = 1e-10;
-    opt->chord = 1e-3;
-    opt->max_step = 0.5;
-    opt->min_step = 1e-12;
+    /* fractions of the problem's size L (ic_trace_problem_scale): about the
+     * absolute values of earlier versions for the bundled examples, whose L
+     * is 3 to 14 */
+    opt->tol = 1e-11;
+    opt->chord = 1e-4;
+    opt->max_step = 0.05;
+    opt->min_step = 1e-13;
     opt->order = 6;
     opt->max_points = 100000;
     opt->depth = 6;
@@ -50,7 +54,30 @@ void ic_trace_defaults(ic_trace_options *opt)
     ic_local_defaults(&opt->local);
 }
 
+ic_trace_options ic_trace_absolute_options(const ic_trace_options *opt, double L)
+{
+    ic_trace_options a = *opt;
+    a.tol *= L;
+    a.chord *= L;
+    a.max_step *= L;
+    a.min_step *= L;
+    a.local.scale = L;
+    a.local.point_tol = IC_TRACE_POINT_TOL * L;
+    a.local.kappa_zero = opt->local.kappa_zero / L;
+    return a;
+}
+
 ic_status ic_tracer_new(ic_tracer **out, ic_pair *pair, const ic_trace_options *opt, ic_error *err)
+{
+    *out = NULL;
+    if (!pair || !opt)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "tracer: no pair or no options");
+    const ic_trace_options a = ic_trace_absolute_options(opt, ic_trace_problem_scale(pair, opt));
+    return ic_tracer_new_absolute(out, pair, &a, err);
+}
+
+ic_status ic_tracer_new_absolute(ic_tracer **out, ic_pair *pair, const ic_trace_options *opt,
+                                 ic_error *err)
 {
     *out = NULL;
     if (!pair || !opt || opt->order < 3 || opt->order > 12 || !(opt->tol > 0) ||
@@ -329,7 +356,7 @@ static int closes(const ic_tracer *tr, const double *next, double h, double *hs)
         return 0;
     double off[3];
     ic_axpy3(off, d, -along, e);
-    if (ic_norm3(off) > 4 * tr->opt.chord + 1e-9)
+    if (ic_norm3(off) > 4 * tr->opt.chord + 1e-10 * tr->opt.local.scale)
         return 0;
     /* the exact step: minimise |X(h) - X0| along the predictor */
     double hh = along * h;
@@ -391,7 +418,8 @@ ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
     double h = step_length(tr);
     int near_tangential = 0;
     for (int attempt = 0; attempt < 60; attempt++, h *= 0.5) {
-        if (h < tr->opt.min_step || (near_tangential && h < 1e-9 * (1 + ic_norm3(tr->cur.xyz))))
+        if (h < tr->opt.min_step ||
+            (near_tangential && h < 1e-10 * (tr->opt.local.scale + ic_norm3(tr->cur.xyz))))
             break;
         double X[3];
         ic_local_point next;

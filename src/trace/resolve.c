@@ -82,6 +82,8 @@ typedef struct {
 
 static int push(cell_stack *s, const ic_unresolved *u, int n)
 {
+    if (n == 0)
+        return 0;
     if (s->n + n > s->cap) {
         const int cap = 2 * (s->n + n) + 64;
         ic_unresolved *p = realloc(s->u, (size_t)cap * sizeof *p);
@@ -171,6 +173,8 @@ typedef struct {
 
 static int why_open(const ic_trace_result *r, const ic_unresolved *u)
 {
+    if (r->budget.stopped == IC_TRACE_STOP_TIME)
+        return WHY_UNPLACED;
     if (u->radius > 0 && ic_trace_in_coincident(r, u->xyz))
         return WHY_COINCIDENT;
     if (!r->report.proven)
@@ -257,12 +261,19 @@ static void list_region(ic_trace_report *rep, const region *g, int dim)
                      coords[dim == 3 ? 0 : dim == 2 ? 1 : 2], box, why_text(g->why));
 }
 
+/* 1 when the cell counts as open in the report; past the time limit every
+ * cell left does, unexamined (deciding them costs what the limit forbids). */
+static int still_open(const ic_trace_result *r, const ic_unresolved *u)
+{
+    return r->budget.stopped == IC_TRACE_STOP_TIME || !decided(r, u);
+}
+
 void ic_trace_report_open_cells(ic_trace_result *r, const ic_unresolved *u, int n, int dim)
 {
     ic_trace_report *rep = &r->report;
     int left = 0;
     for (int i = 0; i < n; i++) {
-        if (decided(r, &u[i]))
+        if (!still_open(r, &u[i]))
             continue;
         const int why = why_open(r, &u[i]);
         rep->undecided_loop_cells += why == WHY_LOOP || why == WHY_UNPLACED || why == WHY_OVERFLOW;
@@ -287,7 +298,7 @@ void ic_trace_report_open_cells(ic_trace_result *r, const ic_unresolved *u, int 
     }
     int k = 0;
     for (int i = 0; i < n; i++)
-        if (!decided(r, &u[i]))
+        if (still_open(r, &u[i]))
             open[k++] = u[i];
     const int ng = merge_regions(r, open, k, dim, g);
     for (int j = 0; j < ng; j++)

@@ -64,8 +64,13 @@ static int value_grad(ic_surface *s, const ic_jet_space *sp, const double *x, do
     return 0;
 }
 
+/* A Newton point is accepted when its distance to each surface is below
+ * this fraction of (L + |x|): rounding leaves about 1e-15 of it. */
+#define NEWTON_ACCEPT 1e-10
+
 /* Min-norm Newton onto f_A = f_B = 0 from x: 0 converged, -1 not. */
-static int newton_implicit(ic_surface *A, ic_surface *B, const ic_jet_space *sp, double *x)
+static int newton_implicit(ic_surface *A, ic_surface *B, const ic_jet_space *sp, double L,
+                           double *x)
 {
     for (int it = 0; it < 40; it++) {
         double fa, fb, ga[3], gb[3];
@@ -80,15 +85,17 @@ static int newton_implicit(ic_surface *A, ic_surface *B, const ic_jet_space *sp,
         for (int k = 0; k < 3; k++)
             step[k] = y0 * ga[k] + y1 * gb[k];
         ic_axpy3(x, x, -1.0, step);
-        if (ic_norm3(step) <= 1e-15 * (1 + ic_norm3(x)))
-            return fabs(fa) / sqrt(a) < 1e-10 && fabs(fb) / sqrt(c) < 1e-10 ? 0 : -1;
+        if (ic_norm3(step) <= 1e-15 * (L + ic_norm3(x))) {
+            const double accept = NEWTON_ACCEPT * (L + ic_norm3(x));
+            return fabs(fa) / sqrt(a) < accept && fabs(fb) / sqrt(c) < accept ? 0 : -1;
+        }
     }
     return -1;
 }
 
 /* Min-norm Newton onto f(R(u, v)) = 0 from uv. */
 static int newton_mixed(ic_surface *P, ic_surface *I, const ic_jet_space *sp2,
-                        const ic_jet_space *sp3, double *uv, double *x)
+                        const ic_jet_space *sp3, double L, double *uv, double *x)
 {
     for (int it = 0; it < 40; it++) {
         double t[9], f, g[3];
@@ -105,14 +112,14 @@ static int newton_mixed(ic_surface *P, ic_surface *I, const ic_jet_space *sp2,
         uv[1] -= f * dv / nn;
         memcpy(x, X, sizeof X);
         if (fabs(f) * sqrt(1 / nn) <= 1e-15 * (1 + fabs(uv[0]) + fabs(uv[1])))
-            return fabs(f) / ic_norm3(g) < 1e-10 ? 0 : -1;
+            return fabs(f) / ic_norm3(g) < NEWTON_ACCEPT * (L + ic_norm3(x)) ? 0 : -1;
     }
     return -1;
 }
 
 /* Min-norm Newton onto R_A(u, v) = R_B(p, q) from z = (u, v, p, q). */
-static int newton_params(ic_surface *A, ic_surface *B, const ic_jet_space *sp2, double *z,
-                         double *x)
+static int newton_params(ic_surface *A, ic_surface *B, const ic_jet_space *sp2, double L,
+                         double *z, double *x)
 {
     for (int it = 0; it < 40; it++) {
         double ta[9], tb[9];
@@ -134,7 +141,8 @@ static int newton_params(ic_surface *A, ic_surface *B, const ic_jet_space *sp2, 
                     M[a][b] += J[a][j] * J[b][j];
             }
         const double det = ic_det3(M[0], M[1], M[2]);
-        if (!(fabs(det) > 1e-30))
+        /* relative: det scales like the sixth power of the problem's size */
+        if (!(fabs(det) > 1e-30 * fabs(M[0][0] * M[1][1] * M[2][2])))
             return -1;
         double c0[3] = {M[0][0], M[1][0], M[2][0]}, c1[3] = {M[0][1], M[1][1], M[2][1]},
                c2[3] = {M[0][2], M[1][2], M[2][2]};
@@ -147,7 +155,7 @@ static int newton_params(ic_surface *A, ic_surface *B, const ic_jet_space *sp2, 
             size = fmax(size, fabs(step));
         }
         if (size <= 1e-15 * (1 + fabs(z[0]) + fabs(z[1]) + fabs(z[2]) + fabs(z[3])))
-            return ic_norm3(F) < 1e-10 * (1 + ic_norm3(x)) ? 0 : -1;
+            return ic_norm3(F) < NEWTON_ACCEPT * (L + ic_norm3(x)) ? 0 : -1;
     }
     return -1;
 }
@@ -178,6 +186,7 @@ typedef struct {
     int periodic[4];     /* coordinates whose domain is a period */
     double dwidth[2];    /* a leaf's width in (u, v) at the first search's depth */
     int proven;
+    double L; /* the problem's size */
     ic_jet_space *sp2, *sp3;
 } search_ctx;
 
@@ -193,6 +202,7 @@ static ic_status ctx_init(search_ctx *x, ic_pair *pair, const ic_trace_options *
     x->mixed = !x->both && (x->par[0] || x->par[1]);
     x->P = x->par[0] ? 0 : 1, x->I = 1 - x->P;
     x->dim = x->both ? 4 : x->mixed ? 2 : 3;
+    x->L = opt->local.scale > 0 ? opt->local.scale : 1.0;
     if (x->both) { /* (u, v, p, q) */
         if (domain_box(S, 0, x->lo, x->hi, x->periodic, err) != IC_OK ||
             domain_box(S, 1, x->lo + 2, x->hi + 2, x->periodic + 2, err) != IC_OK)
@@ -312,12 +322,12 @@ static int leaf_newton(const search_ctx *x, const cell *c, ic_candidate *cand, i
     for (int k = 0; k < x->dim; k++)
         z[k] = 0.5 * (c->lo[k] + c->hi[k]);
     if (x->both)
-        *converged = newton_params(x->S[0], x->S[1], x->sp2, z, xyz) == 0;
+        *converged = newton_params(x->S[0], x->S[1], x->sp2, x->L, z, xyz) == 0;
     else if (x->mixed)
-        *converged = newton_mixed(x->S[x->P], x->S[x->I], x->sp2, x->sp3, z, xyz) == 0;
+        *converged = newton_mixed(x->S[x->P], x->S[x->I], x->sp2, x->sp3, x->L, z, xyz) == 0;
     else {
         memcpy(xyz, z, sizeof xyz);
-        *converged = newton_implicit(x->S[0], x->S[1], x->sp3, xyz) == 0;
+        *converged = newton_implicit(x->S[0], x->S[1], x->sp3, x->L, xyz) == 0;
         memcpy(z, xyz, sizeof xyz);
     }
     int ok = *converged;

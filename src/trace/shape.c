@@ -25,6 +25,14 @@ const char *ic_shape_name(ic_shape shape)
  * (its apparatus comes from the height-difference method). */
 ic_shape ic_trace_shape(const ic_trace_point *p, int n, double length, double tol, int tangential)
 {
+    /* a curve whose every point is near tangency (two spheres overlapping
+     * by 1e-6 meet at 2e-3 rad) keeps all its points: none would read as
+     * no curvature, a line */
+    int usable = 0;
+    for (int i = 0; i < n && !usable; i++)
+        usable = p[i].angle >= SHAPE_MIN_ANGLE;
+    if (!usable)
+        tangential = 1;
     double kmax = 0, kmin = INFINITY, tmax = -INFINITY, tmin = INFINITY, rmax = -INFINITY,
            rmin = INFINITY;
     int framed = 0;

@@ -120,7 +120,8 @@ ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local
     for (int i = 0; i < r->nspecials; i++) {
         double d[3];
         ic_axpy3(d, r->specials[i].xyz, -1.0, pt->xyz);
-        const double same = r->specials[i].approximate || approximate ? 1e-3 : 1e-9;
+        /* relative to L: an approximate end is within 1e-4 L of its point */
+        const double same = (r->specials[i].approximate || approximate ? 1e-4 : 1e-10) * r->scale;
         if (ic_norm3(d) < same) { /* the same point met from another curve */
             *index = i;
             return IC_OK;
@@ -201,7 +202,7 @@ static ic_status add_curve(ic_trace_result *r, ic_trace_point *pts, int n, int c
 
 /* The tangential point ahead of a curve end `near`; 0 when it cannot be
  * located (then the end is recorded approximately). Gauss-Newton on the
- * collinear normals within 1e-3 (the march stops about 2e-5 before a branch
+ * collinear normals within 1e-4 L (the march stops about 2e-6 L before a branch
  * point); where it fails (a tacnode, whose end stops about 2e-3 away and
  * where Gauss-Newton is ill-conditioned along the curve), or "converges"
  * next to a cusp (to about 1e-8 for u^3 = v^2, a point that classifies as a
@@ -210,15 +211,16 @@ static ic_status add_curve(ic_trace_result *r, ic_trace_point *pts, int n, int c
 static int locate_end(ic_pair *pair, const ic_local_options *lopt, const ic_local_point *near,
                       ic_local_point *P)
 {
-    if (ic_local_locate_tangential(pair, P, near, 1e-3, lopt, NULL) != IC_OK)
-        return ic_local_locate_degenerate(pair, P, near, 0.05, lopt, NULL) == IC_OK;
+    const double L = lopt->scale;
+    if (ic_local_locate_tangential(pair, P, near, 1e-4 * L, lopt, NULL) != IC_OK)
+        return ic_local_locate_degenerate(pair, P, near, 5e-3 * L, lopt, NULL) == IC_OK;
     ic_local_result q;
     ic_local_options o = *lopt;
     ic_local_point D;
     if (ic_local_apparatus(pair, &q, P, 2, IC_METHOD_AUTO, &o, NULL) == IC_OK &&
         q.type == IC_POINT_BRANCH && q.nbranches == 2 &&
         fabs(ic_dot3(q.branches[0].t, q.branches[1].t)) > 1 - 1e-3 &&
-        ic_local_locate_degenerate(pair, &D, near, 0.05, lopt, NULL) == IC_OK)
+        ic_local_locate_degenerate(pair, &D, near, 5e-3 * L, lopt, NULL) == IC_OK)
         *P = D;
     return 1;
 }
@@ -402,7 +404,7 @@ static void list_deferred(ic_trace_result *r, double radius)
         for (int j = 0; j < i && !dup; j++) {
             double d[3];
             ic_axpy3(d, r->deferred[j].xyz, -1.0, x);
-            dup = ic_norm3(d) <= 1e-9 * (1 + ic_norm3(x));
+            dup = ic_norm3(d) <= 1e-10 * (r->scale + ic_norm3(x));
         }
         if (!dup && !ic_trace_point_near_found(r, x, radius))
             ic_trace_failure(&r->report, "start candidate (%g, %g, %g): %s", x[0], x[1], x[2],
@@ -457,7 +459,7 @@ ic_status ic_trace_from_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *p
      * (ic_trace_polyline_distance) and this fraction of L. A wider radius
      * would take a second curve beside the first for the first. */
     const double radius = IC_TRACE_ON_CURVE * r->scale;
-    const double near_point = 2 * opt->chord + 1e-9; /* beside a singular point */
+    const double near_point = 2 * opt->chord; /* beside a singular point */
     ic_status st = IC_OK;
     for (int i = 0; st == IC_OK && i < nc; i++) {
         if (cand[i].covered || ic_trace_point_near_found(r, cand[i].xyz, radius))
@@ -478,7 +480,7 @@ ic_status ic_trace_from_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *p
                 : ic_local_locate(pair, &pt, cand[i].xyz, &lo, &e2)) != IC_OK) {
             /* the candidates at the same place (a pole's many preimages)
              * would fail the same way: one is kept */
-            cover_point(cand, nc, cand[i].xyz, 1e-9 * (1 + ic_norm3(cand[i].xyz)));
+            cover_point(cand, nc, cand[i].xyz, 1e-10 * (r->scale + ic_norm3(cand[i].xyz)));
             cand[i].covered = 1;
             if (defer_failure(r, &cand[i], e2.message) != 0)
                 st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
@@ -501,7 +503,9 @@ ic_status ic_trace_from_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *p
                 continue;
             }
             int curve;
-            st = ic_trace_record_tangential(r, tr, pair, &pt, 2 * r->report.cell_size + 1e-6, 1,
+            /* within about a first-search cell (in space) */
+            const double reach = 4 * r->scale / (1 << opt->depth) + 1e-7 * r->scale;
+            st = ic_trace_record_tangential(r, tr, pair, &pt, reach, 1,
                                             opt, &curve);
             cover_point(cand, nc, pt.xyz, fmax(near_point, 2 * r->report.cell_size));
             if (curve >= 0)
@@ -537,14 +541,18 @@ static void set_complete(ic_trace_result *r)
                          rep->undecided_loop_cells == 0 && rep->coincident_cells == 0;
 }
 
-ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options *opt, ic_error *err)
+ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options *user_opt,
+                   ic_error *err)
 {
     *out = NULL;
     ic_trace_result *r = calloc(1, sizeof *r);
     if (!r)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory tracing");
     r->budget.cells_left = IC_TRACE_MAX_CELLS;
-    r->scale = ic_trace_problem_scale(pair, opt);
+    /* every length below is absolute: the user's fractions times L */
+    r->scale = ic_trace_problem_scale(pair, user_opt);
+    ic_trace_options eff = ic_trace_absolute_options(user_opt, r->scale);
+    const ic_trace_options *opt = &eff;
     if (opt->time_limit > 0)
         r->budget.deadline = ic_trace_now() + opt->time_limit;
     ic_candidate *cand = NULL;
@@ -554,8 +562,12 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
     ic_status st = ic_trace_candidates(pair, opt, NULL, &cand, &nc, &unres, &nu, &r->report,
                                        &r->budget, err);
     r->first_cell_size = r->report.cell_size;
+    /* the scale of the rest: where the first search left the intersection
+     * (a parametric surface may reach far beyond it) */
+    r->scale = ic_trace_found_scale(r->scale, cand, nc, unres, nu);
+    eff = ic_trace_absolute_options(user_opt, r->scale);
     if (st == IC_OK)
-        st = ic_tracer_new(&tr, pair, opt, err);
+        st = ic_tracer_new_absolute(&tr, pair, opt, err);
     if (st == IC_OK) {
         ic_tracer_set_deadline(tr, r->budget.deadline);
         st = ic_trace_from_candidates(r, tr, pair, cand, nc, opt, err);
@@ -564,7 +576,7 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
      * looked for in each (an isolated contact has no curve to find it by);
      * every branch out of the singular points found is traced; then every
      * open cell is refined until decided; what is left is listed */
-    for (int i = 0; st == IC_OK && i < nu; i++)
+    for (int i = 0; st == IC_OK && i < nu && !ic_trace_out_of_time(&r->budget); i++)
         /* a loop-free cell has N_A x N_B != 0 throughout (or grad F != 0):
          * no tangential point there (loops.c) */
         if ((unres[i].loop || !r->report.proven) && !unres[i].has_candidate &&
@@ -583,7 +595,7 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
     /* after joining: the arcs meeting at a pole of a parametrization are
      * bridged there, and the cells around the pole are near the bridge */
     if (st == IC_OK) {
-        list_deferred(r, 2 * opt->chord + 1e-9);
+        list_deferred(r, 2 * opt->chord);
         ic_trace_report_open_cells(r, unres, nu, search_dim(pair));
     }
     set_complete(r);

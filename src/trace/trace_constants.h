@@ -45,4 +45,9 @@
  * closer together than this are taken as one. */
 #define IC_TRACE_ON_CURVE 1e-8
 
+/* relative (of L): how far from both surfaces a point the tracer locates
+ * may be (the locators' point_tol). Newton leaves about 1e-15 L; 1e-7 L
+ * accepts the start candidates of the search (1e-10 L) with room. */
+#define IC_TRACE_POINT_TOL 1e-7
+
 #endif

@@ -38,6 +38,13 @@ typedef struct {
 
 enum { IC_TRACE_STOP_TIME = 1, IC_TRACE_STOP_CELLS = 2 };
 
+/* march.c: the options with their lengths made absolute for a problem of
+ * size L (tol, chord, max_step, min_step times L; the locators' scale L),
+ * and a tracer taking such options. */
+ic_trace_options ic_trace_absolute_options(const ic_trace_options *opt, double L);
+ic_status ic_tracer_new_absolute(ic_tracer **tr, ic_pair *pair, const ic_trace_options *opt,
+                                 ic_error *err);
+
 /* Seconds on the monotonic clock. */
 double ic_trace_now(void);
 /* ic_tracer_run stops a curve (IC_TRACE_BUDGET) past this time (march.c). */
@@ -108,6 +115,10 @@ struct ic_trace_result {
  * coincide around pt (a point of both with parallel normals). */
 double ic_trace_problem_scale(ic_pair *pair, const ic_trace_options *opt);
 int ic_trace_coincident_at(ic_pair *pair, const ic_local_point *pt, double L);
+/* The diagonal of the bounding box of the first search's start points and
+ * open cells, when between 1e-3 L and L; else L. */
+double ic_trace_found_scale(double L, const ic_candidate *c, int nc, const ic_unresolved *u,
+                            int nu);
 /* Records a point where the surfaces coincide; 1 when x is within
  * IC_TRACE_COINCIDENT_REACH L of one recorded (trace.c). */
 int ic_trace_add_coincident(ic_trace_result *r, const double *x);

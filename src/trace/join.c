@@ -240,12 +240,20 @@ ic_status ic_trace_join_curves(ic_trace_result *r, double shape_tol, double max_
  * degenerate point of a parametrization, before covering the other start). */
 void ic_trace_drop_duplicates(ic_trace_result *r, double radius)
 {
+    /* each curve's box once: thousands of small loops meet each other */
+    double(*box)[2][3] = malloc((size_t)(r->ncurves > 0 ? r->ncurves : 1) * sizeof *box);
+    if (!box)
+        return; /* duplicates stay: nothing is lost */
+    for (int c = 0; c < r->ncurves; c++)
+        ic_trace_curve_box(r->curves[c].points, r->curves[c].npoints, radius, box[c][0],
+                           box[c][1]);
     for (int a = 0; a < r->ncurves; a++) {
         const ic_trace_curve *ca = &r->curves[a];
         int inside = 0;
         for (int b = 0; b < r->ncurves && !inside; b++) {
             const ic_trace_curve *cb = &r->curves[b];
-            if (b == a || cb->length < ca->length)
+            if (b == a || cb->length < ca->length ||
+                !ic_trace_in_box(ca->points[0].xyz, box[b][0], box[b][1]))
                 continue;
             inside = 1;
             for (int k = 0; k < ca->npoints && inside; k++)
@@ -259,6 +267,8 @@ void ic_trace_drop_duplicates(ic_trace_result *r, double radius)
         r->curves[a] = r->curves[last];
         r->storage[a] = r->storage[last];
         r->at[a][0] = r->at[last][0], r->at[a][1] = r->at[last][1];
+        memcpy(box[a], box[last], sizeof box[a]);
         a--;
     }
+    free(box);
 }

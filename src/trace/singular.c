@@ -28,6 +28,9 @@ static ic_status start_curve(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
 /* Whether a traced curve passes within `bound` of x. */
 static int near_curves(const ic_trace_result *r, const double *x, double bound)
 {
+    const int hit = r->index ? ic_curve_index_near(r->index, r, x, bound) : -1;
+    if (hit >= 0)
+        return hit;
     for (int c = 0; c < r->ncurves; c++)
         if (ic_trace_polyline_distance(r->curves[c].points, r->curves[c].npoints, x, bound) <=
             bound)

@@ -24,7 +24,7 @@ void ic_trace_failure(ic_trace_report *rep, const char *fmt, ...)
     va_end(ap);
 }
 
-static double segment_distance(const double *p, const double *a, const double *b)
+static double point_segment(const double *p, const double *a, const double *b)
 {
     double ab[3], ap[3];
     ic_axpy3(ab, b, -1.0, a);
@@ -58,7 +58,7 @@ static double box_distance(const ic_trace_point *pts, int k0, int k1, const doub
 /* How far the curve between two traced points may stray from their chord:
  * the sagitta kappa h^2 / 8 of an arc of curvature kappa over a chord h,
  * doubled for the curvature's change along the step. */
-static double sagitta(const ic_trace_point *p, const ic_trace_point *q)
+double ic_trace_segment_sagitta(const ic_trace_point *p, const ic_trace_point *q)
 {
     double d[3];
     ic_axpy3(d, q->xyz, -1.0, p->xyz);
@@ -67,10 +67,15 @@ static double sagitta(const ic_trace_point *p, const ic_trace_point *q)
     return isfinite(s) ? s : 0.5 * sqrt(h2);
 }
 
+double ic_trace_segment_distance(const ic_trace_point *p, const ic_trace_point *q, const double *x)
+{
+    return fmax(0.0, point_segment(x, p->xyz, q->xyz) - ic_trace_segment_sagitta(p, q));
+}
+
 double ic_trace_polyline_distance(const ic_trace_point *pts, int np, const double *x, double bound)
 {
     if (np == 1)
-        return segment_distance(x, pts[0].xyz, pts[0].xyz);
+        return point_segment(x, pts[0].xyz, pts[0].xyz);
     /* the distance to the curve itself, not to its polyline: each segment's
      * distance less the segment's sagitta. Chunks of 16 segments whose
      * bounding box is farther than the bound and their largest sagitta are
@@ -82,11 +87,11 @@ double ic_trace_polyline_distance(const ic_trace_point *pts, int np, const doubl
         const int k1 = k0 + CHUNK < np - 1 ? k0 + CHUNK : np - 1;
         double sag[CHUNK], most = 0.0;
         for (int k = k0; k < k1; k++)
-            most = fmax(most, sag[k - k0] = sagitta(&pts[k], &pts[k + 1]));
+            most = fmax(most, sag[k - k0] = ic_trace_segment_sagitta(&pts[k], &pts[k + 1]));
         if (box_distance(pts, k0, k1, x) - most > bound)
             continue;
         for (int k = k0; k < k1; k++) {
-            const double d = fmax(0.0, segment_distance(x, pts[k].xyz, pts[k + 1].xyz) - sag[k - k0]);
+            const double d = fmax(0.0, point_segment(x, pts[k].xyz, pts[k + 1].xyz) - sag[k - k0]);
             if (d <= bound)
                 return d;
             best = d < best ? d : best;
@@ -95,10 +100,34 @@ double ic_trace_polyline_distance(const ic_trace_point *pts, int np, const doubl
     return best;
 }
 
+void ic_trace_curve_box(const ic_trace_point *pts, int np, double pad, double *lo, double *hi)
+{
+    double sag = 0.0;
+    for (int k = 0; k + 1 < np; k++)
+        sag = fmax(sag, ic_trace_segment_sagitta(&pts[k], &pts[k + 1]));
+    for (int i = 0; i < 3; i++)
+        lo[i] = hi[i] = pts[0].xyz[i];
+    for (int k = 1; k < np; k++)
+        for (int i = 0; i < 3; i++)
+            lo[i] = fmin(lo[i], pts[k].xyz[i]), hi[i] = fmax(hi[i], pts[k].xyz[i]);
+    for (int i = 0; i < 3; i++)
+        lo[i] -= sag + pad, hi[i] += sag + pad;
+}
+
+int ic_trace_in_box(const double *x, const double *lo, const double *hi)
+{
+    return x[0] >= lo[0] && x[0] <= hi[0] && x[1] >= lo[1] && x[1] <= hi[1] && x[2] >= lo[2] &&
+           x[2] <= hi[2];
+}
+
 void ic_trace_cover(ic_candidate *c, int n, const ic_trace_point *pts, int np, double radius)
 {
+    /* the curve's box first: a batch of candidates meets every curve */
+    double lo[3], hi[3];
+    ic_trace_curve_box(pts, np, radius, lo, hi);
     for (int i = 0; i < n; i++)
-        if (!c[i].covered && ic_trace_polyline_distance(pts, np, c[i].xyz, radius) <= radius)
+        if (!c[i].covered && ic_trace_in_box(c[i].xyz, lo, hi) &&
+            ic_trace_polyline_distance(pts, np, c[i].xyz, radius) <= radius)
             c[i].covered = 1;
 }
 
@@ -197,6 +226,8 @@ static ic_status add_curve(ic_trace_result *r, ic_trace_point *pts, int n, int c
     c->ends[1] = e1;
     c->shape_tol = shape_tol;
     c->shape = ic_trace_shape(pts, n, c->length, shape_tol, 0);
+    if (r->index && ic_curve_index_add(r->index, r->ncurves - 1, pts, n) != 0)
+        return IC_ERR_NOMEM;
     return IC_OK;
 }
 
@@ -566,6 +597,9 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
      * (a parametric surface may reach far beyond it) */
     r->scale = ic_trace_found_scale(r->scale, cand, nc, unres, nu);
     eff = ic_trace_absolute_options(user_opt, r->scale);
+    r->index = ic_curve_index_new(r->scale / 128);
+    if (st == IC_OK && !r->index)
+        st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory tracing");
     if (st == IC_OK)
         st = ic_tracer_new_absolute(&tr, pair, opt, err);
     if (st == IC_OK) {
@@ -592,6 +626,13 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
         ic_trace_drop_duplicates(r, IC_TRACE_ON_CURVE * r->scale);
     if (st == IC_OK && ic_trace_join_curves(r, opt->shape_tol, 50 * opt->chord) != IC_OK)
         st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory joining curves");
+    /* the curves changed: indexed anew */
+    if (st == IC_OK) {
+        ic_curve_index_clear(r->index);
+        for (int c = 0; c < r->ncurves && st == IC_OK; c++)
+            if (ic_curve_index_add(r->index, c, r->curves[c].points, r->curves[c].npoints) != 0)
+                st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
+    }
     /* after joining: the arcs meeting at a pole of a parametrization are
      * bridged there, and the cells around the pole are near the bridge */
     if (st == IC_OK) {
@@ -623,6 +664,7 @@ void ic_trace_result_free(ic_trace_result *r)
     free(r->located);
     free(r->deferred);
     free(r->coincident);
+    ic_curve_index_free(r->index);
     free(r->deferred_why);
     free(r);
 }

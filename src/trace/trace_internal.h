@@ -4,6 +4,8 @@
 
 #include "intercurve/trace.h"
 
+typedef struct ic_curve_index ic_curve_index;
+
 /* A start candidate: a point on both surfaces found in a cell the interval
  * test could not exclude. */
 typedef struct {
@@ -103,6 +105,7 @@ struct ic_trace_result {
     /* points around which the two surfaces coincide (coincident.c) */
     double (*coincident)[3];
     int ncoincident, capk;
+    ic_curve_index *index; /* the curves' segments by place (curve_index.c) */
     /* start candidates where the location failed (a pole of a
      * parametrization, say): listed as failures only when nothing traced
      * passes there in the end */
@@ -124,6 +127,22 @@ double ic_trace_found_scale(double L, const ic_candidate *c, int nc, const ic_un
 int ic_trace_add_coincident(ic_trace_result *r, const double *x);
 int ic_trace_in_coincident(const ic_trace_result *r, const double *x);
 
+/* curve_index.c: a spatial hash of the traced curves' segments (grid cell
+ * size h). ic_curve_index_near: 1 when a segment lies within bound of x
+ * (less its sagitta), 0 when none, -1 when the index cannot tell (then scan
+ * every curve). */
+ic_curve_index *ic_curve_index_new(double h);
+void ic_curve_index_free(ic_curve_index *ix);
+void ic_curve_index_clear(ic_curve_index *ix);
+int ic_curve_index_add(ic_curve_index *ix, int curve, const ic_trace_point *pts, int n);
+int ic_curve_index_near(ic_curve_index *ix, const ic_trace_result *r, const double *x,
+                        double bound);
+
+/* trace.c: the distance from x to the curve between two traced points (to
+ * their chord, less the chord's sagitta), and that sagitta. */
+double ic_trace_segment_distance(const ic_trace_point *p, const ic_trace_point *q, const double *x);
+double ic_trace_segment_sagitta(const ic_trace_point *p, const ic_trace_point *q);
+
 /* Whether a traced curve or recorded singular point lies within bound of x
  * (singular.c). */
 int ic_trace_point_near_found(const ic_trace_result *r, const double *x, double bound);
@@ -135,6 +154,10 @@ void ic_trace_failure(ic_trace_report *rep, const char *fmt, ...) IC_PRINTF(2, 3
  * distance: far parts are skipped). */
 double ic_trace_polyline_distance(const ic_trace_point *pts, int np, const double *x,
                                   double bound);
+/* The box of the polyline pts widened by its largest sagitta and pad; and
+ * whether x lies in a box. */
+void ic_trace_curve_box(const ic_trace_point *pts, int np, double pad, double *lo, double *hi);
+int ic_trace_in_box(const double *x, const double *lo, const double *hi);
 /* Marks the candidates within radius of the polyline pts as covered. */
 void ic_trace_cover(ic_candidate *c, int n, const ic_trace_point *pts, int np, double radius);
 /* Records a located tangential point (once), classified; *index its slot. */

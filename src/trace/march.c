@@ -458,8 +458,19 @@ ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
             ic_local_result res;
             double hb;
             int tangential;
+            /* a tangential curve lands too: its edge point is a point of
+             * the tangential curve, oriented along the march */
             if (land_on_boundary(tr, h, bd, &edge, &hb) == 0 &&
-                apparatus(tr, &res, &edge, &tangential, NULL) == IC_OK && !tangential) {
+                apparatus(tr, &res, &edge, &tangential, NULL) == IC_OK &&
+                (!tangential || (tr->tcurve && res.type == IC_POINT_TANGENTIAL_CURVE &&
+                                 res.nbranches >= 1))) {
+                if (tr->tcurve) {
+                    double t0[3], te[3];
+                    march_t(tr, &tr->res, t0);
+                    march_t(tr, &res, te);
+                    if (ic_dot3(te, t0) < 0)
+                        ic_tcurve_flip(&res.branches[0]);
+                }
                 tr->cur = edge;
                 tr->res = res;
                 tr->s += hb;

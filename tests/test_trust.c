@@ -119,6 +119,9 @@ static void test_interval_overflow(void)
     /* inf - inf: unknown, never empty */
     const ic_interval d = ic_interval_sub(e, e);
     CHECK(!ic_interval_is_empty(d) && d.lo <= 0 && d.hi >= 0, "exp - exp: [%g, %g]", d.lo, d.hi);
+    /* a NaN bound (inf - inf) is unknown, never empty */
+    const ic_interval n = ic_interval_add((ic_interval){-INFINITY, 0}, (ic_interval){INFINITY, INFINITY});
+    CHECK(!ic_interval_is_empty(n), "[-inf, 0] + [inf, inf]: [%g, %g]", n.lo, n.hi);
     /* 1e-300 e^1000 = 1.97e134 lies in the product's enclosure */
     const ic_interval p = ic_interval_mul((ic_interval){1e-300, 1e-300}, ic_interval_exp((ic_interval){1000, 1000}));
     CHECK(p.lo <= 1.97e134 && p.hi >= 1.97e134, "1e-300 e^1000 in [%g, %g]", p.lo, p.hi);
@@ -400,6 +403,28 @@ static void test_coincident(void)
     release(&t);
 }
 
+/* A periodic flag on a parameter that does not close the surface is
+ * rejected; a true one, whatever the domain's start, is taken. */
+static void test_periodic_flag(void)
+{
+    ic_surface *s = NULL;
+    const char *plane[3] = {"u", "v", "0"};
+    const char *sphere[3] = {"cos(u) * cos(v)", "sin(u) * cos(v)", "sin(v)"};
+    const int per[2] = {1, 0};
+    const double dom[2][2] = {{0, 1}, {0, 1}};
+    ic_error err;
+    CHECK(ic_surface_new_parametric(&s, plane, NULL, NULL, 0, NULL, NULL) == IC_OK &&
+              ic_surface_set_domain(s, dom, per, &err) == IC_ERR_INVALID,
+          "a plane with a periodic u is rejected");
+    ic_surface_free(s);
+    s = NULL;
+    const double shifted[2][2] = {{-1, 2 * PI - 1}, {-1.5, 1.5}};
+    CHECK(ic_surface_new_parametric(&s, sphere, NULL, NULL, 0, NULL, NULL) == IC_OK &&
+              ic_surface_set_domain(s, shifted, per, NULL) == IC_OK,
+          "a sphere periodic over [-1, 2 pi - 1] is taken");
+    ic_surface_free(s);
+}
+
 /* Runs one case and prints its time (the budgets keep each to seconds). */
 static void timed(const char *name, void (*fn)(void))
 {
@@ -427,5 +452,6 @@ int main(void)
     timed("Viviani scaled", test_viviani_scaled);
     timed("tiny overlap", test_tiny_overlap);
     timed("coincident", test_coincident);
+    timed("periodic flag", test_periodic_flag);
     return harness_finish("trust");
 }

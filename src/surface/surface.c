@@ -109,6 +109,43 @@ ic_surface_kind ic_surface_get_kind(const ic_surface *s) { return s->kind; }
 int ic_surface_num_inputs(const ic_surface *s) { return s->kind == IC_PARAMETRIC ? 2 : 3; }
 int ic_surface_num_outputs(const ic_surface *s) { return s->kind == IC_PARAMETRIC ? 3 : 1; }
 
+/* relative: the two ends of a periodic parameter must give the same point
+ * to this fraction of the largest sampled coordinate (rounding leaves
+ * 1e-16 of it) */
+#define PERIOD_MATCH 1e-9
+
+/* A parameter declared periodic must close the surface: R at both ends of
+ * its domain, sampled along the other parameter, is the same point. */
+static ic_status check_period(ic_surface *s, const double domain[2][2], int i, ic_error *err)
+{
+    const int o = 1 - i;
+    const double w0 = isfinite(domain[o][0]) ? domain[o][0] : -1.0;
+    const double w1 = isfinite(domain[o][1]) ? domain[o][1] : w0 + 2.0;
+    enum { SAMPLES = 9 };
+    double x[SAMPLES][2][3], size = 0, worst = 0, at_worst = w0;
+    int ok[SAMPLES];
+    for (int k = 0; k < SAMPLES; k++) {
+        double at[2];
+        at[o] = w0 + (w1 - w0) * (k + 0.5) / SAMPLES;
+        ok[k] = 1;
+        for (int e = 0; e < 2; e++) {
+            at[i] = domain[i][e];
+            ok[k] = ok[k] && ic_surface_eval(s, x[k][e], at, NULL) == IC_OK; /* else skipped */
+        }
+        for (int c = 0; ok[k] && c < 3; c++) {
+            size = fmax(size, fmax(fabs(x[k][0][c]), fabs(x[k][1][c])));
+            if (fabs(x[k][1][c] - x[k][0][c]) > worst)
+                worst = fabs(x[k][1][c] - x[k][0][c]), at_worst = at[o];
+        }
+    }
+    if (!(worst <= PERIOD_MATCH * size))
+        return ic_error_set(err, IC_ERR_INVALID, 0,
+                            "parameter %d is not periodic over [%g, %g]: the surface's points at "
+                            "its two ends differ by %.3g at parameter %d = %g",
+                            i + 1, domain[i][0], domain[i][1], worst, o + 1, at_worst);
+    return IC_OK;
+}
+
 ic_status ic_surface_set_domain(ic_surface *s, const double domain[2][2], const int periodic[2],
                                 ic_error *err)
 {
@@ -122,6 +159,9 @@ ic_status ic_surface_set_domain(ic_surface *s, const double domain[2][2], const 
             return ic_error_set(err, IC_ERR_INVALID, 0,
                                 "periodic parameter %d needs a finite domain", i + 1);
     }
+    for (int i = 0; periodic && i < 2; i++)
+        if (periodic[i] && check_period(s, domain, i, err) != IC_OK)
+            return IC_ERR_INVALID;
     memcpy(s->domain, domain, sizeof s->domain);
     for (int i = 0; i < 2; i++)
         s->periodic[i] = periodic ? periodic[i] != 0 : 0;

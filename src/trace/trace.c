@@ -188,9 +188,13 @@ ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local
     if (loc->res_ok) {
         s->type = loc->res.type;
         s->nbranches = loc->res.nbranches;
-    } else {
+    } else { /* not classified: kept as an approximate place, and said */
         s->type = IC_POINT_TANGENTIAL;
-        s->nbranches = -1;
+        s->nbranches = 0;
+        s->approximate = 1;
+        ic_trace_failure(&r->report,
+                         "a tangential point near (%.6g, %.6g, %.6g) could not be classified", s->xyz[0],
+                         s->xyz[1], s->xyz[2]);
     }
     return IC_OK;
 }

@@ -44,6 +44,11 @@ typedef struct {
     double shape_tol; /**< relative tolerance of the shape tests (default 1e-6) */
     double time_limit; /**< seconds of wall time for the whole trace; 0: none (default).
                         *   Reaching it stops with what was found, complete = 0 */
+    /** called about twice a second during a long trace (NULL: never):
+     *  the stage ("tracing start points", "refining open cells"), how many
+     *  of its items are done and how many are known so far */
+    void (*progress)(void *user, const char *stage, long done, long total);
+    void *progress_user;
     ic_local_options local;
 } ic_trace_options;
 

@@ -2,6 +2,17 @@
  * whole intersection (trace, plot). */
 #include "cli.h"
 
+#include <stdio.h>
+#include <unistd.h>
+
+/* Progress of a long trace on a terminal: one line, rewritten. */
+static void show_progress(void *user, const char *stage, long done, long total)
+{
+    int *shown = user;
+    fprintf(stderr, "\rintercurve: %s %ld/%ld   ", stage, done, total);
+    *shown = 1;
+}
+
 int ic_cli_trace_file(const char *file, ic_trace_options *opt, ic_cli_traced *t)
 {
     memset(t, 0, sizeof *t);
@@ -19,7 +30,18 @@ int ic_cli_trace_file(const char *file, ic_trace_options *opt, ic_cli_traced *t)
         ic_cli_traced_free(t);
         return EXIT_INPUT;
     }
+    int shown = 0;
+    if (!opt->progress && isatty(STDERR_FILENO)) { /* long runs show they are alive */
+        opt->progress = show_progress;
+        opt->progress_user = &shown;
+    }
     const ic_status st = ic_trace(&t->res, t->pair, opt, &err);
+    if (opt->progress == show_progress) {
+        opt->progress = NULL;
+        opt->progress_user = NULL;
+    }
+    if (shown) /* the progress line is cleared */
+        fprintf(stderr, "\r%60s\r", "");
     if (st != IC_OK) {
         ic_cli_print_error(file, &err);
         ic_cli_traced_free(t);

@@ -40,6 +40,23 @@ int ic_trace_out_of_time(ic_trace_budget *b)
     return 0;
 }
 
+void ic_trace_progress(ic_trace_result *r, const ic_trace_options *opt, const char *stage,
+                       long done, long total)
+{
+    /* seconds between two reports: often enough to show life, rarely
+     * enough to cost nothing */
+    const double EVERY = 0.5;
+    if (!opt->progress)
+        return;
+    const double now = ic_trace_now();
+    if (r->last_progress == 0)
+        r->last_progress = now;
+    if (now - r->last_progress < EVERY)
+        return;
+    r->last_progress = now;
+    opt->progress(opt->progress_user, stage, done, total);
+}
+
 /* A located singular point, a traced tangential curve, or a degenerate
  * point of a parametrization (a pole) that a traced curve passes, within
  * the cell's radius, once the cell is IC_TRACE_EXPLAIN_LEVELS deep. */
@@ -131,7 +148,10 @@ ic_status ic_trace_resolve_cells(ic_trace_result *r, ic_tracer *tr, ic_pair *pai
     *cells = NULL;
     *n = 0;
     ic_status st = IC_OK;
+    long done = 0;
     while (st == IC_OK && work.n > 0) {
+        ic_trace_progress(r, opt, "refining open cells", done, done + work.n);
+        done++;
         const ic_unresolved u = work.u[--work.n];
         if (decided(r, &u))
             continue;

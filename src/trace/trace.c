@@ -501,6 +501,7 @@ ic_status ic_trace_from_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *p
             continue;
         if (ic_trace_out_of_time(&r->budget))
             break;
+        ic_trace_progress(r, opt, "tracing start points", i, nc);
         ic_local_point pt;
         ic_local_options lo = opt->local;
         double flat[4];

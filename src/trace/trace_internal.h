@@ -47,6 +47,10 @@ ic_trace_options ic_trace_absolute_options(const ic_trace_options *opt, double L
 ic_status ic_tracer_new_absolute(ic_tracer **tr, ic_pair *pair, const ic_trace_options *opt,
                                  ic_error *err);
 
+/* Calls opt->progress when half a second has passed since the last call. */
+void ic_trace_progress(ic_trace_result *r, const ic_trace_options *opt, const char *stage,
+                       long done, long total);
+
 /* Seconds on the monotonic clock. */
 double ic_trace_now(void);
 /* ic_tracer_run stops a curve (IC_TRACE_BUDGET) past this time (march.c). */
@@ -106,6 +110,7 @@ struct ic_trace_result {
     double (*coincident)[3];
     int ncoincident, capk;
     ic_curve_index *index; /* the curves' segments by place (curve_index.c) */
+    double last_progress;  /* when opt->progress was last called */
     /* start candidates where the location failed (a pole of a
      * parametrization, say): listed as failures only when nothing traced
      * passes there in the end */

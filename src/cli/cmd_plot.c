@@ -69,7 +69,7 @@ static int parse_args(int argc, char **argv, const char **file, const char **out
         } else if (strcmp(argv[i], "--tol") == 0 && has_value) {
             double v;
             if (ic_cli_parse_list(&v, 1, argv[++i], "--tol") != 1 || !(v > 0) || v > 1e-2) {
-                fprintf(stderr, "intercurve plot: --tol expects a length in (0, 1e-2]\n");
+                fprintf(stderr, "intercurve plot: --tol expects a fraction of the problem's size in (0, 1e-2]\n");
                 return EXIT_INPUT;
             }
             to->tol = v;

@@ -162,10 +162,10 @@ static int write_summary(FILE *f, const ic_trace_result *r, const char *title)
     fprintf(f,
             "search: %d cells, %d excluded by interval arithmetic (%s), %d loop-free, %d where a "
             "small loop is not excluded, %d refined, %d uncovered, %d unproven, %d undecided "
-            "loop cells\n",
+            "loop cells, %d coincident\n",
             rep->cells, rep->cells_excluded, rep->proven ? "proven" : "sampled only",
             rep->loop_free_cells, rep->loop_cells, rep->refined_cells, rep->uncovered_cells,
-            rep->unproven_cells, rep->undecided_loop_cells);
+            rep->unproven_cells, rep->undecided_loop_cells, rep->coincident_cells);
     fprintf(f, "failures: %d\n", rep->nfailures);
     for (int i = 0; i < rep->nfailures; i++)
         fprintf(f, "  %s\n", rep->failures[i]);
@@ -238,7 +238,7 @@ int ic_cmd_trace(int argc, char **argv)
         else if (strcmp(argv[i], "--tol") == 0 && has_value) {
             double v;
             if (ic_cli_parse_list(&v, 1, argv[++i], "--tol") != 1 || !(v > 0) || v > 1e-2) {
-                fprintf(stderr, "intercurve trace: --tol expects a length in (0, 1e-2]\n");
+                fprintf(stderr, "intercurve trace: --tol expects a fraction of the problem's size in (0, 1e-2]\n");
                 return EXIT_INPUT;
             }
             opt.tol = v;

@@ -324,8 +324,19 @@ void ic_trace_report_open_cells(ic_trace_result *r, const ic_unresolved *u, int 
         if (still_open(r, &u[i]))
             open[k++] = u[i];
     const int ng = merge_regions(r, open, k, dim, g);
-    for (int j = 0; j < ng; j++)
-        list_region(rep, &g[j], dim);
+    /* as many regions as the failure list holds; the rest counted in one line */
+    const int room = IC_TRACE_MAX_FAILURES - rep->nfailures;
+    const int shown = ng <= room ? ng : room - 1;
+    int rest_cells = 0;
+    for (int j = 0; j < ng; j++) {
+        if (j < shown)
+            list_region(rep, &g[j], dim);
+        else
+            rest_cells += g[j].cells;
+    }
+    if (shown < ng)
+        ic_trace_failure(rep, "undecided: %d more regions of %d cells in all", ng - shown,
+                         rest_cells);
     free(open);
     free(g);
 }

@@ -332,6 +332,18 @@ static int finish_end(ic_trace_result *r, ic_pair *pair, const ic_trace_options 
     return index;
 }
 
+/* A curve stopped at IC_TRACE_BUDGET: by the time limit or by its points. */
+static void report_budget(ic_trace_result *r, const ic_trace_options *opt,
+                          const ic_local_point *pt, const char *way)
+{
+    if (ic_trace_out_of_time(&r->budget))
+        ic_trace_failure(&r->report, "curve from (%g, %g, %g)%s: stopped at the time limit",
+                         pt->xyz[0], pt->xyz[1], pt->xyz[2], way);
+    else
+        ic_trace_failure(&r->report, "curve from (%g, %g, %g)%s: stopped at the budget of %d points",
+                         pt->xyz[0], pt->xyz[1], pt->xyz[2], way, opt->max_points);
+}
+
 /* Traces the curve through pt: forward, and backward unless it closed. */
 ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
                              const ic_local_point *pt, const ic_trace_options *opt,
@@ -347,8 +359,7 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
         ic_trace_failure(&r->report, "curve from (%g, %g, %g): %s", pt->xyz[0], pt->xyz[1],
                          pt->xyz[2], err ? err->message : "failed");
     if (e1 == IC_TRACE_BUDGET)
-        ic_trace_failure(&r->report, "curve from (%g, %g, %g): stopped at the budget of %d points",
-                         pt->xyz[0], pt->xyz[1], pt->xyz[2], opt->max_points);
+        report_budget(r, opt, pt, "");
     int n1 = ic_tracer_num_points(tr);
     ic_trace_point *fwd = malloc((size_t)(n1 + 1) * sizeof *fwd);
     if (!fwd)
@@ -369,9 +380,7 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
         ic_trace_failure(&r->report, "curve from (%g, %g, %g), backwards: %s", pt->xyz[0],
                          pt->xyz[1], pt->xyz[2], err ? err->message : "failed");
     if (e0 == IC_TRACE_BUDGET)
-        ic_trace_failure(&r->report,
-                         "curve from (%g, %g, %g), backwards: stopped at the budget of %d points",
-                         pt->xyz[0], pt->xyz[1], pt->xyz[2], opt->max_points);
+        report_budget(r, opt, pt, ", backwards");
     int n0 = ic_tracer_num_points(tr);
     ic_trace_point *back = malloc((size_t)(n0 + 1) * sizeof *back);
     if (!back) {

@@ -2,7 +2,10 @@
  * The register of the tracer's constants (docs/tracing.md, "Constants"):
  * each with its unit and the reason for its value. Lengths are never
  * absolute here: they are fractions of the search region or of a cell, or
- * counts. tests/test_trace_limits.c pins each one.
+ * counts. tests/test_trust.c exercises them (the kink's two lines 0.002
+ * apart need IC_TRACE_ON_CURVE, the coincident planes the coincidence
+ * constants, the time limit and the overflow cases the work limits); a test
+ * per constant that fails when it is changed tenfold is not written yet.
  */
 #ifndef IC_TRACE_CONSTANTS_H
 #define IC_TRACE_CONSTANTS_H

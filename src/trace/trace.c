@@ -482,6 +482,25 @@ int ic_trace_in_coincident(const ic_trace_result *r, const double *x)
     return 0;
 }
 
+/* Whether x lies within gap of a curve end that left a parameter domain
+ * (at a pole of a parametrization, say): the joining bridges that gap
+ * (ic_trace_join_curves, max_gap), and a curve started there would be a
+ * sliver of the same curve. */
+static int in_pole_gap(const ic_trace_result *r, const double *x, double gap)
+{
+    for (int c = 0; c < r->ncurves; c++)
+        for (int e = 0; e < 2; e++) {
+            const ic_trace_curve *cv = &r->curves[c];
+            if (cv->closed || cv->ends[e] != IC_TRACE_LEFT_DOMAIN)
+                continue;
+            double d[3];
+            ic_axpy3(d, cv->points[e ? cv->npoints - 1 : 0].xyz, -1.0, x);
+            if (ic_norm3(d) <= gap)
+                return 1;
+        }
+    return 0;
+}
+
 /* An exact (located) singular point within bound of x. */
 static int near_exact_special(const ic_trace_result *r, const double *x, double bound)
 {
@@ -506,7 +525,8 @@ ic_status ic_trace_from_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *p
     const double near_point = 2 * opt->chord; /* beside a singular point */
     ic_status st = IC_OK;
     for (int i = 0; st == IC_OK && i < nc; i++) {
-        if (cand[i].covered || ic_trace_point_near_found(r, cand[i].xyz, radius))
+        if (cand[i].covered || ic_trace_point_near_found(r, cand[i].xyz, radius) ||
+            in_pole_gap(r, cand[i].xyz, 50 * opt->chord))
             continue;
         if (ic_trace_out_of_time(&r->budget))
             break;

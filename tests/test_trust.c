@@ -403,6 +403,38 @@ static void test_coincident(void)
     release(&t);
 }
 
+/* Exact arc length (item 7): the Whitney umbrella (u v, v, u^2) over
+ * [-1, 1] x [-1, 1] crosses itself along x = y = 0, z = u^2: a segment of
+ * length 1 from the pinch point. Every point's s must equal its height
+ * above the first point (before: s ended at 1.000353). */
+static void test_whitney_arc_length(void)
+{
+    traced t;
+    memset(&t, 0, sizeof t);
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    const char *xyz[3] = {"u * v", "v", "u^2"};
+    const double dom[2][2] = {{-1, 1}, {-1, 1}};
+    if (ic_surface_new_parametric(&t.A, xyz, NULL, NULL, 0, NULL, NULL) != IC_OK ||
+        ic_surface_set_domain(t.A, dom, NULL, NULL) != IC_OK ||
+        ic_pair_new(&t.pair, t.A, NULL, NULL) != IC_OK || ic_trace(&t.res, t.pair, &opt, NULL) != IC_OK) {
+        CHECK(0, "Whitney umbrella traced");
+        release(&t);
+        return;
+    }
+    const ic_trace_curve *c = ic_trace_result_curve(t.res, 0);
+    CHECK(ic_trace_result_num_curves(t.res) == 1 && fabs(c->length - 1) <= LENGTH_REL,
+          "Whitney double curve: %d curves, length %.17g of 1", ic_trace_result_num_curves(t.res),
+          c ? c->length : 0.0);
+    double worst = 0;
+    for (int i = 0; c && i < c->npoints; i++) {
+        const double rise = fabs(c->points[i].xyz[2] - c->points[0].xyz[2]);
+        worst = fmax(worst, fabs(fabs(c->points[i].s - c->points[0].s) - rise));
+    }
+    CHECK(c && worst <= LENGTH_REL, "Whitney double curve: s off its height by %.3g", worst);
+    release(&t);
+}
+
 /* A periodic flag on a parameter that does not close the surface is
  * rejected; a true one, whatever the domain's start, is taken. */
 static void test_periodic_flag(void)
@@ -453,5 +485,6 @@ int main(void)
     timed("tiny overlap", test_tiny_overlap);
     timed("coincident", test_coincident);
     timed("periodic flag", test_periodic_flag);
+    timed("Whitney arc length", test_whitney_arc_length);
     return harness_finish("trust");
 }

@@ -269,6 +269,27 @@ static int outside(const ic_tracer *tr, const ic_local_point *pt, ic_trace_event
 
 /* The corrected point after a step of length h (0 if the corrector fails);
  * X receives the predicted point. */
+/* The arc length of an accepted step: the predictor's parameter h plus
+ * how far the corrector moved the point along the curve, (next - X) . t
+ * with t the predictor's unit tangent at h. An accurate predictor leaves
+ * that term at the truncation error; where the jets are poor (two sheets
+ * meeting at a small angle, by the Whitney umbrella's pinch point) it
+ * carries what s += h alone would miss. */
+static double step_arc(const ic_tracer *tr, double h, const double *X, const double *next)
+{
+    double params[2][2], Y[3], t[3], d[3];
+    const double dh = 1e-6 * h;
+    predict(tr, h + dh, Y, params);
+    ic_axpy3(t, Y, -1.0, X);
+    const double len = ic_norm3(t);
+    if (!(len > 0))
+        return h;
+    ic_scale3(t, t, 1 / len);
+    ic_axpy3(d, next, -1.0, X);
+    const double along = ic_dot3(d, t);
+    return isfinite(along) ? h + along : h;
+}
+
 static int corrected(const ic_tracer *tr, double h, ic_local_point *next, double *X)
 {
     double params[2][2], flat[4];
@@ -504,9 +525,10 @@ ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
             near_tangential = 1;
             continue;
         }
+        const double ds = step_arc(tr, h, X, next.xyz);
         tr->cur = next;
         tr->res = res;
-        tr->s += h;
+        tr->s += ds;
         return record(tr, err);
     }
     tr->done = 1;

@@ -87,7 +87,7 @@ STATUS = {
     "overflow-box-inf": "pass",
     "overflow-domain-inf": "pass",
     "contact-x4y4": "known-failure: the contact point recorded 8.8e-5 from the origin, as isolated-contact (must be higher-order-contact: the quadratic part is zero), complete 1",
-    "whitney-umbrella": "known-failure: the double curve 1.44004313211071 long, 3e-5 relative too long (complete 1)",
+    "whitney-umbrella": "pass",
     "viviani-1e3-offset": "pass",
     "cylinders-1e-2-offset": "pass",
     "sphere-plane-angle": "known-failure: curve right, complete 0: the parametric sphere primitive has no interval evaluation (sampled only)",

@@ -83,8 +83,9 @@ ic_status ic_trace_record_tangential(ic_trace_result *r, ic_tracer *tr, ic_pair 
     if (!approximate &&
         ic_local_apparatus(pair, &res, &pt, opt->order, IC_METHOD_JET, &lo, NULL) == IC_OK &&
         res.type == IC_POINT_TANGENTIAL_CURVE && res.nbranches >= 1) {
+        const int before = r->ncurves;
         const ic_status st = start_curve(r, tr, pair, &pt, opt, "the tangential curve");
-        if (st != IC_OK)
+        if (st != IC_OK || r->ncurves == before) /* failed, or a point of the boundary */
             return st == IC_ERR_NOMEM ? st : IC_OK;
         /* its shape is classified with the others after the joining */
         *curve = r->ncurves - 1;

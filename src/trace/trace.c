@@ -413,6 +413,14 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
     free(back);
     *pts_out = all;
     *n_out = n0 + n1 - 1;
+    /* a start point that leaves the region both ways at once is a point of
+     * its boundary, not a curve: no zero-length one-point curve */
+    if (n0 + n1 - 1 < 2 && e0 != IC_TRACE_TANGENTIAL && e1 != IC_TRACE_TANGENTIAL) {
+        free(all);
+        *pts_out = NULL;
+        *n_out = 0;
+        return IC_OK;
+    }
     return add_curve(r, all, n0 + n1 - 1, 0, e0, e1, opt->shape_tol, at0, at1);
 }
 
@@ -580,7 +588,7 @@ ic_status ic_trace_from_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *p
         ic_trace_point *pts = NULL;
         int np2 = 0;
         st = ic_trace_both_ways(r, tr, pair, &pt, opt, &pts, &np2, err);
-        if (st == IC_OK)
+        if (st == IC_OK && np2 > 0)
             ic_trace_cover(cand, nc, pts, np2, radius);
         cand[i].covered = 1;
     }

@@ -9,21 +9,8 @@
 #include "curve_lengths.h"
 #include "harness.h"
 #include "intercurve.h"
+#include "traced_pair.h"
 
-typedef struct {
-    ic_surface *A, *B;
-    ic_pair *pair;
-    ic_trace_result *res;
-} traced;
-
-static void release(traced *t)
-{
-    ic_trace_result_free(t->res);
-    ic_pair_free(t->pair);
-    ic_surface_free(t->A);
-    ic_surface_free(t->B);
-    memset(t, 0, sizeof *t);
-}
 
 static int total_points(const ic_trace_result *r)
 {

@@ -13,26 +13,13 @@
 #include "curve_lengths.h"
 #include "harness.h"
 #include "intercurve.h"
+#include "traced_pair.h"
 
 #define PI 3.14159265358979323846
 
 /* The docs' promise for lengths (docs/tracing.md). */
 #define LENGTH_REL 1e-9
 
-typedef struct {
-    ic_surface *A, *B;
-    ic_pair *pair;
-    ic_trace_result *res;
-} traced;
-
-static void release(traced *t)
-{
-    ic_trace_result_free(t->res);
-    ic_pair_free(t->pair);
-    ic_surface_free(t->A);
-    ic_surface_free(t->B);
-    memset(t, 0, sizeof *t);
-}
 
 static ic_trace_options box_options(double lo, double hi)
 {

@@ -68,11 +68,13 @@ install: all
 
 fuzz: deps
 	cmake -S . -B build-fuzz -DCMAKE_C_COMPILER=clang -DIC_FUZZ=ON -DIC_BUILD_TESTS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
-	cmake --build build-fuzz -j2 --target fuzz_expr fuzz_problem
-	mkdir -p fuzz/corpus/expr fuzz/corpus/problem
+	cmake --build build-fuzz -j2 --target fuzz_expr fuzz_problem fuzz_trace
+	mkdir -p fuzz/corpus/expr fuzz/corpus/problem fuzz/corpus/trace
 	./build-fuzz/fuzz/fuzz_expr -max_total_time=$(FUZZ_SECONDS) -max_len=256 fuzz/corpus/expr fuzz/seeds/expr
 	./build-fuzz/fuzz/fuzz_problem -max_total_time=$(FUZZ_SECONDS) -max_len=4096 \
 	  -dict=fuzz/problem.dict -artifact_prefix=fuzz/ fuzz/corpus/problem fuzz/seeds/problem
+	./build-fuzz/fuzz/fuzz_trace -max_total_time=$(FUZZ_SECONDS) -max_len=4096 -timeout=10 \
+	  -dict=fuzz/problem.dict -artifact_prefix=fuzz/ fuzz/corpus/trace fuzz/seeds/trace
 
 clean:
 	rm -rf build build-asan build-fuzz

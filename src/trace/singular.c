@@ -103,7 +103,7 @@ ic_status ic_trace_complete_branches(ic_trace_result *r, ic_tracer *tr, ic_pair 
                                      const ic_trace_options *opt)
 {
     ic_local_options lo = opt->local;
-    for (int k = 0; k < r->nspecials; k++) {
+    for (int k = 0; k < r->nspecials && !ic_trace_out_of_time(&r->budget); k++) {
         if (r->specials[k].approximate || r->specials[k].nbranches < 1)
             continue;
         if (!r->located[k].res_ok)

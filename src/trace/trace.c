@@ -140,6 +140,27 @@ static void cover_point(ic_candidate *c, int n, const double *x, double radius)
     ic_trace_cover(c, n, &one, 1, radius);
 }
 
+/* An isolated contact is located by Gauss-Newton on the collinear normals,
+ * whose residual (an angle) stops at IC_TRACE_TANGENT_RESIDUAL; the angle
+ * grows like sqrt|Delta| times the distance, so the place is known to about
+ * IC_TRACE_TANGENT_RESIDUAL / sqrt|Delta|. Where that exceeds
+ * IC_TRACE_PLACE_REL L (a contact of high order: z = x^4 + y^4 on a plane,
+ * a multiple root) the point is approximate and the report says so. */
+static void check_contact_place(ic_trace_result *r, ic_trace_special *s, const ic_local_result *res)
+{
+    if (s->type != IC_POINT_ISOLATED_CONTACT && s->type != IC_POINT_HIGHER_ORDER_CONTACT)
+        return;
+    const double root = sqrt(fabs(res->discriminant));
+    const double place = IC_TRACE_TANGENT_RESIDUAL / fmax(root, 1e-300);
+    if (place <= IC_TRACE_PLACE_REL * r->scale)
+        return;
+    s->approximate = 1;
+    ic_trace_failure(&r->report,
+                     "a contact point near (%.6g, %.6g, %.6g) is located only to about %.2g (a "
+                     "contact of high order, a multiple root): its place and type are approximate",
+                     s->xyz[0], s->xyz[1], s->xyz[2], fmin(place, r->scale));
+}
+
 ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local_point *pt,
                                int approximate, const ic_trace_options *opt, int *index)
 {
@@ -188,6 +209,8 @@ ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local
     if (loc->res_ok) {
         s->type = loc->res.type;
         s->nbranches = loc->res.nbranches;
+        if (!approximate)
+            check_contact_place(r, s, &loc->res);
     } else { /* not classified: kept as an approximate place, and said */
         s->type = IC_POINT_TANGENTIAL;
         s->nbranches = 0;

@@ -53,4 +53,11 @@
  * accepts the start candidates of the search (1e-10 L) with room. */
 #define IC_TRACE_POINT_TOL 1e-7
 
+/* dimensionless: the collinear-normals residual (an angle) at which the
+ * tangential locator stops (src/local/locate_tangential.c), and relative
+ * (of L): how well the place of an isolated contact must be known from it
+ * (residual / sqrt|Delta|) to be exact; beyond, it is approximate. */
+#define IC_TRACE_TANGENT_RESIDUAL 1e-12
+#define IC_TRACE_PLACE_REL 1e-8
+
 #endif

@@ -86,7 +86,7 @@ STATUS = {
     "overflow-domain-1e300": "pass",
     "overflow-box-inf": "pass",
     "overflow-domain-inf": "pass",
-    "contact-x4y4": "known-failure: the contact point recorded 8.8e-5 from the origin, as isolated-contact (must be higher-order-contact: the quadratic part is zero), complete 1",
+    "contact-x4y4": "known-failure: the contact is found by Gauss-Newton on a multiple root: two approximate isolated-contact points 2e-5 and 9e-5 from the origin (must be one higher-order-contact at it); the report says incomplete and why",
     "whitney-umbrella": "pass",
     "viviani-1e3-offset": "pass",
     "cylinders-1e-2-offset": "pass",

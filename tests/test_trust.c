@@ -79,6 +79,8 @@ static double total_length(const ic_trace_result *r)
 
 static int complete(const ic_trace_result *r) { return ic_trace_result_report(r)->complete; }
 
+static double norm3(const double *x) { return sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]); }
+
 /* Checks that the trace found n curves of length L each (closed or not),
  * and that it says complete. */
 static void expect_curves(const char *what, const ic_trace_result *r, int n, double L, int closed)
@@ -440,6 +442,30 @@ static void test_high_order_contact(void)
     release(&t);
 }
 
+/* The cone x^2 + y^2 = z^2 cut by y = 0 through its apex: the lines
+ * x = +-z, z in [-0.8, 0.8], each of length 1.6 sqrt(2), crossing at the
+ * apex, a singular point of the cone itself (grad f = 0), typed
+ * surface-singular with two branches (before: four half-lines and an
+ * approximate 'transversal' point). */
+static void test_cone_apex(void)
+{
+    traced t;
+    ic_trace_options opt = box_options(-1, 1);
+    opt.box[2][0] = -0.8, opt.box[2][1] = 0.8;
+    if (!trace_implicit(&t, "x^2 + y^2 - z^2", "y", &opt)) {
+        CHECK(0, "cone trace");
+        return;
+    }
+    expect_curves("the cone through its apex", t.res, 2, 1.6 * sqrt(2.0), 0);
+    const ic_trace_special *sp = ic_trace_result_special(t.res, 0);
+    CHECK(ic_trace_result_num_specials(t.res) == 1 && sp->type == IC_POINT_SURFACE_SINGULAR &&
+              sp->nbranches == 2 && !sp->approximate && norm3(sp->xyz) <= 1e-10,
+          "the apex: one surface-singular point with two branches at the origin");
+    for (int i = 0; i < ic_trace_result_num_curves(t.res); i++)
+        CHECK(ic_trace_result_curve(t.res, i)->shape == IC_SHAPE_LINE, "the cone's curve %d: a line", i);
+    release(&t);
+}
+
 /* A periodic flag on a parameter that does not close the surface is
  * rejected; a true one, whatever the domain's start, is taken. */
 static void test_periodic_flag(void)
@@ -492,5 +518,6 @@ int main(void)
     timed("periodic flag", test_periodic_flag);
     timed("Whitney arc length", test_whitney_arc_length);
     timed("high-order contact", test_high_order_contact);
+    timed("cone apex", test_cone_apex);
     return harness_finish("trust");
 }

@@ -40,7 +40,10 @@ typedef enum {
     IC_POINT_CUSP,
     IC_POINT_TACNODE,
     IC_POINT_HIGHER_ORDER_CONTACT,
-    IC_POINT_TANGENTIAL /**< tangential, not yet classified */
+    IC_POINT_TANGENTIAL, /**< tangential, not yet classified */
+    /** a singular point of a surface itself (grad f = 0: a cone's apex),
+     *  met by the traced curves (whole traces only; docs/tracing.md) */
+    IC_POINT_SURFACE_SINGULAR
 } ic_point_type;
 
 /** "transversal", "branch-point", ... (DESIGN.md names). */

@@ -16,6 +16,7 @@ const char *ic_point_type_name(ic_point_type type)
     case IC_POINT_TACNODE: return "tacnode";
     case IC_POINT_HIGHER_ORDER_CONTACT: return "higher-order-contact";
     case IC_POINT_TANGENTIAL: return "tangential";
+    case IC_POINT_SURFACE_SINGULAR: return "surface-singular";
     }
     return "unknown";
 }

@@ -283,13 +283,70 @@ static int locate_end(ic_pair *pair, const ic_local_options *lopt, const ic_loca
     return 1;
 }
 
+/* Records a singular point of a surface (once: within 1e-8 L of one
+ * recorded) and appends it to the curve: the last step is straight to it
+ * (the march stops where the point's neighbourhood begins). Returns its
+ * special index, or -1 out of memory. */
+static int end_at_surface_singular(ic_trace_result *r, ic_trace_point *pts, int *np,
+                                   const double *X)
+{
+    int index = -1;
+    for (int i = 0; i < r->nspecials && index < 0; i++) {
+        double d[3];
+        ic_axpy3(d, r->specials[i].xyz, -1.0, X);
+        if (r->specials[i].type == IC_POINT_SURFACE_SINGULAR && ic_norm3(d) <= 1e-8 * r->scale)
+            index = i;
+    }
+    if (index < 0) {
+        if (r->nspecials == r->caps) {
+            const int cap = r->caps ? 2 * r->caps : 8;
+            ic_trace_special *p = realloc(r->specials, (size_t)cap * sizeof *p);
+            if (p)
+                r->specials = p;
+            ic_trace_located *q = realloc(r->located, (size_t)cap * sizeof *q);
+            if (q)
+                r->located = q;
+            if (!p || !q)
+                return -1;
+            r->caps = cap;
+        }
+        index = r->nspecials++;
+        ic_trace_special *s = &r->specials[index];
+        memset(s, 0, sizeof *s);
+        memcpy(s->xyz, X, sizeof s->xyz);
+        s->type = IC_POINT_SURFACE_SINGULAR;
+        ic_trace_located *loc = &r->located[index];
+        memset(loc, 0, sizeof *loc);
+        memcpy(loc->pt.xyz, X, sizeof loc->pt.xyz);
+        loc->res_ok = 0;
+    }
+    /* the points nearer than IC_TRACE_SINGULAR_CLEARANCE L carry the
+     * apparatus of a vanishing normal (errors about eps (L/d)^2) and go */
+    int n = *np;
+    while (n > 1) {
+        double d[3];
+        ic_axpy3(d, X, -1.0, pts[n - 1].xyz);
+        if (ic_norm3(d) >= IC_TRACE_SINGULAR_CLEARANCE * r->scale)
+            break;
+        n--;
+    }
+    ic_trace_point *last = &pts[n - 1], *extra = &pts[n];
+    *extra = *last;
+    memcpy(extra->xyz, X, sizeof extra->xyz);
+    extra->s = last->s + ic_trace_gap_length(last, last->t, extra, last->t);
+    r->specials[index].nbranches++; /* half-branches now; halved after the joining */
+    *np = n + 1;
+    return index;
+}
+
 /* A curve end at a tangential point: the point located precisely, appended
  * (the last step, about 2e-5, is straight to 1e-16) with the apparatus of
  * the branch continuing the curve, and recorded. Returns the special index,
  * or -1 (then the end is recorded approximately). */
 static int finish_end(ic_trace_result *r, ic_pair *pair, const ic_trace_options *opt,
-                      ic_trace_point *pts, int n)
+                      ic_trace_point *pts, int *np)
 {
+    const int n = *np;
     ic_trace_point *last = &pts[n - 1], *extra = &pts[n];
     ic_local_point near, P;
     memset(&near, 0, sizeof near);
@@ -297,6 +354,9 @@ static int finish_end(ic_trace_result *r, ic_pair *pair, const ic_trace_options 
     memcpy(near.params, last->params, sizeof near.params);
     int index = -1;
     if (!locate_end(pair, &opt->local, &near, &P)) {
+        double X[3];
+        if (ic_trace_locate_surface_singular(pair, near.xyz, r->scale, X))
+            return end_at_surface_singular(r, pts, np, X);
         ic_trace_add_special(r, pair, &near, 1, opt, NULL);
         return -1;
     }
@@ -352,6 +412,7 @@ static int finish_end(ic_trace_result *r, ic_pair *pair, const ic_trace_options 
         const double arc = a2 * x > 1e-12 ? 8 / (27 * a2) * (pow(1 + 2.25 * a2 * x, 1.5) - 1) : x;
         extra->s = last->s + arc;
     }
+    *np = n + 1;
     return index;
 }
 
@@ -389,8 +450,8 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
     memcpy(fwd, ic_tracer_point(tr, 0), (size_t)n1 * sizeof *fwd);
     int at1 = -1, at0 = -1;
-    if (e1 == IC_TRACE_TANGENTIAL && (at1 = finish_end(r, pair, opt, fwd, n1)) >= 0)
-        n1++;
+    if (e1 == IC_TRACE_TANGENTIAL)
+        at1 = finish_end(r, pair, opt, fwd, &n1);
     if (e1 == IC_TRACE_CLOSED) {
         *pts_out = fwd;
         *n_out = n1;
@@ -411,8 +472,8 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
     }
     memcpy(back, ic_tracer_point(tr, 0), (size_t)n0 * sizeof *back);
-    if (e0 == IC_TRACE_TANGENTIAL && (at0 = finish_end(r, pair, opt, back, n0)) >= 0)
-        n0++;
+    if (e0 == IC_TRACE_TANGENTIAL)
+        at0 = finish_end(r, pair, opt, back, &n0);
     ic_trace_point *all = malloc((size_t)(n0 + n1 - 1) * sizeof *all);
     if (!all) {
         free(fwd);
@@ -691,6 +752,10 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
         ic_trace_drop_duplicates(r, IC_TRACE_ON_CURVE * r->scale);
     if (st == IC_OK && ic_trace_join_curves(r, opt->shape_tol, 50 * opt->chord) != IC_OK)
         st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory joining curves");
+    /* a surface's singular point counted the curve ends met there: two a branch */
+    for (int k = 0; k < r->nspecials; k++)
+        if (r->specials[k].type == IC_POINT_SURFACE_SINGULAR)
+            r->specials[k].nbranches = (r->specials[k].nbranches + 1) / 2;
     /* the curves changed: indexed anew */
     if (st == IC_OK) {
         ic_curve_index_clear(r->index);

@@ -60,4 +60,9 @@
 #define IC_TRACE_TANGENT_RESIDUAL 1e-12
 #define IC_TRACE_PLACE_REL 1e-8
 
+/* relative (of L): points of a curve nearer than this to a singular point
+ * of a surface (a cone's apex) are dropped: the normal vanishes there and
+ * their apparatus errs by about eps (L/d)^2, 1e-8 at this distance. */
+#define IC_TRACE_SINGULAR_CLEARANCE 1.5e-4
+
 #endif

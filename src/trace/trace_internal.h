@@ -148,6 +148,11 @@ int ic_curve_index_near(ic_curve_index *ix, const ic_trace_result *r, const doub
 double ic_trace_segment_distance(const ic_trace_point *p, const ic_trace_point *q, const double *x);
 double ic_trace_segment_sagitta(const ic_trace_point *p, const ic_trace_point *q);
 
+/* surface_singular.c: a point where an implicit surface's gradient
+ * vanishes, on the other (implicit) surface, within 1e-2 L of near; 1 with
+ * it in out. */
+int ic_trace_locate_surface_singular(ic_pair *pair, const double *near, double L, double *out);
+
 /* Whether a traced curve or recorded singular point lies within bound of x
  * (singular.c). */
 int ic_trace_point_near_found(const ic_trace_result *r, const double *x, double bound);

@@ -79,7 +79,7 @@ STATUS = {
     "coincident-spheres": "pass",
     "near-planes-1e-9": "pass",
     "near-spheres-1e-9": "known-failure: no curve, but the search runs into the time limit (complete 0; 28 s without a limit, still complete 0)",
-    "cone-apex": "known-failure: 4 half-lines not joined through the apex, shape planar (must be line), the apex recorded as 'transversal' (approximate), complete 0",
+    "cone-apex": "pass",
     "overflow-exp": "pass",
     "overflow-pow1025": "pass",
     "overflow-box-1e160": "pass",
@@ -517,15 +517,15 @@ cases.append(Case("near-spheres-1e-9", "complete", R_(15, 10)))
 
 # ---------------------------------------------------------------- cone apex
 # x^2 + y^2 = z^2 and y = 0: x = +-z, z in the box's [-0.8, 0.8] (|x| <= 0.8
-# < 1): two lines of length 1.6 sqrt(2) crossing at the apex, where the two
-# branches cross (the library's name for two crossing branches: branch-point;
-# the cone has no normal there).
+# < 1): two lines of length 1.6 sqrt(2) crossing at the apex. The cone has no
+# normal there (grad f = 0): a singular point of the surface itself, which the
+# library names surface-singular (docs/tracing.md).
 box = [(-1, 1), (-1, 1), (-R_(8, 10), R_(8, 10))]
 k = Case("cone-apex", "complete", 1)
 for sgn in (1, -1):
     k.curve((sgn * t, 0, t), -R_(8, 10), R_(8, 10), False, "line", mp.mpf("1.6") * mp.sqrt(2),
             [x ** 2 + y ** 2 - z ** 2, y], box)
-k.points.append(((0, 0, 0), "branch-point"))
+k.points.append(((0, 0, 0), "surface-singular"))  # the cone's own singular point (grad f = 0), docs/tracing.md
 cases.append(k)
 
 # ---------------------------------------------------------------- overflow

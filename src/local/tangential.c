@@ -286,7 +286,8 @@ static ic_status polar_curve_new(const tctx *cx, polar_curve *pc, const double *
 /* The curvature (1/length) that sets the rounding noise of the heights'
  * coefficients at each degree: the largest of the heights' own along the
  * polar curve and 8/L (L the problem's size; the surfaces curve across it
- * more than along it: the torus of seed 002 Ex. 3, radius 1 across, needs
+ * more than along it: the torus of Bendrici & Boumedien-Zidani 2022,
+ * Example 3 (tangential curve), radius 1 across, needs
  * 1/length 1 where L is 5.7, and 1/L let rounding pass as contact terms). */
 static double noise_curvature(const polar_curve *pc, double L)
 {

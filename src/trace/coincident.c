@@ -58,8 +58,10 @@ double ic_trace_problem_scale(ic_pair *pair, const ic_trace_options *opt)
         }
     ic_jet_space_free(sp);
     for (int k = 0; opt->has_box && k < 3; k++) {
-        lo[k] = lo[k] > hi[k] ? opt->box[k][0] : fmax(lo[k], opt->box[k][0]);
-        hi[k] = hi[k] < opt->box[k][0] ? opt->box[k][1] : fmin(hi[k], opt->box[k][1]);
+        /* the samples cut to the box; no samples there: the box itself */
+        const double a = fmax(lo[k], opt->box[k][0]), b = fmin(hi[k], opt->box[k][1]);
+        lo[k] = a <= b ? a : opt->box[k][0];
+        hi[k] = a <= b ? b : opt->box[k][1];
     }
     double d2 = 0;
     for (int k = 0; k < 3; k++)

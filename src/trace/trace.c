@@ -161,6 +161,25 @@ static void check_contact_place(ic_trace_result *r, ic_trace_special *s, const i
                      s->xyz[0], s->xyz[1], s->xyz[2], fmin(place, r->scale));
 }
 
+/* Room for one more special point (and its located record): 0, or -1 out
+ * of memory. */
+static int grow_specials(ic_trace_result *r)
+{
+    if (r->nspecials < r->caps)
+        return 0;
+    const int cap = r->caps ? 2 * r->caps : 8;
+    ic_trace_special *p = realloc(r->specials, (size_t)cap * sizeof *p);
+    if (p)
+        r->specials = p;
+    ic_trace_located *q = realloc(r->located, (size_t)cap * sizeof *q);
+    if (q)
+        r->located = q;
+    if (!p || !q)
+        return -1;
+    r->caps = cap;
+    return 0;
+}
+
 ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local_point *pt,
                                int approximate, const ic_trace_options *opt, int *index)
 {
@@ -170,26 +189,17 @@ ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local
     for (int i = 0; i < r->nspecials; i++) {
         double d[3];
         ic_axpy3(d, r->specials[i].xyz, -1.0, pt->xyz);
-        /* relative to L: an approximate end is within 1e-4 L of its point */
-        const double same = (r->specials[i].approximate || approximate ? 1e-4 : 1e-10) * r->scale;
+        const double same = (r->specials[i].approximate || approximate ? IC_TRACE_SAME_APPROX
+                                                                        : IC_TRACE_SAME_EXACT) *
+                            r->scale;
         if (ic_norm3(d) < same) { /* the same point met from another curve */
             *index = i;
             return IC_OK;
         }
     }
     *index = r->nspecials;
-    if (r->nspecials == r->caps) {
-        const int cap = r->caps ? 2 * r->caps : 8;
-        ic_trace_special *p = realloc(r->specials, (size_t)cap * sizeof *p);
-        if (p)
-            r->specials = p;
-        ic_trace_located *q = realloc(r->located, (size_t)cap * sizeof *q);
-        if (q)
-            r->located = q;
-        if (!p || !q)
-            return IC_ERR_NOMEM;
-        r->caps = cap;
-    }
+    if (grow_specials(r) != 0)
+        return IC_ERR_NOMEM;
     ic_trace_located *loc = &r->located[r->nspecials];
     loc->pt = *pt;
     ic_trace_special *s = &r->specials[r->nspecials++];
@@ -270,15 +280,17 @@ static int locate_end(ic_pair *pair, const ic_local_options *lopt, const ic_loca
                       ic_local_point *P)
 {
     const double L = lopt->scale;
-    if (ic_local_locate_tangential(pair, P, near, 1e-4 * L, lopt, NULL) != IC_OK)
-        return ic_local_locate_degenerate(pair, P, near, 5e-3 * L, lopt, NULL) == IC_OK;
+    if (ic_local_locate_tangential(pair, P, near, IC_TRACE_END_REACH * L, lopt, NULL) != IC_OK)
+        return ic_local_locate_degenerate(pair, P, near, IC_TRACE_DEGENERATE_REACH * L, lopt,
+                                          NULL) == IC_OK;
     ic_local_result q;
     ic_local_options o = *lopt;
     ic_local_point D;
     if (ic_local_apparatus(pair, &q, P, 2, IC_METHOD_AUTO, &o, NULL) == IC_OK &&
         q.type == IC_POINT_BRANCH && q.nbranches == 2 &&
         fabs(ic_dot3(q.branches[0].t, q.branches[1].t)) > 1 - 1e-3 &&
-        ic_local_locate_degenerate(pair, &D, near, 5e-3 * L, lopt, NULL) == IC_OK)
+        ic_local_locate_degenerate(pair, &D, near, IC_TRACE_DEGENERATE_REACH * L, lopt, NULL) ==
+            IC_OK)
         *P = D;
     return 1;
 }
@@ -294,22 +306,13 @@ static int end_at_surface_singular(ic_trace_result *r, ic_trace_point *pts, int 
     for (int i = 0; i < r->nspecials && index < 0; i++) {
         double d[3];
         ic_axpy3(d, r->specials[i].xyz, -1.0, X);
-        if (r->specials[i].type == IC_POINT_SURFACE_SINGULAR && ic_norm3(d) <= 1e-8 * r->scale)
+        if (r->specials[i].type == IC_POINT_SURFACE_SINGULAR &&
+            ic_norm3(d) <= IC_TRACE_ON_CURVE * r->scale)
             index = i;
     }
     if (index < 0) {
-        if (r->nspecials == r->caps) {
-            const int cap = r->caps ? 2 * r->caps : 8;
-            ic_trace_special *p = realloc(r->specials, (size_t)cap * sizeof *p);
-            if (p)
-                r->specials = p;
-            ic_trace_located *q = realloc(r->located, (size_t)cap * sizeof *q);
-            if (q)
-                r->located = q;
-            if (!p || !q)
-                return -1;
-            r->caps = cap;
-        }
+        if (grow_specials(r) != 0)
+            return -1;
         index = r->nspecials++;
         ic_trace_special *s = &r->specials[index];
         memset(s, 0, sizeof *s);

@@ -65,4 +65,18 @@
  * their apparatus errs by about eps (L/d)^2, 1e-8 at this distance. */
 #define IC_TRACE_SINGULAR_CLEARANCE 1.5e-4
 
+/* relative (of L): two singular points closer than IC_TRACE_SAME_EXACT L
+ * are one (located points agree to 1e-12 L); an approximate one (a curve
+ * end that could not be located: the march stops about 2e-6 L before a
+ * branch point) is the same as any within IC_TRACE_SAME_APPROX L. */
+#define IC_TRACE_SAME_EXACT 1e-10
+#define IC_TRACE_SAME_APPROX 1e-4
+
+/* relative (of L): how far from a curve's last point the point it stops
+ * before is sought: on the collinear normals (a branch point, about 2e-6 L
+ * ahead), and by the degenerate locator (a tacnode's end stops about 2e-3
+ * away at L = 1, where Gauss-Newton is ill-conditioned along the curve). */
+#define IC_TRACE_END_REACH 1e-4
+#define IC_TRACE_DEGENERATE_REACH 5e-3
+
 #endif

@@ -94,6 +94,12 @@ typedef struct {
      *  tangential locator), and its difference steps are fractions of it
      *  (default 1; the tracer sets its problem scale, docs/tracing.md) */
     double scale;
+    /** length: how well the point's place is known (default 0: exactly,
+     *  as given). At a tangential point, a coefficient of the height
+     *  difference that moving the point this far could make or remove is
+     *  zero; the tracer sets it from ic_local_tangential_place
+     *  (docs/tangential.md) */
+    double place_tol;
 } ic_local_options;
 
 /** Fills the defaults above. */
@@ -149,6 +155,19 @@ IC_NODISCARD ic_status ic_local_locate_params(ic_pair *pair, ic_local_point *pt,
 IC_NODISCARD ic_status ic_local_locate_tangential(ic_pair *pair, ic_local_point *pt,
                                                   const ic_local_point *near, double reach,
                                                   const ic_local_options *opt, ic_error *err);
+
+/**
+ * How well the place of a located tangential point `pt` is known: the
+ * radius (a length) inside which the residuals of ic_local_locate_tangential
+ * no longer grow steadily away from it but sit at their rounding noise. A
+ * simple tangential point gives a few units in the last place of the
+ * problem's size; a contact of order m whose formula cancels gives about
+ * (noise)^(1/(m-1)); at most 1e-4 of the problem's size (then the place is
+ * not known at all). IC_ERR_UNABLE where a surface is singular near it.
+ */
+IC_NODISCARD ic_status ic_local_tangential_place(ic_pair *pair, const ic_local_point *pt,
+                                                 const ic_local_options *opt, double *radius,
+                                                 ic_error *err);
 
 /**
  * Locates a degenerate tangential point (a cusp, a tacnode or a higher one,

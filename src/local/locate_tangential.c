@@ -4,156 +4,277 @@
  *   implicit/implicit   unknowns X:          f_A/|grad f_A|, f_B/|grad f_B|, N_A x N_B
  *   parametric/implicit unknowns (u, v):     f(R)/|grad f|, N_A x N_B
  *   parametric/param.   unknowns (u,v,p,q):  R_A - R_B, N_A x N_B
- * with a forward-difference Jacobian and a small Levenberg damping (a
+ * with a forward-difference Jacobian and a small Levenberg-Marquardt damping (a
  * tangential curve makes the solution set a curve, and the normal equations
  * singular along it).
+ *
+ * At a contact of order m >= 4 (z = x^4 + y^4 against z = 0) the normals'
+ * cross product vanishes to order m - 1: the root is multiple and plain
+ * Gauss-Newton creeps towards it by a factor (m-2)/(m-1) per step, stopping
+ * where the residual reaches 1e-12, about 6e-5 away for m = 4. There the
+ * step is lengthened by the multiplicity (Schroeder 1870: x - k F/F' is
+ * quadratic at a root of multiplicity k), the k that lowers the residual
+ * most being chosen, and the difference step shrinks with the steps so that
+ * the Jacobian stays right near the root.
  */
-#include "local_internal.h"
+#include "tangential_residuals.h"
 #include "common/vec3.h"
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
-typedef struct {
-    ic_pair *pair;
-    int par[2];
-    int n; /* unknowns */
-    ic_local_point base;
-    double L; /* the problem's size: length residuals are divided by it */
-} tctx;
+/* dimensionless (the residuals are lengths over L and sines): a point is
+ * tangential when every residual is below this */
+#define LOCATE_ACCEPT 1e-12
+/* iterations of plain Gauss-Newton (quadratic convergence needs a
+ * handful), and of the lengthened steps at a multiple root (order 15: a few
+ * dozen) */
+#define LOCATE_PLAIN_ITERATIONS 40
+#define LOCATE_MAX_ITERATIONS 100
+/* dimensionless: a residual this small is a root (below, rounding of
+ * normalized quantities at the origin only) */
+#define LOCATE_FLOOR 1e-300
+/* the longest lengthening of a step: the multiplicity of N_A x N_B at a
+ * contact of order 16, the highest order the analysis reaches */
+#define LOCATE_MAX_MULTIPLICITY 16
+/* a plain step that lowers the residual by less than this factor is slow
+ * (linear) convergence: a multiple root, and longer steps are tried */
+#define LOCATE_SLOW_RATIO 0.1
+/* relative: the forward-difference step, of the problem's size for a
+ * coordinate, of (1 + |p|) for a parameter; near the root, a thousandth of
+ * the last step */
+#define LOCATE_DIFF_REL 1e-7
+#define LOCATE_DIFF_OF_STEP 1e-3
+/* dimensionless: the Levenberg-Marquardt damping, of the trace of J^T J
+ * or of each unknown's own diagonal entry */
+#define LOCATE_DAMPING 1e-14
+/* difference steps tried per step at a multiple root */
+#define LOCATE_DIFF_RETRIES 4
+/* iterations without a better point before giving up */
+#define LOCATE_STALL 3
 
-/* Builds the point from the unknowns. */
-static void unpack(const tctx *c, const double *z, ic_local_point *pt)
+/* The unknowns' own size: a coordinate's is L, a parameter's 1. */
+static double unit_of(const ic_tres *c)
 {
-    *pt = c->base;
-    int k = 0;
-    if (!c->par[0] && !c->par[1]) {
-        memcpy(pt->xyz, z, 3 * sizeof *z);
-        return;
-    }
-    for (int s = 0; s < 2; s++)
-        if (c->par[s]) {
-            pt->params[s][0] = z[k++];
-            pt->params[s][1] = z[k++];
-        }
+    return c->par[0] || c->par[1] ? 1.0 : c->L;
 }
 
-/* Residuals: returns their number, or -1 where a surface is singular. */
-static int residuals(const tctx *c, const double *z, double *F)
+/* Forward-difference Jacobian; the step is at most `cap` (and at least a few
+ * units in the last place). 0, or -1 where a surface is singular. */
+static int jacobian(const ic_tres *c, const double *z, const double *F, int m, double cap,
+                    double J[6][4])
 {
-    ic_local_point pt;
-    unpack(c, z, &pt);
-    ic_surface_geometry g[2];
-    double X[2][3];
-    for (int s = 0; s < 2; s++) {
-        ic_surface *srf = ic_pair_surface(c->pair, s);
-        if (c->par[s]) {
-            if (ic_surface_normal_at(srf, &g[s], pt.params[s], NULL) != IC_OK)
-                return -1;
-            memcpy(X[s], g[s].point, sizeof X[s]);
+    for (int j = 0; j < c->n; j++) {
+        double zj[4], Fj[6];
+        memcpy(zj, z, sizeof zj);
+        double h = LOCATE_DIFF_REL * (unit_of(c) + fabs(z[j]));
+        h = fmax(fmin(h, cap), 16 * DBL_EPSILON * fabs(z[j]) + DBL_MIN);
+        zj[j] += h;
+        h = zj[j] - z[j]; /* the step actually taken */
+        if (ic_tres_residuals(c, zj, Fj) != m)
+            return -1;
+        for (int i = 0; i < m; i++)
+            J[i][j] = (Fj[i] - F[i]) / h;
+    }
+    return 0;
+}
+
+/* The damped Gauss-Newton step: (J^T J + mu D) dz = -J^T F. With
+ * per_unknown, D is the diagonal of J^T J (Marquardt 1963: near a multiple
+ * root a column of J is tiny beside the others and must still move); else
+ * D = trace(J^T J) I (Levenberg 1944), which keeps the step short along a
+ * tangential curve, where J^T J is singular. */
+static void gauss_newton_step(const double J[6][4], const double *F, int m, int n,
+                              int per_unknown, double *dz)
+{
+    double A[4][4] = {{0}}, b[4] = {0}, trace = 0;
+    for (int a = 0; a < n; a++) {
+        for (int bb = 0; bb < n; bb++)
+            for (int i = 0; i < m; i++)
+                A[a][bb] += J[i][a] * J[i][bb];
+        for (int i = 0; i < m; i++)
+            b[a] -= J[i][a] * F[i];
+        trace += A[a][a];
+    }
+    for (int a = 0; a < n; a++)
+        A[a][a] += LOCATE_DAMPING * (per_unknown ? A[a][a] : trace) + DBL_MIN;
+    /* Gaussian elimination (symmetric positive definite, small) */
+    for (int col = 0; col < n; col++)
+        for (int r = col + 1; r < n; r++) {
+            const double f = A[r][col] / A[col][col];
+            for (int k = col; k < n; k++)
+                A[r][k] -= f * A[col][k];
+            b[r] -= f * b[col];
         }
+    for (int r = n - 1; r >= 0; r--) {
+        double sum = b[r];
+        for (int k = r + 1; k < n; k++)
+            sum -= A[r][k] * dz[k];
+        dz[r] = sum / A[r][r];
     }
-    int m = 0;
-    if (c->par[0] && c->par[1]) {
-        for (int k = 0; k < 3; k++)
-            F[m++] = (X[0][k] - X[1][k]) / c->L;
-    } else {
-        const double *P = c->par[0] ? X[0] : c->par[1] ? X[1] : pt.xyz;
-        for (int s = 0; s < 2; s++)
-            if (!c->par[s]) {
-                if (ic_surface_normal_at(ic_pair_surface(c->pair, s), &g[s], P, NULL) != IC_OK)
-                    return -1;
-                F[m++] = g[s].value / g[s].normal_length / c->L;
-            }
+}
+
+/* z + k dz for the multiplicity k = 1.. that leaves the smallest residual:
+ * tried beyond k = 1 only when the plain step converges slowly. Returns
+ * that residual; z and F are updated. */
+static double take_step(const ic_tres *c, double *z, const double *dz, int m, double worst,
+                        double *F)
+{
+    double best_z[4], best_F[6], best = INFINITY;
+    for (int k = 1; k <= LOCATE_MAX_MULTIPLICITY; k++) {
+        double zk[4], Fk[6];
+        for (int j = 0; j < c->n; j++)
+            zk[j] = z[j] + k * dz[j];
+        const double w = ic_tres_worst(c, zk, m, Fk);
+        if (w < best) {
+            best = w;
+            memcpy(best_z, zk, sizeof zk);
+            memcpy(best_F, Fk, sizeof Fk);
+        }
+        if (k == 1 && (best == 0 || best < LOCATE_SLOW_RATIO * worst || !(best < worst)))
+            break; /* fast convergence, or no progress along dz at all */
     }
-    double cr[3];
-    ic_cross3(cr, g[0].normal, g[1].normal);
-    for (int k = 0; k < 3; k++)
-        F[m++] = cr[k];
-    return m;
+    if (best < INFINITY) {
+        memcpy(z, best_z, (size_t)c->n * sizeof *z);
+        memcpy(F, best_F, (size_t)m * sizeof *F);
+    }
+    return best;
+}
+
+/* Plain Gauss-Newton from z (Levenberg damping, fixed difference steps) to
+ * the root or the stall; *last is the last step's size and *ratio the last
+ * step's residual ratio. Returns the residual. */
+static double plain(const ic_tres *c, double *z, int m, double *F, double *last, double *ratio)
+{
+    double worst = ic_tres_worst(c, z, m, F);
+    *last = 0;
+    *ratio = 0;
+    for (int it = 0; worst > LOCATE_FLOOR && it < LOCATE_PLAIN_ITERATIONS; it++) {
+        double J[6][4], dz[4], zn = 0, size = 0;
+        if (jacobian(c, z, F, m, INFINITY, J) != 0)
+            return INFINITY;
+        gauss_newton_step(J, F, m, c->n, 0, dz);
+        for (int j = 0; j < c->n; j++) {
+            z[j] += dz[j];
+            size = fmax(size, fabs(dz[j]));
+            zn = fmax(zn, fabs(z[j]));
+        }
+        const double w = ic_tres_worst(c, z, m, F);
+        if (!(w < INFINITY))
+            return INFINITY;
+        *ratio = w / worst;
+        *last = size;
+        worst = w;
+        if (size <= 1e-15 * (1 + zn))
+            break;
+    }
+    return worst;
+}
+
+/* The Gauss-Newton step at a multiple root, with difference steps a
+ * thousandth of the step: first of the last step, then, while the step
+ * comes out far shorter (the last lengthened step landed much nearer the
+ * root), of the new one. 0, or -1 where a surface is singular. */
+static int multiple_step(const ic_tres *c, const double *z, const double *F, int m, double last,
+                         double *dz)
+{
+    double cap = LOCATE_DIFF_OF_STEP * last;
+    for (int tries = 0; tries < LOCATE_DIFF_RETRIES; tries++) {
+        double J[6][4], size = 0;
+        if (jacobian(c, z, F, m, cap, J) != 0)
+            return -1;
+        gauss_newton_step(J, F, m, c->n, 1, dz);
+        for (int j = 0; j < c->n; j++)
+            size = fmax(size, fabs(dz[j]));
+        if (!(LOCATE_DIFF_OF_STEP * size < 0.1 * cap))
+            break;
+        cap = fmax(LOCATE_DIFF_OF_STEP * size, DBL_MIN);
+    }
+    return 0;
+}
+
+/* At a multiple root (the plain steps shrank the residual slowly): the
+ * lengthened steps, per-unknown damping and difference steps shrinking with
+ * the steps, never moving farther than LOCATE_MAX_MULTIPLICITY times the
+ * distance `remaining` that the plain steps still had to go (their
+ * geometric series) from where they stopped: a tangential curve, where the
+ * solutions run on, is not followed. Keeps the best point met. */
+static double multiple(const ic_tres *c, double *z, int m, double *F, double worst, double last,
+                       double remaining)
+{
+    double z0[4], best_z[4], best = worst;
+    memcpy(z0, z, sizeof z0);
+    memcpy(best_z, z, sizeof best_z);
+    const double reach = LOCATE_MAX_MULTIPLICITY * remaining;
+    for (int it = 0, stall = 0; worst > LOCATE_FLOOR && it < LOCATE_MAX_ITERATIONS; it++) {
+        double dz[4], size = 0, zn = 0;
+        if (multiple_step(c, z, F, m, last, dz) != 0)
+            break;
+        for (int j = 0; j < c->n; j++) {
+            size = fmax(size, fabs(dz[j]));
+            zn = fmax(zn, fabs(z[j]));
+        }
+        worst = take_step(c, z, dz, m, worst, F);
+        double moved = 0;
+        for (int j = 0; j < c->n; j++)
+            moved = fmax(moved, fabs(z[j] - z0[j]));
+        if (!(worst < INFINITY) || moved > reach)
+            break;
+        last = fmax(size, DBL_MIN);
+        stall = worst < best ? 0 : stall + 1;
+        if (worst < best) {
+            best = worst;
+            memcpy(best_z, z, sizeof best_z);
+        }
+        if (size <= 1e-15 * (1 + zn) || stall >= LOCATE_STALL)
+            break;
+    }
+    memcpy(z, best_z, sizeof best_z);
+    return ic_tres_worst(c, z, m, F);
+}
+
+/* Gauss-Newton from z; returns the residual where it stops. */
+static double solve(const ic_tres *c, double *z, int m, double *F)
+{
+    double last, ratio;
+    const double worst = plain(c, z, m, F, &last, &ratio);
+    if (!(worst > LOCATE_FLOOR && worst < INFINITY && ratio > LOCATE_SLOW_RATIO && ratio < 1))
+        return worst;
+    const double remaining = last / (1 - ratio);
+    if (!c->par[0] || !c->par[1] || !c->opt)
+        return multiple(c, z, m, F, worst, last, remaining);
+    ic_tres r;
+    ic_tres_reduce(c, z, &r);
+    double zr[4] = {z[0], z[1], 0, 0}, Fr[6];
+    if (!(multiple(&r, zr, 6, Fr, ic_tres_worst(&r, zr, 6, Fr), last, remaining) < INFINITY))
+        return worst;
+    ic_local_point pt;
+    ic_tres_unpack(&r, zr, &pt);
+    if (ic_tres_reduced_at(&r, &pt, Fr) < 0)
+        return worst;
+    double back[4] = {pt.params[0][0], pt.params[0][1], pt.params[1][0], pt.params[1][1]};
+    const double w = ic_tres_worst(c, back, m, F);
+    if (w < worst) {
+        memcpy(z, back, sizeof back);
+        return w;
+    }
+    return ic_tres_worst(c, z, m, F);
 }
 
 ic_status ic_local_locate_tangential(ic_pair *pair, ic_local_point *pt, const ic_local_point *near,
                                      double reach, const ic_local_options *opt, ic_error *err)
 {
-    tctx c;
-    memset(&c, 0, sizeof c);
-    c.pair = pair;
-    c.base = *near;
-    c.L = opt->scale > 0 && isfinite(opt->scale) ? opt->scale : 1.0;
-    double z[4];
-    for (int s = 0; s < 2; s++) {
-        c.par[s] = ic_surface_get_kind(ic_pair_surface(pair, s)) == IC_PARAMETRIC;
-        if (c.par[s]) {
-            z[c.n++] = near->params[s][0];
-            z[c.n++] = near->params[s][1];
-        }
-    }
-    if (c.n == 0) {
-        memcpy(z, near->xyz, sizeof near->xyz);
-        c.n = 3;
-    }
-    double F[6], J[6][4];
-    int m = residuals(&c, z, F);
-    double worst = INFINITY;
-    for (int it = 0; m > 0 && it < 40; it++) {
-        for (int j = 0; j < c.n; j++) { /* forward differences */
-            double zj[4], Fj[6];
-            memcpy(zj, z, sizeof zj);
-            /* a coordinate steps by 1e-7 of the problem's size, a
-             * parameter by 1e-7 of its own size */
-            const double h = 1e-7 * ((c.par[0] || c.par[1] ? 1.0 : c.L) + fabs(z[j]));
-            zj[j] += h;
-            if (residuals(&c, zj, Fj) != m)
-                return ic_error_set(err, IC_ERR_UNABLE, 0, "a surface is singular near the point");
-            for (int i = 0; i < m; i++)
-                J[i][j] = (Fj[i] - F[i]) / h;
-        }
-        /* (J^T J + mu I) dz = -J^T F */
-        double A[4][4] = {{0}}, b[4] = {0}, trace = 0;
-        for (int a = 0; a < c.n; a++) {
-            for (int bb = 0; bb < c.n; bb++)
-                for (int i = 0; i < m; i++)
-                    A[a][bb] += J[i][a] * J[i][bb];
-            for (int i = 0; i < m; i++)
-                b[a] -= J[i][a] * F[i];
-            trace += A[a][a];
-        }
-        for (int a = 0; a < c.n; a++)
-            A[a][a] += 1e-14 * trace + 1e-300;
-        /* Gaussian elimination (symmetric positive definite, small) */
-        for (int col = 0; col < c.n; col++)
-            for (int r = col + 1; r < c.n; r++) {
-                const double f = A[r][col] / A[col][col];
-                for (int k = col; k < c.n; k++)
-                    A[r][k] -= f * A[col][k];
-                b[r] -= f * b[col];
-            }
-        double dz[4];
-        for (int r = c.n - 1; r >= 0; r--) {
-            double sum = b[r];
-            for (int k = r + 1; k < c.n; k++)
-                sum -= A[r][k] * dz[k];
-            dz[r] = sum / A[r][r];
-        }
-        double size = 0, zn = 0;
-        for (int j = 0; j < c.n; j++) {
-            z[j] += dz[j];
-            size = fmax(size, fabs(dz[j]));
-            zn = fmax(zn, fabs(z[j]));
-        }
-        m = residuals(&c, z, F);
-        worst = 0;
-        for (int i = 0; i < m; i++)
-            worst = fmax(worst, fabs(F[i]));
-        if (size <= 1e-15 * (1 + zn))
-            break;
-    }
-    if (m < 0 || !(worst <= 1e-12))
+    ic_tres c;
+    double z[4] = {0}, F[6];
+    ic_tres_setup(&c, pair, near, opt, z);
+    const int m = ic_tres_residuals(&c, z, F);
+    const double worst = m > 0 ? solve(&c, z, m, F) : INFINITY;
+    if (!(worst <= LOCATE_ACCEPT))
         return ic_error_set(err, IC_ERR_UNABLE, 0,
                             "no tangential point converged near (%g, %g, %g) (residual %.3g)",
                             near->xyz[0], near->xyz[1], near->xyz[2], worst);
-    unpack(&c, z, pt);
+    ic_tres_unpack(&c, z, pt);
     if (c.par[0] || c.par[1]) {
         const int P = c.par[0] ? 0 : 1;
         if (ic_surface_eval(ic_pair_surface(pair, P), pt->xyz, pt->params[P], err) != IC_OK)
@@ -166,6 +287,6 @@ ic_status ic_local_locate_tangential(ic_pair *pair, ic_local_point *pt, const ic
                             "the nearest tangential point is %.3g away, beyond %g", ic_norm3(d),
                             reach);
     pt->residual = worst;
-    (void)opt;
     return IC_OK;
 }
+

@@ -50,6 +50,7 @@ void ic_local_defaults(ic_local_options *opt)
     opt->kappa_zero = 1e-12;
     opt->scale = 1.0;
     opt->contact_tol = 1e-8;
+    opt->place_tol = 0.0;
 }
 
 ic_status ic_pair_new(ic_pair **out, ic_surface *A, ic_surface *B, ic_error *err)

@@ -184,6 +184,18 @@ static double degree_max(const ic_jet_space *sp, const double *a, int j)
     return m;
 }
 
+/* What moving the point by delta (opt->place_tol) can change the degree-j
+ * coefficients of the height difference g by: the degree-i terms
+ * contribute binom(i, j) |g_i| delta^(i-j) per monomial, bounded here by
+ * 2^i max|g_i| delta^(i-j), up to the jets' order H. */
+static double shift_noise(const ic_jet_space *sp, const double *g, int j, int H, double delta)
+{
+    double noise = 0.0;
+    for (int i = j + 1; i <= H && delta > 0; i++)
+        noise += ldexp(degree_max(sp, g, i), i) * pow(delta, i - j);
+    return noise;
+}
+
 /* Simple real roots phi in [0, pi) of the leading form g_m(cos phi, sin phi). */
 static int form_roots(const tctx *cx, const double *g, int m, double *roots, int max)
 {
@@ -528,7 +540,8 @@ ic_status ic_height_difference(ic_local_result *res, const ic_sheet sh[2], int o
     const double q2 = fmax(fmax(fabs(a), fabs(c)), fabs(b) / 2);
     res->discriminant = b * b / 4 - a * c;
     res->nbranches = 0;
-    if (q2 > opt->contact_tol * scale2) {
+    const double delta = opt->place_tol > 0 ? opt->place_tol : 0.0;
+    if (q2 > opt->contact_tol * scale2 && q2 > shift_noise(sp2, g, 2, H, delta)) {
         const double D = res->discriminant;
         if (fabs(D) <= opt->contact_tol * q2 * q2) {
             res->discriminant = 0.0;
@@ -548,7 +561,8 @@ ic_status ic_height_difference(ic_local_result *res, const ic_sheet sh[2], int o
         int m = 0;
         for (int j = 3; j <= H && !m; j++) {
             const double sj = fmax(degree_max(sp2, h->psi[0], j), degree_max(sp2, h->psi[1], j));
-            if (degree_max(sp2, g, j) > opt->contact_tol * sj)
+            const double gj = degree_max(sp2, g, j);
+            if (gj > opt->contact_tol * sj && gj > shift_noise(sp2, g, j, H, delta))
                 m = j;
         }
         if (m == 0) {

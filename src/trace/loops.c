@@ -124,3 +124,26 @@ int ic_trace_cell_may_degenerate(ic_surface *const S[2], int par0, int par1, con
     }
     return 0;
 }
+
+int ic_trace_point_may_degenerate(ic_pair *pair, const ic_local_point *pt, double rel)
+{
+    ic_surface *S[2] = {ic_pair_surface(pair, 0), ic_pair_surface(pair, 1)};
+    int par[2];
+    double lo[4], hi[4];
+    int off = 0;
+    for (int s = 0; s < 2; s++) {
+        par[s] = ic_surface_get_kind(S[s]) == IC_PARAMETRIC;
+        if (!par[s])
+            continue;
+        double dom[2][2];
+        int periodic[2];
+        ic_surface_get_domain(S[s], dom, periodic);
+        for (int k = 0; k < 2; k++) {
+            const double half = rel * (dom[k][1] - dom[k][0]);
+            lo[off + k] = pt->params[s][k] - half;
+            hi[off + k] = pt->params[s][k] + half;
+        }
+        off += 2;
+    }
+    return off > 0 && ic_trace_cell_may_degenerate(S, par[0], par[1], lo, hi);
+}

@@ -8,6 +8,7 @@
 #include "trace_internal.h"
 #include "common/vec3.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -140,25 +141,39 @@ static void cover_point(ic_candidate *c, int n, const double *x, double radius)
     ic_trace_cover(c, n, &one, 1, radius);
 }
 
-/* An isolated contact is located by Gauss-Newton on the collinear normals,
- * whose residual (an angle) stops at IC_TRACE_TANGENT_RESIDUAL; the angle
- * grows like sqrt|Delta| times the distance, so the place is known to about
- * IC_TRACE_TANGENT_RESIDUAL / sqrt|Delta|. Where that exceeds
- * IC_TRACE_PLACE_REL L (a contact of high order: z = x^4 + y^4 on a plane,
- * a multiple root) the point is approximate and the report says so. */
-static void check_contact_place(ic_trace_result *r, ic_trace_special *s, const ic_local_result *res)
+static int is_contact(ic_point_type t)
 {
-    if (s->type != IC_POINT_ISOLATED_CONTACT && s->type != IC_POINT_HIGHER_ORDER_CONTACT)
+    return t == IC_POINT_ISOLATED_CONTACT || t == IC_POINT_HIGHER_ORDER_CONTACT;
+}
+
+/* An isolated contact is located by Gauss-Newton on a root of multiplicity
+ * m - 1 (m its order): where its formulas cancel, only to the radius where
+ * the residuals sink into rounding (ic_local_tangential_place). The point is
+ * classified again knowing that radius (a quadratic part that a shift this
+ * small could make is no contact term) and, beyond IC_TRACE_PLACE_REL, it is
+ * approximate and the report says so. */
+static void check_contact_place(ic_trace_result *r, ic_trace_special *s, ic_trace_located *loc,
+                                ic_pair *pair, ic_local_options *o)
+{
+    double radius;
+    if (!is_contact(s->type) || ic_local_tangential_place(pair, &loc->pt, o, &radius, NULL) != IC_OK)
         return;
-    const double root = sqrt(fabs(res->discriminant));
-    const double place = IC_TRACE_TANGENT_RESIDUAL / fmax(root, 1e-300);
-    if (place <= IC_TRACE_PLACE_REL * r->scale)
+    if (radius > o->place_tol) {
+        o->place_tol = radius;
+        ic_local_result res;
+        if (ic_local_apparatus(pair, &res, &loc->pt, 3, IC_METHOD_AUTO, o, NULL) == IC_OK) {
+            loc->res = res;
+            s->type = res.type;
+            s->nbranches = res.nbranches;
+        }
+    }
+    if (radius <= IC_TRACE_PLACE_REL * r->scale)
         return;
     s->approximate = 1;
     ic_trace_failure(&r->report,
                      "a contact point near (%.6g, %.6g, %.6g) is located only to about %.2g (a "
                      "contact of high order, a multiple root): its place and type are approximate",
-                     s->xyz[0], s->xyz[1], s->xyz[2], fmin(place, r->scale));
+                     s->xyz[0], s->xyz[1], s->xyz[2], radius);
 }
 
 /* Room for one more special point (and its located record): 0, or -1 out
@@ -210,6 +225,8 @@ ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local
     ic_local_options o = opt->local;
     if (approximate)
         o.tangential_angle = 1e-3;
+    else /* located to a few units in the last place of L */
+        o.place_tol = IC_TRACE_PLACE_ULPS * DBL_EPSILON * r->scale;
     /* order 12: the branches' series also serve the curve points nearby
      * (ic_trace_refit_near_special) */
     loc->res_ok = ic_local_apparatus(pair, &loc->res, pt, 12, IC_METHOD_AUTO, &o, NULL) == IC_OK;
@@ -220,7 +237,14 @@ ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local
         s->type = loc->res.type;
         s->nbranches = loc->res.nbranches;
         if (!approximate)
-            check_contact_place(r, s, &loc->res);
+            check_contact_place(r, s, loc, pair, &o);
+    } else if (ic_trace_point_may_degenerate(pair, pt, IC_TRACE_SINGULAR_CLEARANCE)) {
+        /* where the parametrization degenerates (R_u x R_v = 0: the pinch
+         * point of Whitney's umbrella) the surface itself is singular; its
+         * exact place is not located */
+        s->type = IC_POINT_SURFACE_SINGULAR;
+        s->nbranches = 0;
+        s->approximate = 1;
     } else { /* not classified: kept as an approximate place, and said */
         s->type = IC_POINT_TANGENTIAL;
         s->nbranches = 0;

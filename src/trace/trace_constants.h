@@ -53,12 +53,15 @@
  * accepts the start candidates of the search (1e-10 L) with room. */
 #define IC_TRACE_POINT_TOL 1e-7
 
-/* dimensionless: the collinear-normals residual (an angle) at which the
- * tangential locator stops (src/local/locate_tangential.c), and relative
- * (of L): how well the place of an isolated contact must be known from it
- * (residual / sqrt|Delta|) to be exact; beyond, it is approximate. */
-#define IC_TRACE_TANGENT_RESIDUAL 1e-12
+/* relative (of L): how well the place of an isolated contact must be known
+ * (ic_local_tangential_place: the radius where the locator's residuals sink
+ * into rounding) for it to be exact; beyond, it is approximate. */
 #define IC_TRACE_PLACE_REL 1e-8
+
+/* units in the last place of L: how well a located tangential point's place
+ * is known at best (the locator stops at steps of 1e-15 of the unknowns'
+ * size); coefficients a shift this small makes are no contact terms */
+#define IC_TRACE_PLACE_ULPS 16
 
 /* relative (of L): points of a curve nearer than this to a singular point
  * of a surface (a cone's apex) are dropped: the normal vanishes there and

@@ -210,6 +210,11 @@ int ic_trace_cell_loop_free(ic_surface *const S[2], int par0, int par1, const do
 int ic_trace_cell_may_degenerate(ic_surface *const S[2], int par0, int par1, const double *lo,
                                  const double *hi);
 
+/* 1 when the normal of a parametric sheet may vanish within `rel` of its
+ * domain's widths around the point's parameters: a degenerate point of the
+ * parametrization (the pinch point of Whitney's umbrella) (loops.c). */
+int ic_trace_point_may_degenerate(ic_pair *pair, const ic_local_point *pt, double rel);
+
 /* 1 when centred forms prove the search cell [lo, hi] holds no point of
  * both surfaces (centred.c). */
 int ic_trace_cell_excluded_centred(ic_surface *const S[2], int par0, int par1, const double *lo,

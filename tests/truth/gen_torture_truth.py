@@ -86,7 +86,7 @@ STATUS = {
     "overflow-domain-1e300": "pass",
     "overflow-box-inf": "pass",
     "overflow-domain-inf": "pass",
-    "contact-x4y4": "known-failure: the contact is found by Gauss-Newton on a multiple root: two approximate isolated-contact points 2e-5 and 9e-5 from the origin (must be one higher-order-contact at it); the report says incomplete and why",
+    "contact-x4y4": "pass",
     "whitney-umbrella": "pass",
     "viviani-1e3-offset": "pass",
     "cylinders-1e-2-offset": "pass",
@@ -571,7 +571,7 @@ cases.append(k)
 # curve is (0, 0, u^2) with preimages (u, 0), (-u, 0), both in the domain
 # u in [-1.2, 1.5], v in [-0.7, 1.1] for 0 < u <= 1.2: the segment from the
 # pinch point (0, 0, 0) to (0, 0, 1.44), length 1.44. At the pinch point
-# R_u x R_v = 0 (the library has no type for it: any point there is allowed).
+# R_u x R_v = 0 (a singular point of the surface itself, typed surface-singular; any point there is allowed).
 k = Case("whitney-umbrella", "complete", R_(15, 10))
 u_, v_ = sp.symbols("u v", real=True)
 Rw = sp.Matrix([u_ * v_, v_, u_ ** 2])
@@ -579,7 +579,7 @@ Rw = sp.Matrix([u_ * v_, v_, u_ ** 2])
 assert sp.simplify(Rw.subs({u_: t, v_: 0}) - Rw.subs({u_: -t, v_: 0})) == sp.zeros(3, 1)
 assert sp.simplify(Rw.subs({u_: t, v_: 0}) - sp.Matrix([0, 0, t ** 2])) == sp.zeros(3, 1)
 k.curve((0, 0, t), 0, R_(144, 100), False, "line", mp.mpf("1.44"), [x, y])
-k.extra_points = "the pinch point (0, 0, 0): the library has no type for it"
+k.extra_points = "the pinch point (0, 0, 0): a singular point of the surface itself (surface-singular)"
 cases.append(k)
 
 # ---------------------------------------------------------------- classics

@@ -109,6 +109,58 @@ static int test_truth_file(const char *path)
     return cases;
 }
 
+/* The enclosures of a parametric primitive p over random (u, v) boxes hold
+ * its values and first derivatives at points sampled in the box (beyond a
+ * slack of 8 eps of the magnitude: the samples are rounded, the enclosure
+ * is of the exact values), and are no wider than twice those of the same
+ * surface written as formulas, q (same operations, so the same widths up to
+ * the order of the products). */
+static void check_param_intervals(int i, ic_surface *p, ic_surface *q, const ic_jet_space *s1,
+                                  harness_rng *rng)
+{
+    int outside = 0, wide = 0;
+    for (int trial = 0; trial < 40; trial++) {
+        const double w = pow(10.0, harness_uniform(rng, -4, 0));
+        ic_interval box[2];
+        for (int k = 0; k < 2; k++) {
+            const double lo = harness_uniform(rng, -3.0, 3.0);
+            box[k] = (ic_interval){lo, lo + w};
+        }
+        ic_interval_grad gp[3], gq[3];
+        if (ic_surface_eval_interval_grad(p, gp, box, NULL) != IC_OK ||
+            ic_surface_eval_interval_grad(q, gq, box, NULL) != IC_OK) {
+            outside++;
+            continue;
+        }
+        for (int k = 0; k < 3; k++)
+            for (int d = -1; d < 2; d++) {
+                const ic_interval a = d < 0 ? gp[k].v : gp[k].d[d];
+                const ic_interval b = d < 0 ? gq[k].v : gq[k].d[d];
+                if (a.hi - a.lo > 2 * (b.hi - b.lo) + 1e-15)
+                    wide++;
+            }
+        for (int sample = 0; sample < 20; sample++) {
+            const double at[2] = {harness_uniform(rng, box[0].lo, box[0].hi),
+                                  harness_uniform(rng, box[1].lo, box[1].hi)};
+            double t[3 * 3]; /* value, d/du, d/dv of x, y, z */
+            if (ic_surface_taylor(p, t, at, s1, NULL) != IC_OK) {
+                outside++;
+                continue;
+            }
+            for (int k = 0; k < 3; k++)
+                for (int d = 0; d < 3; d++) {
+                    const double x = t[3 * k + d];
+                    const ic_interval a = d == 0 ? gp[k].v : gp[k].d[d - 1];
+                    const double slack = 8 * DBL_EPSILON * (1 + fabs(x));
+                    if (x < a.lo - slack || x > a.hi + slack)
+                        outside++;
+                }
+        }
+    }
+    CHECK(outside == 0, "parametric primitive %d: %d samples outside its enclosures", i, outside);
+    CHECK(wide == 0, "parametric primitive %d: %d enclosures wider than the formula's", i, wide);
+}
+
 /* Each primitive against the same surface written as formulas. */
 static void test_primitives_match_formulas(harness_rng *rng)
 {
@@ -160,6 +212,10 @@ static void test_primitives_match_formulas(harness_rng *rng)
                 continue;
             const ic_jet_space *sp = form ? s3 : s2;
             const int n = ic_jet_space_len(sp), nout = form ? 1 : 3;
+            ic_jet_space *first = NULL;
+            if (!form && ic_jet_space_new(&first, 2, 1, NULL) == IC_OK)
+                check_param_intervals(i, p, q, first, rng);
+            ic_jet_space_free(first);
             for (int trial = 0; trial < 10; trial++) {
                 double at[3], a[3 * 84], b[3 * 84];
                 for (int k = 0; k < 3; k++)

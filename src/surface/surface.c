@@ -308,14 +308,16 @@ ic_status ic_surface_eval(ic_surface *s, double *out, const double *at, ic_error
 ic_status ic_surface_eval_interval_grad(ic_surface *s, ic_interval_grad *out, const ic_interval *in,
                                         ic_error *err)
 {
-    if (s->backend == BACKEND_PRIMITIVE && s->kind == IC_IMPLICIT) {
-        ic_primitive_interval_grad(s, out, in);
+    if (s->backend == BACKEND_PRIMITIVE) {
+        if (s->kind == IC_IMPLICIT)
+            ic_primitive_interval_grad(s, out, in);
+        else
+            ic_primitive_param_interval_grad(s, out, in);
         return IC_OK;
     }
     if (s->backend != BACKEND_FORMULA)
         return ic_error_set(err, IC_ERR_UNABLE, 0,
-                            "interval evaluation needs a formula surface or an implicit "
-                            "primitive");
+                            "interval evaluation needs a formula surface or a primitive");
     const int nin = s->kind == IC_PARAMETRIC ? 2 : 3;
     ic_interval_grad x[3];
     for (int i = 0; i < nin; i++) {
@@ -345,10 +347,16 @@ ic_status ic_surface_eval_interval(ic_surface *s, ic_interval *out, const ic_int
 {
     if (s->backend == BACKEND_PRIMITIVE && s->kind == IC_IMPLICIT)
         return ic_primitive_interval(s, out, in, err);
+    if (s->backend == BACKEND_PRIMITIVE) {
+        ic_interval_grad g[3];
+        ic_primitive_param_interval_grad(s, g, in);
+        for (int k = 0; k < 3; k++)
+            out[k] = g[k].v;
+        return IC_OK;
+    }
     if (s->backend != BACKEND_FORMULA)
         return ic_error_set(err, IC_ERR_UNABLE, 0,
-                            "interval evaluation needs a formula surface or an implicit "
-                            "primitive");
+                            "interval evaluation needs a formula surface or a primitive");
     ic_interval work[256];
     ic_interval *w = work;
     const size_t len = ic_expr_interval_work_len(s->expr);

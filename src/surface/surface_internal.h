@@ -49,5 +49,9 @@ ic_status ic_primitive_interval(ic_surface *s, ic_interval *out, const ic_interv
                                 ic_error *err);
 /* The same with the gradient of f (out->d[0..2]). */
 void ic_primitive_interval_grad(ic_surface *s, ic_interval_grad *out, const ic_interval *in);
+/* A parametric primitive's (x, y, z) and their (u, v) derivatives over the
+ * box `in` (primitive_param_interval.c). */
+void ic_primitive_param_interval_grad(const ic_surface *s, ic_interval_grad *out,
+                                      const ic_interval *in);
 
 #endif

@@ -303,8 +303,8 @@ void ic_trace_report_open_cells(ic_trace_result *r, const ic_unresolved *u, int 
         left++;
     }
     if (!rep->proven)
-        ic_trace_failure(rep, "sampled only: a surface has no interval evaluation (a primitive "
-                              "in parametric form, a callback), so nothing was proven");
+        ic_trace_failure(rep, "sampled only: a surface has no interval evaluation (a callback), "
+                              "so nothing was proven");
     if (r->budget.stopped == IC_TRACE_STOP_TIME)
         ic_trace_failure(rep, "stopped at the time limit: the search and the curves are cut short");
     else if (r->budget.stopped == IC_TRACE_STOP_CELLS)

@@ -65,9 +65,9 @@ STATUS = {
     "tiny-overlap-circle": "pass",
     "seam-sphere-plane-c-1": "pass",
     "seam-sphere-sphere-c0.5": "pass",
-    "seam-torus-plane-c3": "known-failure: curves right, complete 0: the torus primitive in parametric form has no interval evaluation (sampled only)",
-    "seam-torus-plane-c0.5": "known-failure: curves right, complete 0 with no failure listed (the torus primitive in parametric form has no interval evaluation)",
-    "seam-cylinder-plane-c-1": "known-failure: curve right, complete 0: the cylinder primitive in parametric form has no interval evaluation (sampled only)",
+    "seam-torus-plane-c3": "pass",
+    "seam-torus-plane-c0.5": "pass",
+    "seam-cylinder-plane-c-1": "pass",
     "cut-open-sphere": "pass",
     "cut-open-torus": "pass",
     "tangent-cylinder-plane-box": "pass",
@@ -90,7 +90,7 @@ STATUS = {
     "whitney-umbrella": "pass",
     "viviani-1e3-offset": "pass",
     "cylinders-1e-2-offset": "pass",
-    "sphere-plane-angle": "known-failure: curve right, complete 0: the parametric sphere primitive has no interval evaluation (sampled only)",
+    "sphere-plane-angle": "pass",
 }
 
 

@@ -469,6 +469,38 @@ static void test_periodic_flag(void)
 }
 
 /* Runs one case and prints its time (the budgets keep each to seconds). */
+/* The unit sphere (formulas, u in [a, a + 2], not periodic) inside the unit
+ * cylinder touches it along the equator: the tangential arc u in [a, a + 2],
+ * of length 2, must end on both domain edges (left-domain), its arc length
+ * exact to 1e-9 (the last step's arc too: a tangential corrector slides the
+ * point along the curve), complete. Before: the march stopped at the edge
+ * it had landed on, the end `failed`, and the landing step's arc was the
+ * predictor's (2.6e-9 long). */
+static void test_tangential_arc_domain(void)
+{
+    const char *xyz[3] = {"cos(u)*cos(v)", "sin(u)*cos(v)", "sin(v)"};
+    const double offsets[3] = {0.0, 0.7, -2.3};
+    for (int k = 0; k < 3; k++) {
+        const double dom[2][2] = {{offsets[k], offsets[k] + 2}, {-1.5, 1.5}};
+        ic_trace_options opt = box_options(-1.5, 1.5);
+        traced t;
+        if (!trace_mixed(&t, xyz, dom, "x^2 + y^2 - 1", &opt)) {
+            CHECK(0, "tangential arc at offset %g", offsets[k]);
+            continue;
+        }
+        const ic_trace_curve *c =
+            ic_trace_result_num_curves(t.res) == 1 ? ic_trace_result_curve(t.res, 0) : NULL;
+        CHECK(c && c->tangential && fabs(c->length - 2) <= LENGTH_REL * 2 &&
+                  c->ends[0] == IC_TRACE_LEFT_DOMAIN && c->ends[1] == IC_TRACE_LEFT_DOMAIN &&
+                  complete(t.res),
+              "tangential arc from u = %g: %d curves, length %.15g, ends %s, %s, complete %d",
+              offsets[k], ic_trace_result_num_curves(t.res), c ? c->length : 0.0,
+              c ? ic_trace_event_name(c->ends[0]) : "-", c ? ic_trace_event_name(c->ends[1]) : "-",
+              complete(t.res));
+        release(&t);
+    }
+}
+
 static void timed(const char *name, void (*fn)(void))
 {
     struct timespec t0, t1;
@@ -498,5 +530,6 @@ int main(void)
     timed("periodic flag", test_periodic_flag);
     timed("Whitney arc length", test_whitney_arc_length);
     timed("cone apex", test_cone_apex);
+    timed("tangential arc cut by the domain", test_tangential_arc_domain);
     return harness_finish("trust");
 }

@@ -267,6 +267,49 @@ static int outside(const ic_tracer *tr, const ic_local_point *pt, ic_trace_event
     return 0;
 }
 
+/* Adds h (du/ds, dv/ds) of sheet s to uv: the march tangent t = R_u du/ds
+ * + R_v dv/ds solved by least squares in the sheet's tangent basis. 0 where
+ * the sheet is singular. */
+static int param_velocity(const ic_tracer *tr, int s, double h, double uv[2])
+{
+    ic_surface_geometry g;
+    if (ic_surface_normal_at(ic_pair_surface(tr->pair, s), &g, tr->cur.params[s], NULL) != IC_OK)
+        return 0;
+    double t[3];
+    march_t(tr, &tr->res, t);
+    const double E = ic_dot3(g.basis[0], g.basis[0]), F = ic_dot3(g.basis[0], g.basis[1]);
+    const double G = ic_dot3(g.basis[1], g.basis[1]);
+    const double a = ic_dot3(g.basis[0], t), b = ic_dot3(g.basis[1], t), det = E * G - F * F;
+    if (!(det > 0))
+        return 0;
+    uv[0] += h * (G * a - F * b) / det;
+    uv[1] += h * (E * b - F * a) / det;
+    return 1;
+}
+
+/* A curve that reached a domain edge or a box face exactly (a step landed on
+ * it) and heads out: no corrected point exists beyond it (the projection
+ * onto a parametric sheet stays in its domain), so every step fails; it has
+ * left, at its current point. Within IC_TRACE_EDGE_REL of the domain's
+ * width or of L, and the predicted step crosses the bound. */
+static int on_boundary_heading_out(const ic_tracer *tr, ic_trace_event *event)
+{
+    ic_local_point ahead = tr->cur;
+    const double h = step_length(tr);
+    predict(tr, h, ahead.xyz, ahead.params);
+    if (tr->res.branches[0].param_order < 1) /* a tangential curve's branch */
+        for (int s = 0; s < 2; s++)
+            if (tr->par[s] && !param_velocity(tr, s, h, ahead.params[s]))
+                return 0;
+    boundary b;
+    if (!outside(tr, &ahead, event, &b))
+        return 0;
+    const double width = b.sheet < 0 ? tr->opt.local.scale
+                                     : tr->domain[b.sheet][b.index][1] -
+                                           tr->domain[b.sheet][b.index][0];
+    return fabs(coordinate(&tr->cur, &b) - b.bound) <= IC_TRACE_EDGE_REL * width;
+}
+
 /* The corrected point after a step of length h (0 if the corrector fails);
  * X receives the predicted point. */
 /* The arc length of an accepted step: the predictor's parameter h plus
@@ -492,9 +535,14 @@ ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
                     if (ic_dot3(te, t0) < 0)
                         ic_tcurve_flip(&res.branches[0]);
                 }
+                /* the arc as for any step: the corrector may slide the
+                 * point along the curve (a tangential curve's does) */
+                double Xb[3], pb[2][2];
+                predict(tr, hb, Xb, pb);
+                const double ds = step_arc(tr, hb, Xb, edge.xyz);
                 tr->cur = edge;
                 tr->res = res;
-                tr->s += hb;
+                tr->s += ds;
                 return record(tr, err);
             }
             return IC_OK;
@@ -536,6 +584,8 @@ ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
         *event = IC_TRACE_TANGENTIAL;
         return IC_OK;
     }
+    if (on_boundary_heading_out(tr, event))
+        return IC_OK;
     *event = IC_TRACE_FAILED;
     return ic_error_set(err, IC_ERR_UNABLE, 0,
                         "the tracer could not make a step at s = %g, (%g, %g, %g): the corrector "

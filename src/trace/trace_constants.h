@@ -58,6 +58,11 @@
  * into rounding) for it to be exact; beyond, it is approximate. */
 #define IC_TRACE_PLACE_REL 1e-8
 
+/* relative (of a domain's width, or of L for a box face): a curve whose
+ * every step fails, this near a bound it heads across, has left there (a
+ * step landed on the bound itself) */
+#define IC_TRACE_EDGE_REL 1e-9
+
 /* units in the last place of L: how well a located tangential point's place
  * is known at best (the locator stops at steps of 1e-15 of the unknowns'
  * size); coefficients a shift this small makes are no contact terms */

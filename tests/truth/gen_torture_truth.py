@@ -71,7 +71,7 @@ STATUS = {
     "cut-open-sphere": "pass",
     "cut-open-torus": "pass",
     "tangent-cylinder-plane-box": "pass",
-    "tangent-sphere-cylinder-domain": "known-failure: arc length 1.99999997859582 (1.1e-8 short), 3 extra points (a cusp at an end of the arc), complete 0 (the sphere primitive has no interval evaluation)",
+    "tangent-sphere-cylinder-domain": "pass",
     "tangent-sphere-cylinder-box": "pass",
     "eggcrate-k10": "pass",
     "eggcrate-k100": "known-failure: benchmark only (bench/bench_torture.c)",

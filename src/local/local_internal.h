@@ -4,6 +4,7 @@
 
 #include "intercurve/jet.h"
 #include "intercurve/local.h"
+#include "pairing/pairing.h"
 
 struct ic_pair {
     ic_surface *s[2];      /* A, B (B = A for a self-intersection) */
@@ -14,7 +15,11 @@ struct ic_pair {
     ic_jet_space *curve[IC_LOCAL_MAX_ORDER + 1];
     ic_jet_space *tensor[2]; /* [0]: 2 variables, [1]: 3 variables */
     ic_jet_space *near[2];
+    ic_pairing pairing; /* what differs between the kinds of pair */
 };
+
+/* The pair's pairing (pairing/pairing.h), built with it. */
+const ic_pairing *ic_pair_pairing(const ic_pair *pair);
 
 /* One sheet of the pair at the point: its geometry and derivatives to
  * order 4 (parametric: 3 jets of 15 coefficients over (u, v); implicit: one

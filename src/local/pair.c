@@ -70,6 +70,8 @@ ic_status ic_pair_new(ic_pair **out, ic_surface *A, ic_surface *B, ic_error *err
     ic_status st = IC_OK;
     for (int k = 0; k <= IC_LOCAL_MAX_ORDER && st == IC_OK; k++)
         st = ic_jet_space_new(&p->curve[k], 1, k, err);
+    if (st == IC_OK)
+        st = ic_pairing_init(&p->pairing, p->s[0], p->s[1], p->self, err);
     for (int k = 0; k < 2 && st == IC_OK; k++) {
         st = ic_jet_space_new(&p->tensor[k], 2 + k, 4, err);
         if (st == IC_OK)
@@ -93,10 +95,12 @@ void ic_pair_free(ic_pair *p)
         ic_jet_space_free(p->tensor[k]);
         ic_jet_space_free(p->near[k]);
     }
+    ic_pairing_release(&p->pairing);
     free(p);
 }
 
 int ic_pair_is_self(const ic_pair *p) { return p->self; }
+const ic_pairing *ic_pair_pairing(const ic_pair *p) { return &p->pairing; }
 ic_surface *ic_pair_surface(const ic_pair *p, int which) { return p->s[which ? 1 : 0]; }
 
 ic_status ic_sheet_at(ic_pair *pair, ic_sheet *sh, int which, const ic_local_point *pt,

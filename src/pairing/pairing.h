@@ -1,0 +1,95 @@
+/*
+ * The pairing of two surfaces (docs/architecture.md, "Pairings"): what
+ * differs between implicit/implicit, parametric/implicit, two parametric
+ * surfaces and a self-intersection, behind one interface built once per
+ * pair, in the spirit of GSL's solver types: a table of operations per kind
+ * and the state they share. The search for start points (trace/search.c)
+ * works on the kind's search space through it alone.
+ *
+ * The search space: (x, y, z) over the box for two implicit surfaces,
+ * (u, v) of the parametric sheet for a parametric/implicit pair, (u, v, p, q)
+ * for two parametric sheets (A's (u, v), B's (p, q)).
+ */
+#ifndef IC_PAIRING_H
+#define IC_PAIRING_H
+
+#include "intercurve/expr.h"
+#include "intercurve/jet.h"
+#include "intercurve/surface.h"
+
+typedef struct ic_pairing ic_pairing;
+
+typedef struct {
+    const char *name; /* "implicit/implicit", ... */
+    int dim;          /* the search space's dimension: 3, 2 or 4 */
+    /* The search region (lo, hi, and which coordinates are periodic): the
+     * box, or the parametric sheets' domains, which must be finite. */
+    ic_status (*region)(const ic_pairing *p, const double box[3][2], int has_box, double *lo,
+                        double *hi, int *periodic, ic_error *err);
+    /* 1 when both surfaces can be enclosed over the cell (interval
+     * evaluation exists for them). */
+    int (*enclosable)(const ic_pairing *p, const double *lo, const double *hi);
+    /* 1 when interval arithmetic proves that the cell holds no point of
+     * both surfaces (an enclosure that failed excludes nothing). */
+    int (*excluded)(const ic_pairing *p, const double *lo, const double *hi);
+    /* 1 when an enclosure over the cell is unbounded (overflow, a pole). */
+    int (*overflows)(const ic_pairing *p, const double *lo, const double *hi);
+    /* Min-norm Newton onto the intersection from z (search coordinates,
+     * updated); xyz receives the point. 0 when it converged with both
+     * distances below accept (a length). */
+    int (*newton)(const ic_pairing *p, double accept_rel, double L, double *z, double *xyz);
+    /* The sheets' parameters of search coordinates z (implicit sheets'
+     * entries untouched). */
+    void (*unflatten)(const ic_pairing *p, const double *z, double params[2][2]);
+    /* The cell's place in space: its centre's point and parameters and a
+     * radius covering the cell; radius 0 where it cannot be placed. */
+    void (*place)(const ic_pairing *p, const double *lo, const double *hi, double xyz[3],
+                  double params[2][2], double *radius);
+    /* Self-intersections only (else NULL): 1 when the cell can hold no pair
+     * of distinct preimages worth a start point (one sheet pair per curve,
+     * and away from the trivial diagonal by `band`, a parameter width). */
+    int (*skip)(const ic_pairing *p, const double *lo, const double *hi, int leaf,
+                const double band[2]);
+    /* Self-intersections only (else NULL): 1 when the preimages of z are
+     * distinct (farther apart than `band`). */
+    int (*distinct)(const ic_pairing *p, const double *z, const double band[2]);
+} ic_pairing_kind;
+
+struct ic_pairing {
+    const ic_pairing_kind *kind;
+    ic_surface *S[2];
+    int par[2];    /* which sheets are parametric (the loop tests' interface) */
+    int P, I;      /* parametric/implicit: the parametric and the implicit sheet */
+    ic_jet_space *sp2, *sp3; /* first-order jets over (u, v) and (x, y, z) */
+};
+
+/* Builds the pairing of A and B (self: B is A, a self-intersection). */
+ic_status ic_pairing_init(ic_pairing *p, ic_surface *A, ic_surface *B, int self, ic_error *err);
+void ic_pairing_release(ic_pairing *p);
+
+/* The kinds (pairing_implicit.c, pairing_mixed.c, pairing_params.c,
+ * pairing_self.c). */
+extern const ic_pairing_kind ic_pairing_implicit;
+extern const ic_pairing_kind ic_pairing_mixed;
+extern const ic_pairing_kind ic_pairing_params;
+extern const ic_pairing_kind ic_pairing_self;
+
+/* Shared by the kinds (pairing.c). */
+int ic_pairing_excludes_zero(ic_interval a);
+int ic_pairing_unbounded(ic_interval a);
+/* f and grad f of an implicit surface, both divided by the largest
+ * component of grad f (the same zero set; squares of gradients near
+ * overflow stay finite). 0, or -1 where it cannot be evaluated. */
+int ic_pairing_value_grad(ic_surface *s, const ic_jet_space *sp, const double *x, double *f,
+                          double *g);
+/* The domain of parametric sheet s as a box, which must be finite. */
+ic_status ic_pairing_domain_box(const ic_pairing *p, int s, double lo[2], double hi[2],
+                                int periodic[2], ic_error *err);
+/* A parametric sheet's point and covering radius over a (u, v) cell. */
+void ic_pairing_place_sheet(const ic_pairing *p, int s, const double *lo, const double *hi,
+                            double xyz[3], double *radius);
+/* Both sheets' enclosures over a cell of the full space (each sheet's own
+ * coordinates at offset); 1 when both exist. */
+int ic_pairing_enclose_sheet(const ic_pairing *p, int s, const ic_interval *in, ic_interval *out);
+
+#endif

@@ -1,0 +1,102 @@
+/* Two implicit surfaces f_A = f_B = 0, searched over the box (x, y, z). */
+#include "pairing.h"
+#include "common/vec3.h"
+
+#include <math.h>
+#include <string.h>
+
+static ic_status region(const ic_pairing *p, const double box[3][2], int has_box, double *lo,
+                        double *hi, int *periodic, ic_error *err)
+{
+    (void)p;
+    if (!has_box)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "tracing two implicit surfaces needs a \"box\"");
+    for (int k = 0; k < 3; k++) {
+        lo[k] = box[k][0], hi[k] = box[k][1], periodic[k] = 0;
+        if (!isfinite(hi[k] - lo[k]) || !(hi[k] > lo[k]))
+            return ic_error_set(err, IC_ERR_INVALID, 0,
+                                "the box must have finite, increasing bounds");
+    }
+    return IC_OK;
+}
+
+static void to_box(const double *lo, const double *hi, ic_interval *box)
+{
+    for (int k = 0; k < 3; k++)
+        box[k] = (ic_interval){lo[k], hi[k]};
+}
+
+static int enclosable(const ic_pairing *p, const double *lo, const double *hi)
+{
+    ic_interval box[3], f;
+    to_box(lo, hi, box);
+    return ic_pairing_enclose_sheet(p, 0, box, &f) && ic_pairing_enclose_sheet(p, 1, box, &f);
+}
+
+static int excluded(const ic_pairing *p, const double *lo, const double *hi)
+{
+    ic_interval box[3], f;
+    to_box(lo, hi, box);
+    for (int s = 0; s < 2; s++)
+        if (ic_pairing_enclose_sheet(p, s, box, &f) && ic_pairing_excludes_zero(f))
+            return 1;
+    return 0;
+}
+
+static int overflows(const ic_pairing *p, const double *lo, const double *hi)
+{
+    ic_interval box[3], f;
+    to_box(lo, hi, box);
+    for (int s = 0; s < 2; s++)
+        if (!ic_pairing_enclose_sheet(p, s, box, &f) || ic_pairing_unbounded(f))
+            return 1;
+    return 0;
+}
+
+/* Min-norm Newton onto f_A = f_B = 0 from z = x. */
+static int newton(const ic_pairing *p, double accept_rel, double L, double *z, double *xyz)
+{
+    double *x = z;
+    for (int it = 0; it < 40; it++) {
+        double fa, fb, ga[3], gb[3];
+        if (ic_pairing_value_grad(p->S[0], p->sp3, x, &fa, ga) ||
+            ic_pairing_value_grad(p->S[1], p->sp3, x, &fb, gb))
+            return -1;
+        const double a = ic_dot3(ga, ga), b = ic_dot3(ga, gb), c = ic_dot3(gb, gb);
+        const double det = a * c - b * b;
+        if (!(det > 1e-30 * a * c))
+            return -1;
+        const double y0 = (c * fa - b * fb) / det, y1 = (a * fb - b * fa) / det;
+        double step[3];
+        for (int k = 0; k < 3; k++)
+            step[k] = y0 * ga[k] + y1 * gb[k];
+        ic_axpy3(x, x, -1.0, step);
+        memcpy(xyz, x, 3 * sizeof *x);
+        if (ic_norm3(step) <= 1e-15 * (L + ic_norm3(x))) {
+            const double accept = accept_rel * (L + ic_norm3(x));
+            return fabs(fa) / sqrt(a) < accept && fabs(fb) / sqrt(c) < accept ? 0 : -1;
+        }
+    }
+    return -1;
+}
+
+static void unflatten(const ic_pairing *p, const double *z, double params[2][2])
+{
+    (void)p, (void)z, (void)params;
+}
+
+static void place(const ic_pairing *p, const double *lo, const double *hi, double xyz[3],
+                  double params[2][2], double *radius)
+{
+    (void)p, (void)params;
+    double half[3];
+    for (int k = 0; k < 3; k++) {
+        xyz[k] = 0.5 * (lo[k] + hi[k]);
+        half[k] = 0.5 * (hi[k] - lo[k]);
+    }
+    *radius = 2 * ic_norm3(half);
+}
+
+const ic_pairing_kind ic_pairing_implicit = {
+    "implicit/implicit", 3, region, enclosable, excluded, overflows, newton, unflatten, place,
+    NULL, NULL};

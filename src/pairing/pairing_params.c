@@ -1,0 +1,129 @@
+/* Two parametric sheets R_A(u, v) = R_B(p, q), searched over (u, v, p, q)
+ * (a self-intersection adds its own rules, pairing_self.c). */
+#include "pairing.h"
+#include "common/vec3.h"
+
+#include <math.h>
+#include <string.h>
+
+static ic_status region(const ic_pairing *p, const double box[3][2], int has_box, double *lo,
+                        double *hi, int *periodic, ic_error *err)
+{
+    (void)box, (void)has_box;
+    if (ic_pairing_domain_box(p, 0, lo, hi, periodic, err) != IC_OK ||
+        ic_pairing_domain_box(p, 1, lo + 2, hi + 2, periodic + 2, err) != IC_OK)
+        return IC_ERR_INVALID;
+    return IC_OK;
+}
+
+/* Both sheets' enclosures over the cell; 0 where either fails. */
+static int enclose(const ic_pairing *p, const double *lo, const double *hi, ic_interval xa[3],
+                   ic_interval xb[3])
+{
+    const ic_interval ua[2] = {{lo[0], hi[0]}, {lo[1], hi[1]}};
+    const ic_interval ub[2] = {{lo[2], hi[2]}, {lo[3], hi[3]}};
+    return ic_pairing_enclose_sheet(p, 0, ua, xa) && ic_pairing_enclose_sheet(p, 1, ub, xb);
+}
+
+static int enclosable(const ic_pairing *p, const double *lo, const double *hi)
+{
+    ic_interval xa[3], xb[3];
+    return enclose(p, lo, hi, xa, xb);
+}
+
+static int excluded(const ic_pairing *p, const double *lo, const double *hi)
+{
+    ic_interval xa[3], xb[3];
+    if (!enclose(p, lo, hi, xa, xb))
+        return 0;
+    for (int k = 0; k < 3; k++)
+        if (ic_interval_is_empty(xa[k]) || ic_interval_is_empty(xb[k]) || xa[k].hi < xb[k].lo ||
+            xb[k].hi < xa[k].lo)
+            return 1;
+    return 0;
+}
+
+static int overflows(const ic_pairing *p, const double *lo, const double *hi)
+{
+    ic_interval xa[3], xb[3];
+    if (!enclose(p, lo, hi, xa, xb))
+        return 1;
+    for (int k = 0; k < 3; k++)
+        if (ic_pairing_unbounded(xa[k]) || ic_pairing_unbounded(xb[k]))
+            return 1;
+    return 0;
+}
+
+/* One min-norm Newton step on R_A(u, v) - R_B(p, q): step = J^T (J J^T)^-1 F.
+ * Returns its largest component, or -1 where J J^T is singular. */
+static double newton_step(const double F[3], const double J[3][4], double *z)
+{
+    double M[3][3];
+    for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++) {
+            M[a][b] = 0;
+            for (int j = 0; j < 4; j++)
+                M[a][b] += J[a][j] * J[b][j];
+        }
+    const double det = ic_det3(M[0], M[1], M[2]);
+    /* relative: det scales like the sixth power of the problem's size */
+    if (!(fabs(det) > 1e-30 * fabs(M[0][0] * M[1][1] * M[2][2])))
+        return -1;
+    const double c0[3] = {M[0][0], M[1][0], M[2][0]}, c1[3] = {M[0][1], M[1][1], M[2][1]},
+                 c2[3] = {M[0][2], M[1][2], M[2][2]};
+    const double y[3] = {ic_det3(F, c1, c2) / det, ic_det3(c0, F, c2) / det,
+                         ic_det3(c0, c1, F) / det};
+    double size = 0;
+    for (int j = 0; j < 4; j++) {
+        const double step = J[0][j] * y[0] + J[1][j] * y[1] + J[2][j] * y[2];
+        z[j] -= step;
+        size = fmax(size, fabs(step));
+    }
+    return size;
+}
+
+/* Min-norm Newton onto R_A(u, v) = R_B(p, q) from z = (u, v, p, q). */
+static int newton(const ic_pairing *p, double accept_rel, double L, double *z, double *xyz)
+{
+    for (int it = 0; it < 40; it++) {
+        double ta[9], tb[9];
+        if (ic_surface_taylor(p->S[0], ta, z, p->sp2, NULL) ||
+            ic_surface_taylor(p->S[1], tb, z + 2, p->sp2, NULL))
+            return -1;
+        double F[3], J[3][4];
+        for (int k = 0; k < 3; k++) {
+            F[k] = ta[3 * k] - tb[3 * k];
+            J[k][0] = ta[3 * k + 1], J[k][1] = ta[3 * k + 2];
+            J[k][2] = -tb[3 * k + 1], J[k][3] = -tb[3 * k + 2];
+        }
+        xyz[0] = ta[0], xyz[1] = ta[3], xyz[2] = ta[6];
+        const double size = newton_step(F, J, z);
+        if (size < 0)
+            return -1;
+        if (size <= 1e-15 * (1 + fabs(z[0]) + fabs(z[1]) + fabs(z[2]) + fabs(z[3])))
+            return ic_norm3(F) < accept_rel * (L + ic_norm3(xyz)) ? 0 : -1;
+    }
+    return -1;
+}
+
+static void unflatten(const ic_pairing *p, const double *z, double params[2][2])
+{
+    (void)p;
+    params[0][0] = z[0], params[0][1] = z[1];
+    params[1][0] = z[2], params[1][1] = z[3];
+}
+
+static void place(const ic_pairing *p, const double *lo, const double *hi, double xyz[3],
+                  double params[2][2], double *radius)
+{
+    double c[4];
+    for (int k = 0; k < 4; k++)
+        c[k] = 0.5 * (lo[k] + hi[k]);
+    unflatten(p, c, params);
+    ic_pairing_place_sheet(p, 0, lo, hi, xyz, radius);
+}
+
+const ic_pairing_kind ic_pairing_params = {
+    "parametric/parametric", 4, region, enclosable, excluded, overflows, newton, unflatten, place,
+    NULL, NULL};
+

@@ -1,0 +1,65 @@
+/* A self-intersection R(u, v) = R(p, q) with (u, v) != (p, q): two
+ * parametric sheets of one surface (pairing_params.c), with one sheet pair
+ * per curve ((u, v) before (p, q)) and the trivial diagonal (u, v) = (p, q),
+ * a whole surface of solutions, kept away from. */
+#include "pairing.h"
+
+#include <math.h>
+
+/* One sheet pair per curve, and away from the diagonal by `band` (two leaf
+ * widths of the first search: the band does not shrink with refinement). */
+static int skip(const ic_pairing *p, const double *lo, const double *hi, int leaf,
+                const double band[2])
+{
+    (void)p;
+    return lo[0] > hi[2] ||
+           (leaf && hi[0] >= lo[2] - band[0] && lo[0] <= hi[2] + band[0] &&
+            hi[1] >= lo[3] - band[1] && lo[1] <= hi[3] + band[1]);
+}
+
+static int distinct(const ic_pairing *p, const double *z, const double band[2])
+{
+    (void)p;
+    return fabs(z[0] - z[2]) + fabs(z[1] - z[3]) > 2 * (band[0] + band[1]);
+}
+
+static ic_status region(const ic_pairing *p, const double box[3][2], int has_box, double *lo,
+                        double *hi, int *periodic, ic_error *err)
+{
+    return ic_pairing_params.region(p, box, has_box, lo, hi, periodic, err);
+}
+
+static int enclosable(const ic_pairing *p, const double *lo, const double *hi)
+{
+    return ic_pairing_params.enclosable(p, lo, hi);
+}
+
+static int excluded(const ic_pairing *p, const double *lo, const double *hi)
+{
+    return ic_pairing_params.excluded(p, lo, hi);
+}
+
+static int overflows(const ic_pairing *p, const double *lo, const double *hi)
+{
+    return ic_pairing_params.overflows(p, lo, hi);
+}
+
+static int newton(const ic_pairing *p, double accept_rel, double L, double *z, double *xyz)
+{
+    return ic_pairing_params.newton(p, accept_rel, L, z, xyz);
+}
+
+static void unflatten(const ic_pairing *p, const double *z, double params[2][2])
+{
+    ic_pairing_params.unflatten(p, z, params);
+}
+
+static void place(const ic_pairing *p, const double *lo, const double *hi, double xyz[3],
+                  double params[2][2], double *radius)
+{
+    ic_pairing_params.place(p, lo, hi, xyz, params, radius);
+}
+
+const ic_pairing_kind ic_pairing_self = {
+    "self-intersection", 4, region, enclosable, excluded, overflows, newton, unflatten, place,
+    skip, distinct};

@@ -1,4 +1,4 @@
-/* The loop test of the search (src/trace/loops.c): sound (a cell holding a
+/* The loop test of the search (the pairings' loop_free, src/pairing/): sound (a cell holding a
  * closed intersection curve is never declared loop-free, in every pairing,
  * for random small loops) and useful (cells crossed by a transversal arc
  * away from tangency are proven loop-free); a loop missed by the search at
@@ -10,6 +10,7 @@
 #include "harness.h"
 #include "intercurve.h"
 #include "trace/trace_internal.h"
+#include "pairing/pairing.h"
 #include "traced_example.h"
 
 /* A sphere of radius r about c (implicit formula, or primitive when prim). */
@@ -82,8 +83,13 @@ static void test_soundness(harness_rng *rng)
             ic_surface_free(B);
             continue;
         }
-        ic_surface *S[2] = {A, B};
-        const int par0 = pairing == 3, par1 = pairing >= 2;
+        ic_pairing pg;
+        if (ic_pairing_init(&pg, A, B, 0, NULL) != IC_OK) {
+            CHECK(0, "pairing for trial %d", k);
+            ic_surface_free(A);
+            ic_surface_free(B);
+            continue;
+        }
         double lo[4], hi[4];
         const double m = harness_uniform(rng, 1.01, 3.0); /* margin factor */
         if (pairing <= 1) {                               /* the box around the circle */
@@ -101,7 +107,7 @@ static void test_soundness(harness_rng *rng)
                 lo[2 + i] = c[i] - m * rho, hi[2 + i] = c[i] + m * rho;
         }
         trials++;
-        CHECK(!ic_trace_cell_loop_free(S, par0, par1, lo, hi),
+        CHECK(!pg.kind->loop_free(&pg, lo, hi),
               "pairing %d, trial %d: a cell holding a circle of radius %g declared loop-free",
               pairing, k, rho);
         /* beside the rightmost point (c + rho e_x): a cell of a tenth of rho */
@@ -110,14 +116,15 @@ static void test_soundness(harness_rng *rng)
             const double blo[3] = {x0 - s, c[1] - s, c[2] + dz - s};
             const double bhi[3] = {x0 + s, c[1] + s, c[2] + dz + s};
             tries++;
-            useful += ic_trace_cell_loop_free(S, par0, par1, blo, bhi);
+            useful += pg.kind->loop_free(&pg, blo, bhi);
         } else { /* longitude 0 at the circle's latitude, and the plane beside it */
             const double lat = asin(dz / r);
             const double blo[4] = {-0.05, lat - 0.05, x0 - s, c[1] - s};
             const double bhi[4] = {0.05, lat + 0.05, x0 + s, c[1] + s};
             tries++;
-            useful += ic_trace_cell_loop_free(S, par0, par1, blo, bhi);
+            useful += pg.kind->loop_free(&pg, blo, bhi);
         }
+        ic_pairing_release(&pg);
         ic_surface_free(A);
         ic_surface_free(B);
     }

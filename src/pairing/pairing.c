@@ -108,3 +108,21 @@ void ic_pairing_place_sheet(const ic_pairing *p, int s, const double *lo, const 
     const double r = 2 * ic_norm3(half);
     *radius = isfinite(r) && isfinite(ic_norm3(xyz)) ? r : 0.0;
 }
+
+/* The box around the point: `rel` of each parametric coordinate's domain
+ * width (the kind's search region) on either side. */
+int ic_pairing_point_may_degenerate(const ic_pairing *p, const double xyz[3],
+                                    const double params[2][2], double rel)
+{
+    double z[4], lo[4], hi[4], dlo[4], dhi[4];
+    int periodic[4];
+    const double box[3][2] = {{xyz[0], xyz[0]}, {xyz[1], xyz[1]}, {xyz[2], xyz[2]}};
+    if (p->kind->region(p, box, 1, dlo, dhi, periodic, NULL) != IC_OK)
+        return 0;
+    p->kind->flatten(p, xyz, params, z);
+    for (int k = 0; k < p->kind->dim; k++) {
+        const double half = rel * (dhi[k] - dlo[k]);
+        lo[k] = z[k] - half, hi[k] = z[k] + half;
+    }
+    return p->kind->may_degenerate(p, lo, hi);
+}

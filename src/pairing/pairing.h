@@ -41,10 +41,23 @@ typedef struct {
     /* The sheets' parameters of search coordinates z (implicit sheets'
      * entries untouched). */
     void (*unflatten)(const ic_pairing *p, const double *z, double params[2][2]);
+    /* The search coordinates of a point: its parameters, or (x, y, z) for
+     * two implicit surfaces. */
+    void (*flatten)(const ic_pairing *p, const double xyz[3], const double params[2][2],
+                    double *z);
     /* The cell's place in space: its centre's point and parameters and a
      * radius covering the cell; radius 0 where it cannot be placed. */
     void (*place)(const ic_pairing *p, const double *lo, const double *hi, double xyz[3],
                   double params[2][2], double *radius);
+    /* 1 when the cell, as given, is proven to hold no closed intersection
+     * curve wholly inside it (the loop test, pairing_intervals.c). */
+    int (*loop_free)(const ic_pairing *p, const double *lo, const double *hi);
+    /* 1 when centred forms prove the cell holds no common point: they
+     * separate surfaces closer than a cell's plain enclosure can tell. */
+    int (*excluded_centred)(const ic_pairing *p, const double *lo, const double *hi);
+    /* 1 when the normal R_u x R_v of a parametric sheet may vanish over the
+     * cell (a pole, a pinch point: the loop test cannot succeed there). */
+    int (*may_degenerate)(const ic_pairing *p, const double *lo, const double *hi);
     /* Self-intersections only (else NULL): 1 when the cell can hold no pair
      * of distinct preimages worth a start point (one sheet pair per curve,
      * and away from the trivial diagonal by `band`, a parameter width). */
@@ -62,6 +75,11 @@ struct ic_pairing {
     int P, I;      /* parametric/implicit: the parametric and the implicit sheet */
     ic_jet_space *sp2, *sp3; /* first-order jets over (u, v) and (x, y, z) */
 };
+
+/* 1 when a parametric sheet's normal may vanish within `rel` of its
+ * domain's widths around the point's parameters (a pole, a pinch point). */
+int ic_pairing_point_may_degenerate(const ic_pairing *p, const double xyz[3],
+                                    const double params[2][2], double rel);
 
 /* Builds the pairing of A and B (self: B is A, a self-intersection). */
 ic_status ic_pairing_init(ic_pairing *p, ic_surface *A, ic_surface *B, int self, ic_error *err);
@@ -91,5 +109,20 @@ void ic_pairing_place_sheet(const ic_pairing *p, int s, const double *lo, const 
 /* Both sheets' enclosures over a cell of the full space (each sheet's own
  * coordinates at offset); 1 when both exist. */
 int ic_pairing_enclose_sheet(const ic_pairing *p, int s, const ic_interval *in, ic_interval *out);
+
+/* Interval pieces of the proofs (pairing_intervals.c). */
+ic_interval ic_pairing_point(double x);
+ic_interval ic_pairing_mid(ic_interval a);
+void ic_pairing_cross(ic_interval *c, const ic_interval *a, const ic_interval *b);
+/* Does T . v keep one sign over the cell for some fixed v? */
+int ic_pairing_one_sided(const ic_interval *T);
+/* The normal R_u x R_v of a parametric sheet over a (u, v) box; 0 where it
+ * has no enclosure. */
+int ic_pairing_param_normal(ic_surface *s, const double *lo, const double *hi, ic_interval *N);
+/* 1 when a parametric sheet's R_u x R_v may vanish over the (u, v) box. */
+int ic_pairing_sheet_may_degenerate(ic_surface *s, const double *lo, const double *hi);
+/* h(c) + sum_k G[k] (X_k - c_k) excludes 0 over the n-dimensional cell? */
+int ic_pairing_centred_excludes(ic_interval hc, const ic_interval *G, const double *lo,
+                                const double *hi, int n);
 
 #endif

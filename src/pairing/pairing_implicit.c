@@ -85,6 +85,13 @@ static void unflatten(const ic_pairing *p, const double *z, double params[2][2])
     (void)p, (void)z, (void)params;
 }
 
+static void flatten(const ic_pairing *p, const double xyz[3], const double params[2][2],
+                    double *z)
+{
+    (void)p, (void)params;
+    memcpy(z, xyz, 3 * sizeof *z);
+}
+
 static void place(const ic_pairing *p, const double *lo, const double *hi, double xyz[3],
                   double params[2][2], double *radius)
 {
@@ -97,6 +104,69 @@ static void place(const ic_pairing *p, const double *lo, const double *hi, doubl
     *radius = 2 * ic_norm3(half);
 }
 
+/* The tangent cone T = grad f_A x grad f_B over the box. */
+static int loop_free(const ic_pairing *p, const double *lo, const double *hi)
+{
+    ic_interval box[3], T[3];
+    to_box(lo, hi, box);
+    ic_interval_grad fa, fb;
+    if (ic_surface_eval_interval_grad(p->S[0], &fa, box, NULL) != IC_OK ||
+        ic_surface_eval_interval_grad(p->S[1], &fb, box, NULL) != IC_OK)
+        return 0;
+    ic_pairing_cross(T, fa.d, fb.d);
+    return ic_pairing_one_sided(T);
+}
+
+/* Centred forms of f_A, f_B and f_B - mu f_A, mu making the combination's
+ * gradient small at the centre (any common zero is a zero of it). */
+static int excluded_centred(const ic_pairing *p, const double *lo, const double *hi)
+{
+    ic_interval box[3], cbox[3];
+    to_box(lo, hi, box);
+    for (int k = 0; k < 3; k++)
+        cbox[k] = ic_pairing_point(0.5 * (lo[k] + hi[k]));
+    ic_interval_grad f[2], fc[2];
+    for (int s = 0; s < 2; s++)
+        if (ic_surface_eval_interval_grad(p->S[s], &f[s], box, NULL) != IC_OK ||
+            ic_surface_eval_interval_grad(p->S[s], &fc[s], cbox, NULL) != IC_OK)
+            return 0;
+    for (int s = 0; s < 2; s++)
+        if (ic_pairing_centred_excludes(fc[s].v, f[s].d, lo, hi, 3))
+            return 1;
+    /* mu = grad f_B . grad f_A / |grad f_A|^2 at the centre */
+    double ab = 0, aa = 0;
+    for (int k = 0; k < 3; k++) {
+        const double ga = ic_pairing_mid(fc[0].d[k]).lo, gb = ic_pairing_mid(fc[1].d[k]).lo;
+        ab += ga * gb, aa += ga * ga;
+    }
+    if (!(aa > 0) || !isfinite(ab / aa))
+        return 0;
+    const ic_interval mu = ic_pairing_point(ab / aa);
+    ic_interval G[3];
+    for (int k = 0; k < 3; k++)
+        G[k] = ic_interval_sub(f[1].d[k], ic_interval_mul(mu, f[0].d[k]));
+    const ic_interval hc = ic_interval_sub(fc[1].v, ic_interval_mul(mu, fc[0].v));
+    return ic_pairing_centred_excludes(hc, G, lo, hi, 3);
+}
+
+static int may_degenerate(const ic_pairing *p, const double *lo, const double *hi)
+{
+    (void)p, (void)lo, (void)hi;
+    return 0; /* no parametrization */
+}
+
 const ic_pairing_kind ic_pairing_implicit = {
-    "implicit/implicit", 3, region, enclosable, excluded, overflows, newton, unflatten, place,
-    NULL, NULL};
+    .name = "implicit/implicit",
+    .dim = 3,
+    .region = region,
+    .enclosable = enclosable,
+    .excluded = excluded,
+    .overflows = overflows,
+    .newton = newton,
+    .unflatten = unflatten,
+    .flatten = flatten,
+    .place = place,
+    .loop_free = loop_free,
+    .excluded_centred = excluded_centred,
+    .may_degenerate = may_degenerate,
+};

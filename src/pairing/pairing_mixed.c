@@ -73,6 +73,13 @@ static void unflatten(const ic_pairing *p, const double *z, double params[2][2])
     params[p->P][0] = z[0], params[p->P][1] = z[1];
 }
 
+static void flatten(const ic_pairing *p, const double xyz[3], const double params[2][2],
+                    double *z)
+{
+    (void)xyz;
+    z[0] = params[p->P][0], z[1] = params[p->P][1];
+}
+
 static void place(const ic_pairing *p, const double *lo, const double *hi, double xyz[3],
                   double params[2][2], double *radius)
 {
@@ -81,6 +88,71 @@ static void place(const ic_pairing *p, const double *lo, const double *hi, doubl
     ic_pairing_place_sheet(p, p->P, lo, hi, xyz, radius);
 }
 
+/* R and grad f over the cell (f at R's enclosure); 0 where either fails. */
+static int enclose_grad(const ic_pairing *p, const ic_interval box[2], ic_interval_grad R[3],
+                        ic_interval_grad *f)
+{
+    if (ic_surface_eval_interval_grad(p->S[p->P], R, box, NULL) != IC_OK)
+        return 0;
+    const ic_interval X[3] = {R[0].v, R[1].v, R[2].v};
+    return ic_surface_eval_interval_grad(p->S[p->I], f, X, NULL) == IC_OK;
+}
+
+/* F_j = grad f(R) . R_j, the partial derivatives of F = f(R(u, v)). */
+static void partials(const ic_interval_grad R[3], const ic_interval_grad *f, ic_interval G[2])
+{
+    for (int j = 0; j < 2; j++) {
+        G[j] = ic_pairing_point(0.0);
+        for (int i = 0; i < 3; i++)
+            G[j] = ic_interval_add(G[j], ic_interval_mul(f->d[i], R[i].d[j]));
+    }
+}
+
+/* The curve is the zero set of F = f(R(u, v)); a closed one bounds a disc
+ * in the (convex) cell on whose interior F has an extremum, where
+ * grad F = 0: if F_u or F_v keeps one sign over the cell, there is none. */
+static int loop_free(const ic_pairing *p, const double *lo, const double *hi)
+{
+    const ic_interval box[2] = {{lo[0], hi[0]}, {lo[1], hi[1]}};
+    ic_interval_grad R[3], f;
+    ic_interval G[2];
+    if (!enclose_grad(p, box, R, &f))
+        return 0;
+    partials(R, &f, G);
+    return ic_pairing_excludes_zero(G[0]) || ic_pairing_excludes_zero(G[1]);
+}
+
+/* The centred form of F = f(R(u, v)). */
+static int excluded_centred(const ic_pairing *p, const double *lo, const double *hi)
+{
+    const ic_interval box[2] = {{lo[0], hi[0]}, {lo[1], hi[1]}};
+    const ic_interval cbox[2] = {ic_pairing_point(0.5 * (lo[0] + hi[0])),
+                                 ic_pairing_point(0.5 * (lo[1] + hi[1]))};
+    ic_interval_grad R[3], Rc[3], f, fc;
+    if (!enclose_grad(p, box, R, &f) || !enclose_grad(p, cbox, Rc, &fc))
+        return 0;
+    ic_interval G[2];
+    partials(R, &f, G);
+    return ic_pairing_centred_excludes(fc.v, G, lo, hi, 2);
+}
+
+static int may_degenerate(const ic_pairing *p, const double *lo, const double *hi)
+{
+    return ic_pairing_sheet_may_degenerate(p->S[p->P], lo, hi);
+}
+
 const ic_pairing_kind ic_pairing_mixed = {
-    "parametric/implicit", 2, region, enclosable, excluded, overflows, newton, unflatten, place,
-    NULL, NULL};
+    .name = "parametric/implicit",
+    .dim = 2,
+    .region = region,
+    .enclosable = enclosable,
+    .excluded = excluded,
+    .overflows = overflows,
+    .newton = newton,
+    .unflatten = unflatten,
+    .flatten = flatten,
+    .place = place,
+    .loop_free = loop_free,
+    .excluded_centred = excluded_centred,
+    .may_degenerate = may_degenerate,
+};

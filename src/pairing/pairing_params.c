@@ -113,6 +113,14 @@ static void unflatten(const ic_pairing *p, const double *z, double params[2][2])
     params[1][0] = z[2], params[1][1] = z[3];
 }
 
+static void flatten(const ic_pairing *p, const double xyz[3], const double params[2][2],
+                    double *z)
+{
+    (void)p, (void)xyz;
+    z[0] = params[0][0], z[1] = params[0][1];
+    z[2] = params[1][0], z[3] = params[1][1];
+}
+
 static void place(const ic_pairing *p, const double *lo, const double *hi, double xyz[3],
                   double params[2][2], double *radius)
 {
@@ -123,7 +131,87 @@ static void place(const ic_pairing *p, const double *lo, const double *hi, doubl
     ic_pairing_place_sheet(p, 0, lo, hi, xyz, radius);
 }
 
-const ic_pairing_kind ic_pairing_params = {
-    "parametric/parametric", 4, region, enclosable, excluded, overflows, newton, unflatten, place,
-    NULL, NULL};
+/* The tangent cone T = N_A x N_B over (u, v) x (p, q). */
+static int loop_free(const ic_pairing *p, const double *lo, const double *hi)
+{
+    ic_interval NA[3], NB[3], T[3];
+    if (!ic_pairing_param_normal(p->S[0], lo, hi, NA) ||
+        !ic_pairing_param_normal(p->S[1], lo + 2, hi + 2, NB))
+        return 0;
+    ic_pairing_cross(T, NA, NB);
+    return ic_pairing_one_sided(T);
+}
 
+/* N . D over the cell, N = R_u x R_v of A at the centre (midpoints), D and
+ * its gradient G given: the distance along the normal, which separates
+ * sheets that touch. */
+static int normal_component_excludes(const ic_interval_grad Rc[3], const ic_interval Dc[3],
+                                     const ic_interval G[3][4], const double *lo,
+                                     const double *hi)
+{
+    double Ru[3], Rv[3], N[3];
+    for (int i = 0; i < 3; i++)
+        Ru[i] = ic_pairing_mid(Rc[i].d[0]).lo, Rv[i] = ic_pairing_mid(Rc[i].d[1]).lo;
+    N[0] = Ru[1] * Rv[2] - Ru[2] * Rv[1];
+    N[1] = Ru[2] * Rv[0] - Ru[0] * Rv[2];
+    N[2] = Ru[0] * Rv[1] - Ru[1] * Rv[0];
+    if (!isfinite(N[0] + N[1] + N[2]))
+        return 0;
+    ic_interval hc = ic_pairing_point(0.0), H[4];
+    for (int k = 0; k < 4; k++)
+        H[k] = ic_pairing_point(0.0);
+    for (int i = 0; i < 3; i++) {
+        hc = ic_interval_add(hc, ic_interval_mul(ic_pairing_point(N[i]), Dc[i]));
+        for (int k = 0; k < 4; k++)
+            H[k] = ic_interval_add(H[k], ic_interval_mul(ic_pairing_point(N[i]), G[i][k]));
+    }
+    return ic_pairing_centred_excludes(hc, H, lo, hi, 4);
+}
+
+/* Centred forms of the components of D = R_A(u, v) - R_B(p, q) and of
+ * N . D. */
+static int excluded_centred(const ic_pairing *p, const double *lo, const double *hi)
+{
+    ic_interval_grad R[2][3], Rc[2][3];
+    for (int s = 0; s < 2; s++) {
+        const double *l = lo + 2 * s, *h = hi + 2 * s;
+        const ic_interval box[2] = {{l[0], h[0]}, {l[1], h[1]}};
+        const ic_interval cbox[2] = {ic_pairing_point(0.5 * (l[0] + h[0])),
+                                     ic_pairing_point(0.5 * (l[1] + h[1]))};
+        if (ic_surface_eval_interval_grad(p->S[s], R[s], box, NULL) != IC_OK ||
+            ic_surface_eval_interval_grad(p->S[s], Rc[s], cbox, NULL) != IC_OK)
+            return 0;
+    }
+    /* D's gradient: (R_A,u, R_A,v, -R_B,p, -R_B,q) */
+    ic_interval G[3][4], Dc[3];
+    for (int i = 0; i < 3; i++) {
+        Dc[i] = ic_interval_sub(Rc[0][i].v, Rc[1][i].v);
+        G[i][0] = R[0][i].d[0], G[i][1] = R[0][i].d[1];
+        G[i][2] = ic_interval_neg(R[1][i].d[0]), G[i][3] = ic_interval_neg(R[1][i].d[1]);
+        if (ic_pairing_centred_excludes(Dc[i], G[i], lo, hi, 4))
+            return 1;
+    }
+    return normal_component_excludes(Rc[0], Dc, G, lo, hi);
+}
+
+static int may_degenerate(const ic_pairing *p, const double *lo, const double *hi)
+{
+    return ic_pairing_sheet_may_degenerate(p->S[0], lo, hi) ||
+           ic_pairing_sheet_may_degenerate(p->S[1], lo + 2, hi + 2);
+}
+
+const ic_pairing_kind ic_pairing_params = {
+    .name = "parametric/parametric",
+    .dim = 4,
+    .region = region,
+    .enclosable = enclosable,
+    .excluded = excluded,
+    .overflows = overflows,
+    .newton = newton,
+    .unflatten = unflatten,
+    .flatten = flatten,
+    .place = place,
+    .loop_free = loop_free,
+    .excluded_centred = excluded_centred,
+    .may_degenerate = may_degenerate,
+};

@@ -54,12 +54,47 @@ static void unflatten(const ic_pairing *p, const double *z, double params[2][2])
     ic_pairing_params.unflatten(p, z, params);
 }
 
+static void flatten(const ic_pairing *p, const double xyz[3], const double params[2][2],
+                    double *z)
+{
+    ic_pairing_params.flatten(p, xyz, params, z);
+}
+
 static void place(const ic_pairing *p, const double *lo, const double *hi, double xyz[3],
                   double params[2][2], double *radius)
 {
     ic_pairing_params.place(p, lo, hi, xyz, params, radius);
 }
 
+static int loop_free(const ic_pairing *p, const double *lo, const double *hi)
+{
+    return ic_pairing_params.loop_free(p, lo, hi);
+}
+
+static int excluded_centred(const ic_pairing *p, const double *lo, const double *hi)
+{
+    return ic_pairing_params.excluded_centred(p, lo, hi);
+}
+
+static int may_degenerate(const ic_pairing *p, const double *lo, const double *hi)
+{
+    return ic_pairing_params.may_degenerate(p, lo, hi);
+}
+
 const ic_pairing_kind ic_pairing_self = {
-    "self-intersection", 4, region, enclosable, excluded, overflows, newton, unflatten, place,
-    skip, distinct};
+    .name = "self-intersection",
+    .dim = 4,
+    .region = region,
+    .enclosable = enclosable,
+    .excluded = excluded,
+    .overflows = overflows,
+    .newton = newton,
+    .unflatten = unflatten,
+    .flatten = flatten,
+    .place = place,
+    .loop_free = loop_free,
+    .excluded_centred = excluded_centred,
+    .may_degenerate = may_degenerate,
+    .skip = skip,
+    .distinct = distinct,
+};

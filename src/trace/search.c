@@ -5,7 +5,7 @@
  * the pairing's interval test proves empty is dropped. In each remaining
  * leaf the pairing's Newton iteration from the centre looks for a point on
  * both surfaces; a leaf where it finds none may still be proven empty by
- * centred forms (centred.c); every leaf left gets the loop test (loops.c).
+ * centred forms; every leaf left gets the loop test (both the pairing's).
  * With `within`, one leaf is searched again a few levels finer. Surfaces
  * without interval evaluation (callbacks) cannot exclude anything: then the
  * leaves of a coarser grid are sampled and the report says so.
@@ -128,7 +128,7 @@ static int leaf_loop_free(const search_ctx *x, const cell *c)
         if (!x->periodic[k])
             elo[k] = fmax(elo[k], x->lo[k]), ehi[k] = fmin(ehi[k], x->hi[k]);
     }
-    return ic_trace_cell_loop_free(x->S, x->pg->par[0], x->pg->par[1], elo, ehi);
+    return x->kind->loop_free(x->pg, elo, ehi);
 }
 
 typedef struct {
@@ -160,9 +160,8 @@ static int process_leaf(const search_ctx *x, const cell *c, int level, cand_list
     int converged;
     const int ok = leaf_newton(x, c, &cand, &converged);
     /* nothing found: centred forms may still prove the leaf empty (they
-     * separate two surfaces closer than a cell, centred.c) */
-    if (!ok && x->proven &&
-        ic_trace_cell_excluded_centred(x->S, x->pg->par[0], x->pg->par[1], c->lo, c->hi)) {
+     * separate two surfaces closer than a cell) */
+    if (!ok && x->proven && x->kind->excluded_centred(x->pg, c->lo, c->hi)) {
         rep->cells_excluded++;
         rep->cells_excluded_centred++;
         return 0;
@@ -185,8 +184,7 @@ static int process_leaf(const search_ctx *x, const cell *c, int level, cand_list
     u.has_candidate = ok;
     u.level = level;
     u.overflow = x->proven && x->kind->overflows(x->pg, c->lo, c->hi);
-    u.degenerate =
-        loop && ic_trace_cell_may_degenerate(x->S, x->pg->par[0], x->pg->par[1], c->lo, c->hi);
+    u.degenerate = loop && x->kind->may_degenerate(x->pg, c->lo, c->hi);
     describe_cell(x, c, &u);
     return push_unresolved(unres, &u);
 }

@@ -7,6 +7,7 @@
 #include "trace_constants.h"
 #include "trace_internal.h"
 #include "common/vec3.h"
+#include "local/local_internal.h"
 
 #include <float.h>
 #include <math.h>
@@ -238,7 +239,8 @@ ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local
         s->nbranches = loc->res.nbranches;
         if (!approximate)
             check_contact_place(r, s, loc, pair, &o);
-    } else if (ic_trace_point_may_degenerate(pair, pt, IC_TRACE_SINGULAR_CLEARANCE)) {
+    } else if (ic_pairing_point_may_degenerate(ic_pair_pairing(pair), pt->xyz, pt->params,
+                                               IC_TRACE_SINGULAR_CLEARANCE)) {
         /* where the parametrization degenerates (R_u x R_v = 0: the pinch
          * point of Whitney's umbrella) the surface itself is singular; its
          * exact place is not located */
@@ -765,7 +767,7 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
      * open cell is refined until decided; what is left is listed */
     for (int i = 0; st == IC_OK && i < nu && !ic_trace_out_of_time(&r->budget); i++)
         /* a loop-free cell has N_A x N_B != 0 throughout (or grad F != 0):
-         * no tangential point there (loops.c) */
+         * no tangential point there (the pairing's loop test) */
         if ((unres[i].loop || !r->report.proven) && !unres[i].has_candidate &&
             unres[i].radius > 0 && !ic_trace_found_near(r, &unres[i]))
             st = ic_trace_tangential_in_cell(r, tr, pair, &unres[i], opt);

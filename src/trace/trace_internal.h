@@ -22,7 +22,7 @@ typedef struct {
     double params[2][2];
     double radius;           /* 0 when no point of the cell could be evaluated */
     int converged_elsewhere; /* Newton from the centre left the cell */
-    int loop;                /* the loop test failed (loops.c) */
+    int loop;                /* the loop test failed (the pairing's loop_free) */
     int has_candidate;       /* a start point was found in it (a loop cell) */
     int degenerate;          /* R_u x R_v of a parametric sheet may vanish in it */
     int overflow;            /* an enclosure over it is unbounded: not refined */
@@ -198,27 +198,6 @@ ic_status ic_trace_complete_branches(ic_trace_result *r, ic_tracer *tr, ic_pair 
                                      const ic_trace_options *opt);
 ic_status ic_trace_tangential_in_cell(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
                                       const ic_unresolved *u, const ic_trace_options *opt);
-
-/* 1 when the normal cones over the search cell [lo, hi] (the search's
- * coordinates for the pairing: parametric flags par0, par1) prove that no
- * closed intersection curve lies wholly inside it (loops.c). */
-int ic_trace_cell_loop_free(ic_surface *const S[2], int par0, int par1, const double *lo,
-                            const double *hi);
-
-/* 1 when the normal R_u x R_v of a parametric sheet may vanish in the
- * search cell (loops.c). */
-int ic_trace_cell_may_degenerate(ic_surface *const S[2], int par0, int par1, const double *lo,
-                                 const double *hi);
-
-/* 1 when the normal of a parametric sheet may vanish within `rel` of its
- * domain's widths around the point's parameters: a degenerate point of the
- * parametrization (the pinch point of Whitney's umbrella) (loops.c). */
-int ic_trace_point_may_degenerate(ic_pair *pair, const ic_local_point *pt, double rel);
-
-/* 1 when centred forms prove the search cell [lo, hi] holds no point of
- * both surfaces (centred.c). */
-int ic_trace_cell_excluded_centred(ic_surface *const S[2], int par0, int par1, const double *lo,
-                                   const double *hi);
 
 /* Curve points just before a located singular point pts[n] (the curve's
  * end, continued by branch br with orientation sg) where the normals are

@@ -322,107 +322,6 @@ static int solve_small(int n, double A[4][4], double *b, double *x)
     return 1;
 }
 
-/* Residuals and Jacobian of the refinement system at the current point;
- * returns the number of unknowns (2, 3 or 4) and the point X. Implicit
- * equations are divided by |grad f| so every residual is a length. */
-static ic_status refine_system(ic_pair *pair, const ic_local_point *pt, const double *t,
-                               const double *X0, double F[4], double J[4][4], double X[3],
-                               int *nunk, ic_error *err)
-{
-    const int par[2] = {ic_surface_get_kind(pair->s[0]) == IC_PARAMETRIC,
-                        ic_surface_get_kind(pair->s[1]) == IC_PARAMETRIC};
-    double R[2][3], Ru[2][3], Rv[2][3], tmp[3][3];
-    for (int s = 0; s < 2; s++)
-        if (par[s]) {
-            ic_status st = param_eval2(pair, pair->s[s], pt->params[s], R[s], Ru[s], Rv[s], tmp[0],
-                                       tmp[1], tmp[2], err);
-            if (st != IC_OK)
-                return st;
-        }
-    memset(J, 0, 16 * sizeof(double));
-    if (par[0] && par[1]) { /* R_A(u,v) - R_B(p,q) = 0, t . (R_A - X0) = 0 */
-        for (int k = 0; k < 3; k++) {
-            F[k] = R[0][k] - R[1][k];
-            J[k][0] = Ru[0][k], J[k][1] = Rv[0][k];
-            J[k][2] = -Ru[1][k], J[k][3] = -Rv[1][k];
-            X[k] = R[0][k];
-        }
-        double d[3];
-        ic_axpy3(d, R[0], -1.0, X0);
-        F[3] = ic_dot3(t, d);
-        J[3][0] = ic_dot3(t, Ru[0]), J[3][1] = ic_dot3(t, Rv[0]);
-        *nunk = 4;
-        return IC_OK;
-    }
-    if (par[0] || par[1]) { /* f_I(R_P(u,v)) / |grad f| = 0, t . (R_P - X0) = 0 */
-        const int P = par[0] ? 0 : 1, I = 1 - P;
-        double f, grad[3];
-        ic_status st = implicit_eval1(pair, pair->s[I], R[P], &f, grad, err);
-        if (st != IC_OK)
-            return st;
-        const double g = ic_norm3(grad);
-        if (!(g > 0))
-            return ic_error_set(err, IC_ERR_DOMAIN, 0, "grad f = 0 on the intersection");
-        F[0] = f / g;
-        J[0][0] = ic_dot3(grad, Ru[P]) / g, J[0][1] = ic_dot3(grad, Rv[P]) / g;
-        double d[3];
-        ic_axpy3(d, R[P], -1.0, X0);
-        F[1] = ic_dot3(t, d);
-        J[1][0] = ic_dot3(t, Ru[P]), J[1][1] = ic_dot3(t, Rv[P]);
-        memcpy(X, R[P], sizeof R[P]);
-        *nunk = 2;
-        return IC_OK;
-    }
-    /* f_A(X) = 0, f_B(X) = 0, t . (X - X0) = 0 */
-    memcpy(X, pt->xyz, 3 * sizeof *X);
-    for (int s = 0; s < 2; s++) {
-        double f, grad[3];
-        ic_status st = implicit_eval1(pair, pair->s[s], X, &f, grad, err);
-        if (st != IC_OK)
-            return st;
-        const double g = ic_norm3(grad);
-        if (!(g > 0))
-            return ic_error_set(err, IC_ERR_DOMAIN, 0, "grad f = 0 on the intersection");
-        F[s] = f / g;
-        for (int k = 0; k < 3; k++)
-            J[s][k] = grad[k] / g;
-    }
-    double d[3];
-    ic_axpy3(d, X, -1.0, X0);
-    F[2] = ic_dot3(t, d);
-    for (int k = 0; k < 3; k++)
-        J[2][k] = t[k];
-    *nunk = 3;
-    return IC_OK;
-}
-
-/* Applies the Newton step to the unknowns of the point. */
-static void apply_step(ic_pair *pair, ic_local_point *pt, const double *dz, int nunk)
-{
-    const int par[2] = {ic_surface_get_kind(pair->s[0]) == IC_PARAMETRIC,
-                        ic_surface_get_kind(pair->s[1]) == IC_PARAMETRIC};
-    if (nunk == 3) {
-        for (int k = 0; k < 3; k++)
-            pt->xyz[k] -= dz[k];
-        return;
-    }
-    int k = 0;
-    for (int s = 0; s < 2; s++)
-        if (par[s]) {
-            double domain[2][2];
-            int periodic[2];
-            ic_surface_get_domain(pair->s[s], domain, periodic);
-            pt->params[s][0] -= dz[k++];
-            pt->params[s][1] -= dz[k++];
-            for (int i = 0; i < 2; i++) /* periodic: back into the period */
-                if (periodic[i]) {
-                    const double w = domain[i][1] - domain[i][0];
-                    pt->params[s][i] =
-                        domain[i][0] + fmod(fmod(pt->params[s][i] - domain[i][0], w) + w, w);
-                }
-        }
-}
-
 /* Unit normal of sheet `which` at the point. */
 static ic_status sheet_normal(ic_pair *pair, const ic_local_point *pt, int which, double *N,
                               ic_error *err)
@@ -477,31 +376,30 @@ static ic_status refine(ic_pair *pair, ic_local_point *pt, const ic_local_option
     const double sin_angle = ic_normalize3(t);
     if (sin_angle < sin(opt->tangential_angle))
         return residual(pair, pt, opt, err); /* tangential: no plane to refine in */
+    /* Newton over the pairing's search coordinates (pairing/pairing.h) */
+    const ic_pairing *pg = &pair->pairing;
     const double X0[3] = {pt->xyz[0], pt->xyz[1], pt->xyz[2]};
-    double last = INFINITY;
+    double z[4], last = INFINITY;
+    pg->kind->flatten(pg, pt->xyz, pt->params, z);
     for (int it = 0; it < opt->max_newton; it++) {
         double F[4], J[4][4], X[3], dz[4];
-        int nunk;
-        st = refine_system(pair, pt, t, X0, F, J, X, &nunk, err);
+        st = pg->kind->section(pg, z, t, X0, F, J, X, err);
         if (st != IC_OK)
             return st;
-        memcpy(pt->xyz, X, sizeof X);
         double size = 0.0;
-        for (int k = 0; k < nunk; k++)
+        for (int k = 0; k < pg->kind->dim; k++)
             size = fmax(size, fabs(F[k]));
         if (size <= opt->newton_tol * (1 + ic_norm3(X)) || !(size < last))
             break;
         last = size;
-        if (!solve_small(nunk, J, F, dz))
+        if (!solve_small(pg->kind->dim, J, F, dz))
             return ic_error_set(err, IC_ERR_UNABLE, 0,
                                 "refinement onto the intersection: singular system");
-        apply_step(pair, pt, dz, nunk);
+        pg->kind->step(pg, z, dz);
     }
-    /* the point from the final parameters */
-    if (ic_surface_get_kind(pair->s[0]) == IC_PARAMETRIC)
-        st = ic_surface_eval(pair->s[0], pt->xyz, pt->params[0], err);
-    else if (ic_surface_get_kind(pair->s[1]) == IC_PARAMETRIC)
-        st = ic_surface_eval(pair->s[1], pt->xyz, pt->params[1], err);
+    /* the point from the final coordinates */
+    pg->kind->unflatten(pg, z, pt->params);
+    st = pg->kind->position(pg, z, pt->xyz, err);
     if (st != IC_OK)
         return st;
     return residual(pair, pt, opt, err);
@@ -579,26 +477,19 @@ ic_status ic_local_locate_params(ic_pair *pair, ic_local_point *pt, const double
                                  int nparams, const ic_local_options *opt, ic_error *err)
 {
     memset(pt, 0, sizeof *pt);
-    const int par[2] = {ic_surface_get_kind(pair->s[0]) == IC_PARAMETRIC,
-                        ic_surface_get_kind(pair->s[1]) == IC_PARAMETRIC};
-    const int want = 2 * (par[0] + par[1]);
-    if (nparams != want)
+    const ic_pairing *pg = &pair->pairing;
+    const int want = pg->kind->nparams;
+    if (want == 0 || nparams != want)
         return ic_error_set(err, IC_ERR_INVALID, 0,
                             want == 0 ? "both surfaces are implicit: give the point by "
                                         "coordinates, not parameters"
                                       : "expected %d parameters, got %d",
                             want, nparams);
-    int k = 0;
-    for (int s = 0; s < 2; s++)
-        if (par[s]) {
-            pt->params[s][0] = params[k++];
-            pt->params[s][1] = params[k++];
-        }
     for (int i = 0; i < nparams; i++)
         if (!isfinite(params[i]))
             return ic_error_set(err, IC_ERR_INVALID, 0, "non-finite parameter");
-    const int P = par[0] ? 0 : 1;
-    ic_status st = ic_surface_eval(pair->s[P], pt->xyz, pt->params[P], err);
+    pg->kind->unflatten(pg, params, pt->params);
+    ic_status st = pg->kind->position(pg, params, pt->xyz, err);
     if (st != IC_OK)
         return st;
     if (pair->self) {

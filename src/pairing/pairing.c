@@ -126,3 +126,44 @@ int ic_pairing_point_may_degenerate(const ic_pairing *p, const double xyz[3],
     }
     return p->kind->may_degenerate(p, lo, hi);
 }
+
+ic_status ic_pairing_sheet_eval1(const ic_pairing *p, int s, const double *uv, double R[3],
+                                 double Ru[3], double Rv[3], ic_error *err)
+{
+    double t[9]; /* order 1: 1, u, v per component */
+    ic_status st = ic_surface_taylor(p->S[s], t, uv, p->sp2, err);
+    if (st != IC_OK)
+        return st;
+    for (int k = 0; k < 3; k++)
+        R[k] = t[3 * k], Ru[k] = t[3 * k + 1], Rv[k] = t[3 * k + 2];
+    return IC_OK;
+}
+
+ic_status ic_pairing_implicit_eval1(const ic_pairing *p, int s, const double *x, double *f,
+                                    double grad[3], double *gnorm, ic_error *err)
+{
+    double t[4];
+    ic_status st = ic_surface_taylor(p->S[s], t, x, p->sp3, err);
+    if (st != IC_OK)
+        return st;
+    *f = t[0];
+    grad[0] = t[1], grad[1] = t[2], grad[2] = t[3];
+    *gnorm = ic_norm3(grad);
+    if (!(*gnorm > 0))
+        return ic_error_set(err, IC_ERR_DOMAIN, 0, "grad f = 0 on the intersection");
+    return IC_OK;
+}
+
+void ic_pairing_step_sheet(const ic_pairing *p, int s, double *uv, const double *duv)
+{
+    double domain[2][2];
+    int periodic[2];
+    ic_surface_get_domain(p->S[s], domain, periodic);
+    for (int i = 0; i < 2; i++) {
+        uv[i] -= duv[i];
+        if (periodic[i]) { /* back into the period */
+            const double w = domain[i][1] - domain[i][0];
+            uv[i] = domain[i][0] + fmod(fmod(uv[i] - domain[i][0], w) + w, w);
+        }
+    }
+}

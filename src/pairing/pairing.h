@@ -22,6 +22,7 @@ typedef struct ic_pairing ic_pairing;
 typedef struct {
     const char *name; /* "implicit/implicit", ... */
     int dim;          /* the search space's dimension: 3, 2 or 4 */
+    int nparams;      /* how many parameters give a point: 0, 2 or 4 */
     /* The search region (lo, hi, and which coordinates are periodic): the
      * box, or the parametric sheets' domains, which must be finite. */
     ic_status (*region)(const ic_pairing *p, const double box[3][2], int has_box, double *lo,
@@ -45,6 +46,17 @@ typedef struct {
      * two implicit surfaces. */
     void (*flatten)(const ic_pairing *p, const double xyz[3], const double params[2][2],
                     double *z);
+    /* The Newton system of a point on both surfaces in the plane through
+     * X0 normal to t, over the search coordinates z: residuals F (lengths:
+     * implicit equations divided by |grad f|), Jacobian J (dim columns),
+     * the point X. */
+    ic_status (*section)(const ic_pairing *p, const double *z, const double t[3],
+                         const double X0[3], double F[4], double J[4][4], double X[3],
+                         ic_error *err);
+    /* z -= dz, periodic parameters brought back into their period. */
+    void (*step)(const ic_pairing *p, double *z, const double *dz);
+    /* The point of search coordinates z. */
+    ic_status (*position)(const ic_pairing *p, const double *z, double xyz[3], ic_error *err);
     /* The cell's place in space: its centre's point and parameters and a
      * radius covering the cell; radius 0 where it cannot be placed. */
     void (*place)(const ic_pairing *p, const double *lo, const double *hi, double xyz[3],
@@ -109,6 +121,16 @@ void ic_pairing_place_sheet(const ic_pairing *p, int s, const double *lo, const 
 /* Both sheets' enclosures over a cell of the full space (each sheet's own
  * coordinates at offset); 1 when both exist. */
 int ic_pairing_enclose_sheet(const ic_pairing *p, int s, const ic_interval *in, ic_interval *out);
+
+/* A parametric sheet's point and first derivatives at (u, v). */
+ic_status ic_pairing_sheet_eval1(const ic_pairing *p, int s, const double *uv, double R[3],
+                                 double Ru[3], double Rv[3], ic_error *err);
+/* An implicit sheet's value and gradient at x, and |grad f| (an error where
+ * it vanishes). */
+ic_status ic_pairing_implicit_eval1(const ic_pairing *p, int s, const double *x, double *f,
+                                    double grad[3], double *gnorm, ic_error *err);
+/* uv -= duv on parametric sheet s, periodic parameters wrapped. */
+void ic_pairing_step_sheet(const ic_pairing *p, int s, double *uv, const double *duv);
 
 /* Interval pieces of the proofs (pairing_intervals.c). */
 ic_interval ic_pairing_point(double x);

@@ -92,6 +92,44 @@ static void flatten(const ic_pairing *p, const double xyz[3], const double param
     memcpy(z, xyz, 3 * sizeof *z);
 }
 
+/* f_A(X) = 0, f_B(X) = 0, t . (X - X0) = 0 over z = X */
+static ic_status section(const ic_pairing *p, const double *z, const double t[3],
+                         const double X0[3], double F[4], double J[4][4], double X[3],
+                         ic_error *err)
+{
+    memset(J, 0, 16 * sizeof(double));
+    memcpy(X, z, 3 * sizeof *X);
+    for (int s = 0; s < 2; s++) {
+        double f, grad[3], g;
+        ic_status st = ic_pairing_implicit_eval1(p, s, X, &f, grad, &g, err);
+        if (st != IC_OK)
+            return st;
+        F[s] = f / g;
+        for (int k = 0; k < 3; k++)
+            J[s][k] = grad[k] / g;
+    }
+    double d[3];
+    ic_axpy3(d, X, -1.0, X0);
+    F[2] = ic_dot3(t, d);
+    for (int k = 0; k < 3; k++)
+        J[2][k] = t[k];
+    return IC_OK;
+}
+
+static void step(const ic_pairing *p, double *z, const double *dz)
+{
+    (void)p;
+    for (int k = 0; k < 3; k++)
+        z[k] -= dz[k];
+}
+
+static ic_status position(const ic_pairing *p, const double *z, double xyz[3], ic_error *err)
+{
+    (void)p, (void)err;
+    memcpy(xyz, z, 3 * sizeof *z);
+    return IC_OK;
+}
+
 static void place(const ic_pairing *p, const double *lo, const double *hi, double xyz[3],
                   double params[2][2], double *radius)
 {
@@ -158,6 +196,7 @@ static int may_degenerate(const ic_pairing *p, const double *lo, const double *h
 const ic_pairing_kind ic_pairing_implicit = {
     .name = "implicit/implicit",
     .dim = 3,
+    .nparams = 0,
     .region = region,
     .enclosable = enclosable,
     .excluded = excluded,
@@ -166,6 +205,9 @@ const ic_pairing_kind ic_pairing_implicit = {
     .unflatten = unflatten,
     .flatten = flatten,
     .place = place,
+    .section = section,
+    .step = step,
+    .position = position,
     .loop_free = loop_free,
     .excluded_centred = excluded_centred,
     .may_degenerate = may_degenerate,

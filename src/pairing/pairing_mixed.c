@@ -80,6 +80,38 @@ static void flatten(const ic_pairing *p, const double xyz[3], const double param
     z[0] = params[p->P][0], z[1] = params[p->P][1];
 }
 
+/* f_I(R_P(u, v)) / |grad f| = 0, t . (R_P - X0) = 0 over z = (u, v) */
+static ic_status section(const ic_pairing *p, const double *z, const double t[3],
+                         const double X0[3], double F[4], double J[4][4], double X[3],
+                         ic_error *err)
+{
+    memset(J, 0, 16 * sizeof(double));
+    double R[3], Ru[3], Rv[3], f, grad[3], g;
+    ic_status st = ic_pairing_sheet_eval1(p, p->P, z, R, Ru, Rv, err);
+    if (st == IC_OK)
+        st = ic_pairing_implicit_eval1(p, p->I, R, &f, grad, &g, err);
+    if (st != IC_OK)
+        return st;
+    F[0] = f / g;
+    J[0][0] = ic_dot3(grad, Ru) / g, J[0][1] = ic_dot3(grad, Rv) / g;
+    double d[3];
+    ic_axpy3(d, R, -1.0, X0);
+    F[1] = ic_dot3(t, d);
+    J[1][0] = ic_dot3(t, Ru), J[1][1] = ic_dot3(t, Rv);
+    memcpy(X, R, sizeof R);
+    return IC_OK;
+}
+
+static void step(const ic_pairing *p, double *z, const double *dz)
+{
+    ic_pairing_step_sheet(p, p->P, z, dz);
+}
+
+static ic_status position(const ic_pairing *p, const double *z, double xyz[3], ic_error *err)
+{
+    return ic_surface_eval(p->S[p->P], xyz, z, err);
+}
+
 static void place(const ic_pairing *p, const double *lo, const double *hi, double xyz[3],
                   double params[2][2], double *radius)
 {
@@ -144,6 +176,7 @@ static int may_degenerate(const ic_pairing *p, const double *lo, const double *h
 const ic_pairing_kind ic_pairing_mixed = {
     .name = "parametric/implicit",
     .dim = 2,
+    .nparams = 2,
     .region = region,
     .enclosable = enclosable,
     .excluded = excluded,
@@ -152,6 +185,9 @@ const ic_pairing_kind ic_pairing_mixed = {
     .unflatten = unflatten,
     .flatten = flatten,
     .place = place,
+    .section = section,
+    .step = step,
+    .position = position,
     .loop_free = loop_free,
     .excluded_centred = excluded_centred,
     .may_degenerate = may_degenerate,

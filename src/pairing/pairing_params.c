@@ -121,6 +121,42 @@ static void flatten(const ic_pairing *p, const double xyz[3], const double param
     z[2] = params[1][0], z[3] = params[1][1];
 }
 
+/* R_A(u, v) - R_B(p, q) = 0, t . (R_A - X0) = 0 over z = (u, v, p, q) */
+static ic_status section(const ic_pairing *p, const double *z, const double t[3],
+                         const double X0[3], double F[4], double J[4][4], double X[3],
+                         ic_error *err)
+{
+    memset(J, 0, 16 * sizeof(double));
+    double R[2][3], Ru[2][3], Rv[2][3];
+    for (int s = 0; s < 2; s++) {
+        ic_status st = ic_pairing_sheet_eval1(p, s, z + 2 * s, R[s], Ru[s], Rv[s], err);
+        if (st != IC_OK)
+            return st;
+    }
+    for (int k = 0; k < 3; k++) {
+        F[k] = R[0][k] - R[1][k];
+        J[k][0] = Ru[0][k], J[k][1] = Rv[0][k];
+        J[k][2] = -Ru[1][k], J[k][3] = -Rv[1][k];
+        X[k] = R[0][k];
+    }
+    double d[3];
+    ic_axpy3(d, R[0], -1.0, X0);
+    F[3] = ic_dot3(t, d);
+    J[3][0] = ic_dot3(t, Ru[0]), J[3][1] = ic_dot3(t, Rv[0]);
+    return IC_OK;
+}
+
+static void step(const ic_pairing *p, double *z, const double *dz)
+{
+    ic_pairing_step_sheet(p, 0, z, dz);
+    ic_pairing_step_sheet(p, 1, z + 2, dz + 2);
+}
+
+static ic_status position(const ic_pairing *p, const double *z, double xyz[3], ic_error *err)
+{
+    return ic_surface_eval(p->S[0], xyz, z, err);
+}
+
 static void place(const ic_pairing *p, const double *lo, const double *hi, double xyz[3],
                   double params[2][2], double *radius)
 {
@@ -203,6 +239,7 @@ static int may_degenerate(const ic_pairing *p, const double *lo, const double *h
 const ic_pairing_kind ic_pairing_params = {
     .name = "parametric/parametric",
     .dim = 4,
+    .nparams = 4,
     .region = region,
     .enclosable = enclosable,
     .excluded = excluded,
@@ -211,6 +248,9 @@ const ic_pairing_kind ic_pairing_params = {
     .unflatten = unflatten,
     .flatten = flatten,
     .place = place,
+    .section = section,
+    .step = step,
+    .position = position,
     .loop_free = loop_free,
     .excluded_centred = excluded_centred,
     .may_degenerate = may_degenerate,

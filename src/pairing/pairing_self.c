@@ -60,6 +60,23 @@ static void flatten(const ic_pairing *p, const double xyz[3], const double param
     ic_pairing_params.flatten(p, xyz, params, z);
 }
 
+static ic_status section(const ic_pairing *p, const double *z, const double t[3],
+                         const double X0[3], double F[4], double J[4][4], double X[3],
+                         ic_error *err)
+{
+    return ic_pairing_params.section(p, z, t, X0, F, J, X, err);
+}
+
+static void step(const ic_pairing *p, double *z, const double *dz)
+{
+    ic_pairing_params.step(p, z, dz);
+}
+
+static ic_status position(const ic_pairing *p, const double *z, double xyz[3], ic_error *err)
+{
+    return ic_pairing_params.position(p, z, xyz, err);
+}
+
 static void place(const ic_pairing *p, const double *lo, const double *hi, double xyz[3],
                   double params[2][2], double *radius)
 {
@@ -84,6 +101,7 @@ static int may_degenerate(const ic_pairing *p, const double *lo, const double *h
 const ic_pairing_kind ic_pairing_self = {
     .name = "self-intersection",
     .dim = 4,
+    .nparams = 4,
     .region = region,
     .enclosable = enclosable,
     .excluded = excluded,
@@ -92,6 +110,9 @@ const ic_pairing_kind ic_pairing_self = {
     .unflatten = unflatten,
     .flatten = flatten,
     .place = place,
+    .section = section,
+    .step = step,
+    .position = position,
     .loop_free = loop_free,
     .excluded_centred = excluded_centred,
     .may_degenerate = may_degenerate,

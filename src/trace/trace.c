@@ -654,13 +654,10 @@ ic_status ic_trace_from_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *p
         ic_trace_progress(r, opt, "tracing start points", i, nc);
         ic_local_point pt;
         ic_local_options lo = opt->local;
+        const ic_pairing *pg = ic_pair_pairing(pair);
         double flat[4];
-        int np = 0;
-        for (int s = 0; s < 2; s++)
-            if (ic_surface_get_kind(ic_pair_surface(pair, s)) == IC_PARAMETRIC) {
-                flat[np++] = cand[i].params[s][0];
-                flat[np++] = cand[i].params[s][1];
-            }
+        const int np = pg->kind->nparams;
+        pg->kind->flatten(pg, cand[i].xyz, cand[i].params, flat);
         ic_error e2;
         if ((np ? ic_local_locate_params(pair, &pt, flat, np, &lo, &e2)
                 : ic_local_locate(pair, &pt, cand[i].xyz, &lo, &e2)) != IC_OK) {
@@ -710,12 +707,7 @@ ic_status ic_trace_from_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *p
 
 /* The dimension of the search space of the pair: 3 (x, y, z), 2 (u, v)
  * or 4 (u, v, p, q). */
-static int search_dim(ic_pair *pair)
-{
-    const int p0 = ic_surface_get_kind(ic_pair_surface(pair, 0)) == IC_PARAMETRIC;
-    const int p1 = ic_surface_get_kind(ic_pair_surface(pair, 1)) == IC_PARAMETRIC;
-    return p0 && p1 ? 4 : p0 || p1 ? 2 : 3;
-}
+static int search_dim(ic_pair *pair) { return ic_pair_pairing(pair)->kind->dim; }
 
 /* complete: the search was proven, every cell decided, nothing failed and
  * no work limit was reached (docs/tracing.md, "Completeness"). */

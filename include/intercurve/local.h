@@ -207,6 +207,16 @@ typedef struct {
     ic_darboux surface[2];
 } ic_branch;
 
+/**
+ * Reverses the orientation of a branch in place (s -> -s, the one
+ * orientation map of the library): c^(k) and the parameter curves'
+ * derivatives are multiplied by (-1)^k, so t, b, kappa', tau' and the
+ * geodesic curvatures kappa_g change sign; n, kappa, tau, the normal
+ * curvatures and the geodesic torsions do not.
+ */
+void ic_branch_reverse(ic_branch *br);
+
+
 #define IC_LOCAL_MAX_BRANCHES 8
 
 /** Everything known at one point. */

@@ -77,6 +77,11 @@ typedef struct {
     int frame_defined; /**< 0 where kappa = 0: n, b, tau undefined */
 } ic_trace_point;
 
+/** Reverses a run of curve points in place: their order, their
+ *  orientation (t and b change sign, as in ic_branch_reverse) and their arc
+ *  length (s -> p[0].s + p[n-1].s - s, so the run covers the same range). */
+void ic_trace_points_reverse(ic_trace_point *p, int n);
+
 typedef struct ic_tracer ic_tracer;
 
 /** A tracer for a pair (not owned). */

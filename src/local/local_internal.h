@@ -104,7 +104,5 @@ void ic_orient_closed(ic_branch *br, const double *NA, const double *NB);
  * Darboux quantities on both sheets. */
 void ic_branch_finish(ic_branch *br, const ic_sheet sh[2], const ic_local_options *opt);
 
-/* Orientation map (DESIGN.md 2): reverses a branch (c^(k) -> (-1)^k c^(k)). */
-void ic_branch_reverse(ic_branch *br);
 
 #endif

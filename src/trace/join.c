@@ -7,9 +7,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Reverses a curve in place: order, orientation (t, b) and arc length. */
-static void reverse_curve(ic_trace_point *p, int n)
+void ic_trace_points_reverse(ic_trace_point *p, int n)
 {
+    if (n < 1)
+        return;
     const double L = p[n - 1].s + p[0].s;
     for (int i = 0; i < n / 2; i++) {
         const ic_trace_point tmp = p[i];
@@ -57,11 +58,11 @@ static ic_status merge(ic_trace_result *r, int a, int ea, int b, int eb, double 
     }
     /* a's joining end last, b's joining end first */
     if (ea == 0)
-        reverse_curve(A, na);
+        ic_trace_points_reverse(A, na);
     ic_trace_point *B = r->storage[b];
     const int nb = cb->npoints;
     if (eb == 1)
-        reverse_curve(B, nb);
+        ic_trace_points_reverse(B, nb);
     const int n = na + nb - shared;
     ic_trace_point *J = realloc(A, (size_t)n * sizeof *J);
     if (!J)

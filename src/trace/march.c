@@ -533,7 +533,7 @@ ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
                     march_t(tr, &tr->res, t0);
                     march_t(tr, &res, te);
                     if (ic_dot3(te, t0) < 0)
-                        ic_tcurve_flip(&res.branches[0]);
+                        ic_branch_reverse(&res.branches[0]);
                 }
                 /* the arc as for any step: the corrector may slide the
                  * point along the curve (a tangential curve's does) */
@@ -564,7 +564,7 @@ ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
             tangential = res.type != IC_POINT_TANGENTIAL_CURVE || res.nbranches < 1;
             march_t(tr, &res, tn);
             if (!tangential && ic_dot3(tn, t) < 0)
-                ic_tcurve_flip(&res.branches[0]);
+                ic_branch_reverse(&res.branches[0]);
         }
         march_t(tr, &res, tn);
         if (tangential || ic_dot3(tn, t) <= 0) {

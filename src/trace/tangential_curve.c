@@ -22,18 +22,3 @@ ic_status ic_tcurve_correct(ic_pair *pair, const int par[2], const double X[3],
     }
     return ic_local_locate_tangential(pair, next, &near, reach, opt, NULL);
 }
-
-void ic_tcurve_flip(ic_branch *br)
-{
-    for (int k = 0; k < 3; k++)
-        br->t[k] = -br->t[k], br->b[k] = -br->b[k];
-    br->kappa_prime = -br->kappa_prime;
-    br->tau_prime = -br->tau_prime;
-    for (int j = 1; j <= br->order; j += 2) /* c^(j) for odd j */
-        for (int k = 0; k < 3; k++)
-            br->derivs[j - 1][k] = -br->derivs[j - 1][k];
-    for (int s = 0; s < 2; s++)
-        for (int j = 1; j <= br->param_order; j += 2)
-            br->param_derivs[s][j - 1][0] = -br->param_derivs[s][j - 1][0],
-                                    br->param_derivs[s][j - 1][1] = -br->param_derivs[s][j - 1][1];
-}

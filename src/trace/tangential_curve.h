@@ -12,8 +12,5 @@ ic_status ic_tcurve_correct(ic_pair *pair, const int par[2], const double X[3],
                             const double params[2][2], double reach, const ic_local_options *opt,
                             ic_local_point *next);
 
-/* Reverses a branch's orientation: t, b and the odd derivatives change sign
- * (the kernel direction of a tangential curve has no preferred sign). */
-void ic_tcurve_flip(ic_branch *br);
 
 #endif

@@ -509,15 +509,11 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
         free(back);
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
     }
-    /* the backward part reversed: order, orientation (t, b) and arc length */
-    const double S0 = back[n0 - 1].s;
-    for (int i = 0; i < n0; i++) {
-        ic_trace_point p = back[n0 - 1 - i];
-        ic_scale3(p.t, p.t, -1.0);
-        ic_scale3(p.b, p.b, -1.0);
-        p.s = S0 - p.s;
-        all[i] = p;
-    }
+    /* the backward part reversed: order, orientation (t, b) and arc length
+     * (its start, s = 0, becomes its end, S0) */
+    const double S0 = back[n0 - 1].s - back[0].s;
+    memcpy(all, back, (size_t)n0 * sizeof *all);
+    ic_trace_points_reverse(all, n0);
     for (int i = 1; i < n1; i++) {
         all[n0 - 1 + i] = fwd[i];
         all[n0 - 1 + i].s += S0;

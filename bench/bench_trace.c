@@ -150,8 +150,8 @@ int main(int argc, char **argv)
            "points", "special", "ms", "max dist");
     const char *files[] = {"viviani-implicit.json", "viviani.json",
                            "ellipsoids.json",       "enneper-self.json",
-                           "seed002-branch.json",   "sphere-plane-contact.json",
-                           "torus-sphere.json",     "seed002-tangential.json",
+                           "sphere-cylinder-branch.json",   "sphere-plane-contact.json",
+                           "torus-sphere.json",     "torus-plane-tangential.json",
                            "cylinders.json",        "cylinders-equal.json",
                            "small-loop.json",       "tacnode.json"};
     for (size_t c = 0; c < sizeof files / sizeof files[0]; c++)

@@ -82,7 +82,7 @@ check "point: closed-form named in the output" $?
 check "point: Enneper self-intersection by parameters ($(cat "$errf"))" $?
 grep -q 'tau          0$' "$out"
 check "point: the Enneper double curve is planar (tau 0)" $?
-"$bin" point "$src/examples/seed001-ex54.json" --at 'sqrt(11/2),sqrt(5/2),-2' --format text >"$out" 2>"$errf"
+"$bin" point "$src/examples/paraboloid-cubic.json" --at 'sqrt(11/2),sqrt(5/2),-2' --format text >"$out" 2>"$errf"
 grep -q 'tau          -0.51528286240' "$out"
 check "point: seed 001 Ex 5.4 torsion -27395 sqrt(55)/394282" $?
 "$bin" point "$src/examples/viviani.json" --at 2,0,0 --order 3 >"$out" 2>"$errf"
@@ -94,7 +94,7 @@ check "point: two branches at the branch point" $?
 "$bin" point "$src/examples/sphere-plane-contact.json" --at 0,1,0 >"$out" 2>"$errf"
 grep -q '"type":.*"isolated-contact"' "$out" && grep -q '"branches":.*\[\]' "$out"
 check "point: isolated contact, no branch" $?
-"$bin" point "$src/examples/seed002-cusp.json" --at 0,0,0 >"$out" 2>"$errf"
+"$bin" point "$src/examples/cusp.json" --at 0,0,0 >"$out" 2>"$errf"
 grep -q '"type":.*"cusp"' "$out" && grep -q '"regular":.*false' "$out"
 check "point: cusp with one-sided half-branches" $?
 expect_error 2 "point $src/examples/viviani.json --at 1.5,0.8660254037844386,1.2" "0.107 away from surface B" "tolerance 1e-06"

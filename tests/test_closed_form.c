@@ -103,7 +103,7 @@ static int one_point(int kind, harness_rng *rng)
         goto done;
     ic_branch_finish(&jet, sh, &opt);
     ic_status (*methods[3])(ic_branch *, const ic_sheet *, ic_paper_values *, ic_error *) = {
-        ic_closed_seed001, ic_closed_seed000, ic_closed_seed003};
+        ic_closed_abdel_all, ic_closed_hassan_badr, ic_closed_patrikalakis_maekawa};
     for (int m = 0; m < 2; m++) {
         /* the pairing's own paper, then seed 003 which takes any mix */
         const int which = m == 0 ? kind : 2;

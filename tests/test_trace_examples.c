@@ -156,7 +156,7 @@ int main(int argc, char **argv)
     if (trace_example(&t, dir, "tacnode.json") == 0)
         check_tacnode(&t);
     release(&t);
-    if (trace_example(&t, dir, "seed002-cusp.json") == 0)
+    if (trace_example(&t, dir, "cusp.json") == 0)
         check_cusp(&t);
     release(&t);
     return harness_finish("test_trace_examples");

@@ -51,11 +51,11 @@ ic_status ic_closed_form_method(ic_branch *br, const ic_sheet sh[2], int order, 
 {
     ic_status st;
     if (sh[0].parametric && sh[1].parametric)
-        st = ic_closed_seed000(br, sh, NULL, err);
+        st = ic_closed_hassan_badr(br, sh, NULL, err);
     else if (!sh[0].parametric && !sh[1].parametric)
-        st = ic_closed_seed001(br, sh, NULL, err);
+        st = ic_closed_abdel_all(br, sh, NULL, err);
     else
-        st = ic_closed_seed003(br, sh, NULL, err);
+        st = ic_closed_patrikalakis_maekawa(br, sh, NULL, err);
     br->order = order; /* the closed forms give 3 orders; keep what was asked */
     return st;
 }

@@ -197,17 +197,17 @@ def main():
     check_on(viviani_half, [(x - sp.Rational(1, 2)) ** 2 + y**2 - sp.Rational(1, 4),
                             x**2 + y**2 + z**2 - 1], sp.Rational(7, 10))
     for p0 in [sp.Integer(0), 2 * sp.pi]:
-        emit_closed(lines, "tangent-seed002", viviani_half, p0, "p=%s" % sp.N(p0, 20))
+        emit_closed(lines, "tangent-viviani-half", viviani_half, p0, "p=%s" % sp.N(p0, 20))
     ellipse_minus = [a * sp.cos(p), sp.Rational(4, 5) * sp.sin(p), -k * a * sp.cos(p)]
     check_on(ellipse_minus, [f51, h51], sp.Rational(1, 2))
     emit_closed(lines, "tangent-ellipse51", ellipse, sp.pi / 2, "plane=+")
     emit_closed(lines, "tangent-ellipse51", ellipse_minus, sp.pi / 2, "plane=-")
     circle52 = [sp.cos(p), sp.sin(p), sp.Integer(0)]
     emit_closed(lines, "tangent-circle52", circle52, sp.atan2(4, 3), "p=atan2(4,3)")
-    circle002 = [-sp.Rational(1, 5) + 2 * sp.cos(p), 2 * sp.sin(p), sp.Integer(0)]
-    p002 = sp.atan2(-sp.sqrt(21) / 5, -sp.Rational(2, 5))
-    check_on(circle002, [z], p002)
-    emit_closed(lines, "tangent-circle002", circle002, p002, "p=atan2(-sqrt21/5,-2/5)")
+    circle_torus_plane = [-sp.Rational(1, 5) + 2 * sp.cos(p), 2 * sp.sin(p), sp.Integer(0)]
+    p_torus_plane = sp.atan2(-sp.sqrt(21) / 5, -sp.Rational(2, 5))
+    check_on(circle_torus_plane, [z], p_torus_plane)
+    emit_closed(lines, "tangent-circle-torus-plane", circle_torus_plane, p_torus_plane, "p=atan2(-sqrt21/5,-2/5)")
     for sgn in (1, -1):
         emit_closed(lines, "tacnode", [p, sgn * p**2, sp.Integer(0)], sp.Integer(0),
                     "branch=%+d" % sgn)

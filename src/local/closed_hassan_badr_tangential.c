@@ -165,19 +165,19 @@ static int branch(ic_branch *br, const ic_param_data *P, const ic_param_data *Q,
     return 0;
 }
 
-void ic_closed_seed000_coefficients(ic_local_result *res, const ic_sheet sh[2])
+void ic_closed_hassan_badr_coefficients(ic_local_result *res, const ic_sheet sh[2])
 {
     const ic_point_type type = res->type;
     ic_local_result tmp = *res;
     tmp.type = IC_POINT_TANGENTIAL; /* coefficients only: stop before the branches */
-    (void)ic_closed_seed000_tangential(&tmp, sh, NULL, NULL);
+    (void)ic_closed_hassan_badr_tangential(&tmp, sh, NULL, NULL);
     res->npaper = tmp.npaper;
     memcpy(res->paper_names, tmp.paper_names, sizeof tmp.paper_names);
     memcpy(res->paper_values, tmp.paper_values, sizeof tmp.paper_values);
     res->type = type;
 }
 
-ic_status ic_closed_seed000_tangential(ic_local_result *res, const ic_sheet sh[2],
+ic_status ic_closed_hassan_badr_tangential(ic_local_result *res, const ic_sheet sh[2],
                                        const ic_local_options *opt, ic_error *err)
 {
     if (!sh[0].parametric || !sh[1].parametric)

@@ -134,7 +134,7 @@ static void coefficients(double paper[4], double D[3][3], const derivs4 *f, cons
     paper[3] = f1 * f1 * D[1][1] - 2 * f1 * f2 * D[0][1] + f2 * f2 * D[0][0];
 }
 
-void ic_closed_seed001_coefficients(ic_local_result *res, const ic_sheet sh[2])
+void ic_closed_abdel_all_coefficients(ic_local_result *res, const ic_sheet sh[2])
 {
     int perm[3];
     choose_axes(perm, sh[0].geo.normal, NULL);
@@ -214,7 +214,7 @@ static int branch(ic_branch *br, const ic_sheet sh[2], const double *dir, double
     return 0;
 }
 
-ic_status ic_closed_seed001_tangential(ic_local_result *res, const ic_sheet sh[2],
+ic_status ic_closed_abdel_all_tangential(ic_local_result *res, const ic_sheet sh[2],
                                        const ic_local_options *opt, ic_error *err)
 {
     (void)opt;

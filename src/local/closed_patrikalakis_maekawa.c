@@ -95,7 +95,7 @@ static double normal_curvature(const ic_sheet *sh, const double *t)
     return -q / sh->geo.normal_length;
 }
 
-ic_status ic_closed_seed003(ic_branch *br, const ic_sheet sh[2], ic_paper_values *paper,
+ic_status ic_closed_patrikalakis_maekawa(ic_branch *br, const ic_sheet sh[2], ic_paper_values *paper,
                             ic_error *err)
 {
     const double *NA = sh[0].geo.normal, *NB = sh[1].geo.normal;

@@ -46,7 +46,7 @@ static double psi(const ic_param_data *p, const double *v1, const double *v2)
            3 * b * v2[1] * p->L[1][1];
 }
 
-ic_status ic_closed_seed000(ic_branch *br, const ic_sheet sh[2], ic_paper_values *paper,
+ic_status ic_closed_hassan_badr(ic_branch *br, const ic_sheet sh[2], ic_paper_values *paper,
                             ic_error *err)
 {
     if (!sh[0].parametric || !sh[1].parametric)

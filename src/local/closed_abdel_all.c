@@ -64,7 +64,7 @@ static void c_coefficients(const implicit_data *f, double A12, double A13, doubl
                A12 * A13 * A13 * T[1][1][2]);
 }
 
-ic_status ic_closed_seed001(ic_branch *br, const ic_sheet sh[2], ic_paper_values *paper,
+ic_status ic_closed_abdel_all(ic_branch *br, const ic_sheet sh[2], ic_paper_values *paper,
                             ic_error *err)
 {
     if (sh[0].parametric || sh[1].parametric)

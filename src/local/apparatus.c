@@ -38,9 +38,9 @@ ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res, const ic_local
         if (closed && sh[0].parametric != sh[1].parametric)
             return ic_error_set(err, IC_ERR_INVALID, 0,
                                 "tangential point (normals %.3g rad from parallel): the "
-                                "closed forms there cover two parametric surfaces (seed 000 "
-                                "section 4) or two implicit ones (seed 001 section 4); use "
-                                "height-difference",
+                                "closed forms there cover two parametric surfaces (Hassan and "
+                                "Badr (2016), section 4) or two implicit ones (Abdel-All et "
+                                "al. (2012), section 4); use height-difference",
                                 res->angle);
         const int perturb = res->method == IC_METHOD_PERTURBATION;
         if (!perturb && !closed)

@@ -1,5 +1,5 @@
 /*
- * Seed 001 (Abdel-All, Badr, Soliman & Hassan 2012), section 4: tangential
+ * Abdel-All et al. (2012), section 4 (docs/references.md): tangential
  * intersection of two implicit surfaces f = 0, h = 0 with grad f = A grad h
  * (4.1), the curve parametrised by a coordinate, beta = (x1, x2(x1), x3(x1)).
  * Derived again before transcription (docs/ERRATA.md lists the printed
@@ -215,16 +215,17 @@ static int branch(ic_branch *br, const ic_sheet sh[2], const double *dir, double
 }
 
 ic_status ic_closed_abdel_all_tangential(ic_local_result *res, const ic_sheet sh[2],
-                                       const ic_local_options *opt, ic_error *err)
+                                         const ic_local_options *opt, ic_error *err)
 {
     (void)opt;
     if (sh[0].parametric || sh[1].parametric)
-        return ic_error_set(err, IC_ERR_INVALID, 0, "seed 001 section 4 needs two implicit sheets");
+        return ic_error_set(err, IC_ERR_INVALID, 0,
+                            "Abdel-All et al. (2012), section 4, needs two implicit sheets");
     if (!(res->type == IC_POINT_BRANCH || res->type == IC_POINT_TANGENTIAL_CURVE) ||
         res->nbranches < 1)
         return ic_error_set(err, IC_ERR_UNABLE, 0,
-                            "the closed form (seed 001 section 4) gives the branches of branch "
-                            "points and tangential curves; this point is %s",
+                            "the closed form (Abdel-All et al. (2012), section 4) gives the "
+                            "branches of branch points and tangential curves; this point is %s",
                             ic_point_type_name(res->type));
     /* the directions solve beta'^T D beta' = 0 in the tangent plane, the
      * roots of (4.9); the classification's branches give which root is which */
@@ -234,9 +235,9 @@ ic_status ic_closed_abdel_all_tangential(ic_local_result *res, const ic_sheet sh
         const double *t = res->branches[b].derivs[0]; /* the classification's tangent */
         if (branch(&out[b], sh, t, paper) != 0)
             return ic_error_set(err, IC_ERR_UNABLE, 0,
-                                "seed 001 section 4: Omega = 0 (4.18), the system for x2'', "
-                                "x3'' is singular (as on a tangential curve, where the paper's "
-                                "formulas do not apply); use height-difference");
+                                "Abdel-All et al. (2012), eq. (4.18): Omega = 0, the system "
+                                "for x2'', x3'' is singular (as on a tangential curve, where "
+                                "the paper's formulas do not apply); use height-difference");
     }
     memcpy(res->branches, out, (size_t)res->nbranches * sizeof out[0]);
     res->npaper = 4;

@@ -1,6 +1,7 @@
 /* The closed-form method: the papers' formulas, dispatched by pairing
- * (docs/local.md): seed 000 for parametric/parametric and
- * self-intersections, seed 001 for implicit/implicit, seeds 002 and 003
+ * (docs/local.md): Hassan and Badr (2016) for parametric/parametric and
+ * self-intersections, Abdel-All et al. (2012) for implicit/implicit,
+ * Bendrici and Boumedien-Zidani (2022) with Patrikalakis and Maekawa (2002)
  * (which work for any mix) for parametric/implicit. */
 #include "local_internal.h"
 #include "common/vec3.h"

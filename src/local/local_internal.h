@@ -74,11 +74,11 @@ typedef struct {
     double kappa, tau;
 } ic_paper_values;
 ic_status ic_closed_hassan_badr(ic_branch *br, const ic_sheet sh[2], ic_paper_values *paper,
-                            ic_error *err);
+                                ic_error *err);
 ic_status ic_closed_abdel_all(ic_branch *br, const ic_sheet sh[2], ic_paper_values *paper,
-                            ic_error *err);
-ic_status ic_closed_patrikalakis_maekawa(ic_branch *br, const ic_sheet sh[2], ic_paper_values *paper,
-                            ic_error *err);
+                              ic_error *err);
+ic_status ic_closed_patrikalakis_maekawa(ic_branch *br, const ic_sheet sh[2],
+                                         ic_paper_values *paper, ic_error *err);
 
 /* x with t . x = r[0], N_A . x = r[1], N_B . x = r[2] (unit t normal to
  * both): x = (r0 N_A x N_B + r1 N_B x t + r2 t x N_A) / det[t; N_A; N_B]. */
@@ -99,7 +99,7 @@ void ic_orient_closed(ic_branch *br, const double *NA, const double *NB);
  * Darboux quantities on both sheets. */
 void ic_branch_finish(ic_branch *br, const ic_sheet sh[2], const ic_local_options *opt);
 
-/* Orientation map (DESIGN.md 2): reverses a branch (c^(k) -> (-1)^k c^(k)). */
+/* Orientation map (docs/conventions.md, "Geometry"): reverses a branch (c^(k) -> (-1)^k c^(k)). */
 void ic_branch_reverse(ic_branch *br);
 
 #endif

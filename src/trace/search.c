@@ -1,5 +1,5 @@
 /*
- * Start points by subdivision (DESIGN.md 2.3). Cells of the search region
+ * Start points by subdivision (docs/tracing.md). Cells of the search region
  * are split down to opt->depth levels; a cell where the interval enclosure of
  * a surface's equation excludes 0 holds no intersection point (proven, with
  * outward rounding) and is dropped. In each remaining leaf a Newton

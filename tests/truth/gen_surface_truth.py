@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Truth for tests/test_surface.c: partial derivatives of the seed papers'
+"""Truth for tests/test_surface.c: partial derivatives of the papers'
 surfaces, exact by sympy differentiation, printed with 20 digits.
 
 Each case: a surface in the formula language (parsed by the C test with

@@ -161,7 +161,8 @@ static int branch(ic_branch *br, const ic_sheet sh[2], const double *dir, double
     coefficients(paper, D, &f, &h); /* (4.1), (4.10) */
     const double A = paper[0], f1 = f.g[0], f2 = f.g[1], f3 = f.g[2];
     /* (4.9): a11 x3'^2 + 2 a12 x3' + a13 = 0; of its roots the one along this
-     * branch (dir only picks the root); x2' from grad f . beta' = 0 (4.11) */
+     * branch (dir only picks the root); x2' from grad f . beta' = 0 (4.6), as
+     * in the roots printed after (4.10) */
     const double a11 = paper[1], a12 = paper[2], a13 = paper[3];
     const double want = dir[a3] / dir[a1];
     double x3d;

@@ -61,13 +61,13 @@ int main(void)
         }                                                                                       \
         cases[nc++] = (bench_surface){label, s_, {a0, a1, a2}};                                 \
     } while (0)
-    ADD("cylinder (seed 000, formula)", ic_surface_new_parametric(&s_, cyl, NULL, NULL, 0, NULL, NULL), 0.3, 1.4, 0);
-    ADD("sphere (seed 000, formula)", ic_surface_new_parametric(&s_, sphere, NULL, NULL, 0, NULL, NULL), 0.3, 0.4, 0);
-    ADD("Enneper (seed 000, formula)", ic_surface_new_parametric(&s_, enneper, NULL, NULL, 0, NULL, NULL), 1.4, 3.0, 0);
+    ADD("Viviani cylinder (formula)", ic_surface_new_parametric(&s_, cyl, NULL, NULL, 0, NULL, NULL), 0.3, 1.4, 0);
+    ADD("Viviani sphere (formula)", ic_surface_new_parametric(&s_, sphere, NULL, NULL, 0, NULL, NULL), 0.3, 0.4, 0);
+    ADD("Enneper (formula)", ic_surface_new_parametric(&s_, enneper, NULL, NULL, 0, NULL, NULL), 1.4, 3.0, 0);
     ADD("torus (formula)", ic_surface_new_parametric(&s_, torus_f, NULL, NULL, 0, NULL, NULL), 0.3, 0.4, 0);
     ADD("torus (primitive, parametric)", ic_surface_new_primitive(&s_, &torus, IC_PARAMETRIC, NULL), 0.3, 0.4, 0);
     ADD("torus (primitive, implicit)", ic_surface_new_primitive(&s_, &torus, IC_IMPLICIT, NULL), 1.2, 1.3, 0.2);
-    ADD("ellipsoid (seed 001, implicit)", ic_surface_new_primitive(&s_, &ell, IC_IMPLICIT, NULL), 0.2, 0.3, 0.4);
+    ADD("ellipsoid (implicit)", ic_surface_new_primitive(&s_, &ell, IC_IMPLICIT, NULL), 0.2, 0.3, 0.4);
     ADD("sphere (primitive, parametric)", ic_surface_new_primitive(&s_, &sph, IC_PARAMETRIC, NULL), 0.3, 0.4, 0);
 
     ic_jet_space *d2[2] = {NULL}, *d4[2] = {NULL}, *c[3] = {NULL};

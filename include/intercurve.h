@@ -1,7 +1,7 @@
 /**
  * @file intercurve.h
  * intercurve: differential geometry of surface intersection curves.
- * Includes every public header (DESIGN.md section 1 lists the layers).
+ * Includes every public header (docs/architecture.md lists the layers).
  */
 #ifndef INTERCURVE_H
 #define INTERCURVE_H

@@ -82,9 +82,9 @@ check "point: closed-form named in the output" $?
 check "point: Enneper self-intersection by parameters ($(cat "$errf"))" $?
 grep -q 'tau          0$' "$out"
 check "point: the Enneper double curve is planar (tau 0)" $?
-"$bin" point "$src/examples/seed001-ex54.json" --at 'sqrt(11/2),sqrt(5/2),-2' --format text >"$out" 2>"$errf"
+"$bin" point "$src/examples/paraboloid-cubic.json" --at 'sqrt(11/2),sqrt(5/2),-2' --format text >"$out" 2>"$errf"
 grep -q 'tau          -0.51528286240' "$out"
-check "point: seed 001 Ex 5.4 torsion -27395 sqrt(55)/394282" $?
+check "point: Abdel-All et al. (2012) Ex 5.4 torsion -27395 sqrt(55)/394282" $?
 "$bin" point "$src/examples/viviani.json" --at 2,0,0 --order 3 >"$out" 2>"$errf"
 check "point at Viviani's branch point exits 0 ($(cat "$errf"))" $?
 grep -q '"type":.*"branch-point"' "$out" && grep -q '"discriminant":.*0.0625' "$out"
@@ -94,7 +94,7 @@ check "point: two branches at the branch point" $?
 "$bin" point "$src/examples/sphere-plane-contact.json" --at 0,1,0 >"$out" 2>"$errf"
 grep -q '"type":.*"isolated-contact"' "$out" && grep -q '"branches":.*\[\]' "$out"
 check "point: isolated contact, no branch" $?
-"$bin" point "$src/examples/seed002-cusp.json" --at 0,0,0 >"$out" 2>"$errf"
+"$bin" point "$src/examples/cusp.json" --at 0,0,0 >"$out" 2>"$errf"
 grep -q '"type":.*"cusp"' "$out" && grep -q '"regular":.*false' "$out"
 check "point: cusp with one-sided half-branches" $?
 expect_error 2 "point $src/examples/viviani.json --at 1.5,0.8660254037844386,1.2" "0.107 away from surface B" "tolerance 1e-06"
@@ -106,7 +106,7 @@ expect_error 1 "point $src/examples/viviani.json --at 1,2,3 --params 1,2,3,4" "o
 expect_error 1 "point $src/examples/viviani.json --at 1,2,3 --order 17" "--order expects a whole number from 1 to 16"
 "$bin" point "$src/examples/viviani.json" --at 2,0,0 --method closed-form --order 3 >"$out" 2>"$errf"
 grep -q '"paper_coefficients"' "$out" && grep -q '"tau":.*0.375' "$out"
-check "point: seed 000 section 4 at the branch point, tau 3/8 ($(cat "$errf"))" $?
+check "point: Hassan and Badr (2016) section 4 at the branch point, tau 3/8 ($(cat "$errf"))" $?
 "$bin" point "$src/examples/viviani.json" --at 2,0,0 --method perturbation >"$out" 2>"$errf"
 grep -q '"error_estimate"' "$out"
 check "point: perturbation reports an error estimate ($(cat "$errf"))" $?
@@ -134,7 +134,7 @@ for fmt in csv vtk obj; do
     check "trace --format $fmt: the file is there, no temporary left" $?
 done
 [ "$(grep -c ',branch-point$' "$tmpout.csv")" -ge 2 ] && head -1 "$tmpout.csv" | grep -q '^curve,s,x,y,z,u,v,p,q,'
-check "trace --format csv: DESIGN.md's columns, the branch points classified" $?
+check "trace --format csv: the columns of docs/output-formats.md, the branch points classified" $?
 grep -q '^LINES 2 ' "$tmpout.vtk" && grep -q '^VECTORS b double' "$tmpout.vtk"
 check "trace --format vtk: two polylines with the frame as point data" $?
 [ "$(grep -c '^l ' "$tmpout.obj")" -eq 2 ]

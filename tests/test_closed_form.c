@@ -9,6 +9,10 @@
 
 static double worst[4];
 static int counted[4];
+/* the closed forms by index: implicit pairs, parametric pairs, any mix */
+static const char *const PAPERS[3] = {"Abdel-All et al. (2012)", "Hassan and Badr (2016)",
+                                      "Bendrici and Boumedien-Zidani (2022) with "
+                                      "Patrikalakis and Maekawa (2002)"};
 
 static double rel(const double *a, const double *b)
 {
@@ -103,9 +107,10 @@ static int one_point(int kind, harness_rng *rng)
         goto done;
     ic_branch_finish(&jet, sh, &opt);
     ic_status (*methods[3])(ic_branch *, const ic_sheet *, ic_paper_values *, ic_error *) = {
-        ic_closed_seed001, ic_closed_seed000, ic_closed_seed003};
+        ic_closed_abdel_all, ic_closed_hassan_badr, ic_closed_patrikalakis_maekawa};
     for (int m = 0; m < 2; m++) {
-        /* the pairing's own paper, then seed 003 which takes any mix */
+        /* the pairing's own paper, then the any-mix form (Bendrici and
+         * Boumedien-Zidani (2022) with Patrikalakis and Maekawa (2002)) */
         const int which = m == 0 ? kind : 2;
         if (m == 1 && kind == 2)
             break;
@@ -118,8 +123,7 @@ static int one_point(int kind, harness_rng *rng)
         for (int k = 0; k < 3; k++) {
             const double e = rel(closed.derivs[k], jet.derivs[k]);
             worst[which] = fmax(worst[which], e);
-            CHECK(e <= 1e-12, "kind %d, seed %s: c^(%d) differs by %g", kind,
-                  which == 0 ? "001" : which == 1 ? "000" : "003", k + 1, e);
+            CHECK(e <= 1e-12, "kind %d, %s: c^(%d) differs by %g", kind, PAPERS[which], k + 1, e);
         }
         counted[which]++;
         CHECK(fabs(paper.kappa - jet.kappa) <= 1e-12 * fmax(1, jet.kappa),
@@ -127,7 +131,7 @@ static int one_point(int kind, harness_rng *rng)
         if (jet.tau_defined)
             CHECK(fabs(paper.tau - jet.tau) <= 1e-12 * fmax(1, fabs(jet.tau)),
                   "kind %d method %d: paper tau %.17g vs %.17g", kind, which, paper.tau, jet.tau);
-        if (which != 1 && kind != 0) /* parameter derivatives u', u'' of seed 003 */
+        if (which != 1 && kind != 0) /* parameter derivatives u', u'' of the any-mix form */
             for (int k = 0; k < 2; k++)
                 CHECK(fabs(closed.param_derivs[0][k][0] - jet.param_derivs[0][k][0]) +
                               fabs(closed.param_derivs[0][k][1] - jet.param_derivs[0][k][1]) <=
@@ -155,8 +159,9 @@ int main(void)
             points++;
     }
     CHECK(points == want, "transversal random points: %d of %d", points, want);
-    printf("%d random points; worst relative difference to the jet method: seed 000 %.2g (%d), "
-           "seed 001 %.2g (%d), seed 002/003 %.2g (%d)\n",
-           points, worst[1], counted[1], worst[0], counted[0], worst[2], counted[2]);
+    printf("%d random points; worst relative difference to the jet method: %s %.2g (%d), "
+           "%s %.2g (%d), %s %.2g (%d)\n",
+           points, PAPERS[1], worst[1], counted[1], PAPERS[0], worst[0], counted[0], PAPERS[2],
+           worst[2], counted[2]);
     return harness_finish("test_closed_form");
 }

@@ -148,7 +148,8 @@ typedef struct {
     const double (*domain)[2]; /* of A, when the search needs one; NULL: unbounded */
 } pairing;
 
-static const double ENNEPER_DOMAIN[2][2] = {{-5, 5}, {-5, 5}}; /* seed 000 Example 2 */
+/* the domain of Hassan and Badr (2016), Example 2 */
+static const double ENNEPER_DOMAIN[2][2] = {{-5, 5}, {-5, 5}};
 
 static const pairing PAIRINGS[] = {
     {"viviani", "viviani param/param",
@@ -169,13 +170,14 @@ static const pairing PAIRINGS[] = {
      {{0}, {0}, "x^2 + y^2 - 1"}, {{"v*cos(u)", "v*sin(u)", "u/2"}, {0}, NULL}, 0, NULL},
     {"helix", "cylinder/helicoid param/implicit",
      {{"cos(u)", "sin(u)", "v"}, {0}, NULL}, {{0}, {0}, "x*sin(2*z) - y*cos(2*z)"}, 0, NULL},
-    {"ellipse51", "seed 001 Ex 5.1 ellipsoids",
+    {"ellipse51", "Abdel-All et al. (2012) Ex 5.1 ellipsoids",
      {{0}, {0}, "x^2/0.36 + y^2/0.64 + z^2 - 1"},
      {{0}, {0}, "x^2/0.2025 + y^2/0.64 + z^2/1.5625 - 1"}, 0, NULL},
-    {"enneper", "seed 000 Ex 2 Enneper self-intersection",
+    {"enneper", "Hassan and Badr (2016) Ex 2 Enneper self-intersection",
      {{"u - u^3/3 + u*v^2", "-v - u^2*v + v^3/3", "u^2 - v^2"}, {0}, NULL}, {{0}, {0}, NULL}, 1,
      ENNEPER_DOMAIN},
-    {"ex54", "seed 001 Ex 5.4", {{0}, {0}, "x^2 - y^2 + z - 1"}, {{0}, {0}, "x^2 + y^2 + z^3"}, 0, NULL},
+    {"ex54", "Abdel-All et al. (2012) Ex 5.4", {{0}, {0}, "x^2 - y^2 + z - 1"},
+     {{0}, {0}, "x^2 + y^2 + z^3"}, 0, NULL},
 };
 
 static void test_against_truth(const truth_case *cases, int ncases)
@@ -330,8 +332,9 @@ static void test_errors(void)
     close_pair(&tp);
 }
 
-/* Two planes meet in a line: kappa = 0 and n, b, tau undefined (seed 001
- * corollary 3.1); an ellipse of seed 001 Ex 5.1 is planar (corollary 3.2). */
+/* Two planes meet in a line: kappa = 0 and n, b, tau undefined (Abdel-All et
+ * al. (2012), corollary 3.1); an ellipse of their Example 5.1 is planar
+ * (corollary 3.2). */
 static void test_line_and_plane_curve(void)
 {
     const surface_def p1 = {{0}, {0}, "x + 2*y - z - 1"};

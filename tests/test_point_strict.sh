@@ -95,7 +95,7 @@ head -1 "$out" | grep -q '^point *(2, '
 check "the branch point found is (2, 0, 0): $(head -1 "$out")" $?
 on "1e-7 off the tangential circle" tangential-curve "$ex/torus-sphere.json" \
     --at 1.0000001,0,0 --format text
-on "the cusp, 1e-7 off the plane" cusp "$ex/seed002-cusp.json" --at 0,0,1e-7 --format text
+on "the cusp, 1e-7 off the plane" cusp "$ex/cusp.json" --at 0,0,1e-7 --format text
 
 # the help text says what --point-tol does
 "$bin" point --help | grep -q "widens the search only"

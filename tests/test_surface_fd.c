@@ -26,7 +26,7 @@ static void enneper(long double *o, const long double *x)
     o[2] = u * u - v * v;
 }
 
-static void torus002(long double *o, const long double *x)
+static void torus_parametric(long double *o, const long double *x)
 {
     const long double w = 2 + cosl(2 * PI_L * x[1]);
     o[0] = cosl(2 * PI_L * x[0]) * w - 0.2L;
@@ -34,7 +34,7 @@ static void torus002(long double *o, const long double *x)
     o[2] = 1 + sinl(2 * PI_L * x[1]);
 }
 
-static void torus001(long double *o, const long double *x)
+static void torus_implicit(long double *o, const long double *x)
 {
     const long double r2 = x[0] * x[0] + x[1] * x[1];
     const long double s = r2 + x[2] * x[2] + 3;
@@ -106,13 +106,15 @@ static void richardson(long double *out, ld_surface f, int nin, int nout, const 
 int main(void)
 {
     const fd_case cases[] = {
-        {"seed000-sphere", {"2*cos(u)*cos(v)", "2*sin(u)*cos(v)", "2*sin(v)"}, 0, sphere2,
+        {"sphere-r2", {"2*cos(u)*cos(v)", "2*sin(u)*cos(v)", "2*sin(v)"}, 0, sphere2,
          {-1.2, 0.4}, 0.2},
-        {"seed000-enneper", {"u - u^3/3 + u*v^2", "-v - u^2*v + v^3/3", "u^2 - v^2"}, 0,
+        {"enneper", {"u - u^3/3 + u*v^2", "-v - u^2*v + v^3/3", "u^2 - v^2"}, 0,
          enneper, {1.4142135623730951, 3.0}, 0.2},
-        {"seed002-torus", {"cos(2*pi*u)*(2 + cos(2*pi*v)) - 1/5", "sin(2*pi*u)*(2 + cos(2*pi*v))",
-                           "1 + sin(2*pi*v)"}, 0, torus002, {0.6845, 0.75}, 0.04},
-        {"seed001-torus", {"(x^2 + y^2 + z^2 + 3)^2 - 16*(x^2 + y^2)"}, 1, torus001,
+        {"torus-parametric",
+         {"cos(2*pi*u)*(2 + cos(2*pi*v)) - 1/5", "sin(2*pi*u)*(2 + cos(2*pi*v))",
+          "1 + sin(2*pi*v)"},
+         0, torus_parametric, {0.6845, 0.75}, 0.04},
+        {"torus-implicit", {"(x^2 + y^2 + z^2 + 3)^2 - 16*(x^2 + y^2)"}, 1, torus_implicit,
          {0.6, 0.8, 0.1}, 0.2},
         {"analytic-mix", {"exp(x/2)*sin(y) - log(2 + z^2) + sqrt(1 + x^2*y^2)"}, 1, mix,
          {0.3, -0.8, 1.2}, 0.04},

@@ -36,29 +36,33 @@ static const tcase CASES[] = {
     {"Viviani branch point, param/implicit", CYL_P, SPH_I, {2, 0, 0}, IC_POINT_BRANCH, 2, "tangent-viviani"},
     {"Viviani branch point, implicit/param", CYL_I, SPH_P, {2, 0, 0}, IC_POINT_BRANCH, 2, "tangent-viviani"},
     {"Viviani branch point, implicit/implicit", CYL_I, SPH_I, {2, 0, 0}, IC_POINT_BRANCH, 2, "tangent-viviani"},
-    {"seed 002 Ex 1 branch point", PAR("cos(u)*cos(v)", "sin(u)*cos(v)", "sin(v)", "u", "v"),
+    {"Bendrici and Boumedien-Zidani (2022) Ex 1 branch point",
+     PAR("cos(u)*cos(v)", "sin(u)*cos(v)", "sin(v)", "u", "v"),
      PAR("0.5*cos(s) + 0.5", "0.5*sin(s)", "t", "s", "t"), {1, 0, 0}, IC_POINT_BRANCH, 2,
-     "tangent-seed002"},
-    {"seed 001 Ex 5.1 branch point", IMP("x^2/0.36 + y^2/0.64 + z^2 - 1"),
+     "tangent-viviani-half"},
+    {"Abdel-All et al. (2012) Ex 5.1 branch point", IMP("x^2/0.36 + y^2/0.64 + z^2 - 1"),
      IMP("x^2/0.2025 + y^2/0.64 + z^2/1.5625 - 1"), {0, 0.8, 0}, IC_POINT_BRANCH, 2,
      "tangent-ellipse51"},
-    {"seed 001 Ex 5.1 branch point (0, -0.8, 0)", IMP("x^2/0.36 + y^2/0.64 + z^2 - 1"),
-     IMP("x^2/0.2025 + y^2/0.64 + z^2/1.5625 - 1"), {0, -0.8, 0}, IC_POINT_BRANCH, 2, NULL},
-    {"seed 001 Ex 5.2 tangential circle", IMP("(x^2 + y^2 + z^2 + 3)^2 - 16*(x^2 + y^2)"),
-     IMP("x^2 + y^2 + z^2 - 1"), {0.6, 0.8, 0}, IC_POINT_TANGENTIAL_CURVE, 1, "tangent-circle52"},
-    {"seed 001 Ex 5.2 tangential circle at (cos 2, sin 2, 0)",
+    {"Abdel-All et al. (2012) Ex 5.1 branch point (0, -0.8, 0)",
+     IMP("x^2/0.36 + y^2/0.64 + z^2 - 1"), IMP("x^2/0.2025 + y^2/0.64 + z^2/1.5625 - 1"),
+     {0, -0.8, 0}, IC_POINT_BRANCH, 2, NULL},
+    {"Abdel-All et al. (2012) Ex 5.2 tangential circle",
+     IMP("(x^2 + y^2 + z^2 + 3)^2 - 16*(x^2 + y^2)"), IMP("x^2 + y^2 + z^2 - 1"), {0.6, 0.8, 0},
+     IC_POINT_TANGENTIAL_CURVE, 1, "tangent-circle52"},
+    {"Abdel-All et al. (2012) Ex 5.2 tangential circle at (cos 2, sin 2, 0)",
      IMP("(x^2 + y^2 + z^2 + 3)^2 - 16*(x^2 + y^2)"), IMP("x^2 + y^2 + z^2 - 1"),
      {-0.41614683654714241, 0.90929742682568171, 0}, IC_POINT_TANGENTIAL_CURVE, 1, NULL},
-    {"seed 001 Ex 5.3 isolated contact", IMP("x^2 + y^2 + z^2 - 1"), IMP("y - 1"), {0, 1, 0},
-     IC_POINT_ISOLATED_CONTACT, 0, NULL},
-    {"seed 002 Ex 3 tangential circle", PAR("8*u - 1", "15*v - 15/2", "0", "u", "v"),
+    {"Abdel-All et al. (2012) Ex 5.3 isolated contact", IMP("x^2 + y^2 + z^2 - 1"), IMP("y - 1"),
+     {0, 1, 0}, IC_POINT_ISOLATED_CONTACT, 0, NULL},
+    {"Bendrici and Boumedien-Zidani (2022) Ex 3 tangential circle",
+     PAR("8*u - 1", "15*v - 15/2", "0", "u", "v"),
      {{"cos(2*pi*s)*(2 + cos(2*pi*t)) - 1/5", "sin(2*pi*s)*(2 + cos(2*pi*t))", "1 + sin(2*pi*t)"},
       NULL, {"s", "t"}, {{0, 1}, {0, 1}}},
-     {-1, -1.8330302779823358, 0}, IC_POINT_TANGENTIAL_CURVE, 1, "tangent-circle002"},
+     {-1, -1.8330302779823358, 0}, IC_POINT_TANGENTIAL_CURVE, 1, "tangent-circle-torus-plane"},
     {"tacnode z = y^2 - x^4 and z = 0", IMP("z - y^2 + x^4"), IMP("z"), {0, 0, 0},
      IC_POINT_TACNODE, 2, "tacnode"},
-    {"seed 002 Ex 2 cusp", PAR("u", "v", "u^3 - v^2", "u", "v"), PAR("s", "t", "0", "s", "t"),
-     {0, 0, 0}, IC_POINT_CUSP, 2, NULL},
+    {"Bendrici and Boumedien-Zidani (2022) Ex 2 cusp", PAR("u", "v", "u^3 - v^2", "u", "v"),
+     PAR("s", "t", "0", "s", "t"), {0, 0, 0}, IC_POINT_CUSP, 2, NULL},
     {"monkey saddle and its tangent plane", PAR("u", "v", "u^3 - 3*u*v^2", "u", "v"), IMP("z"),
      {0, 0, 0}, IC_POINT_HIGHER_ORDER_CONTACT, 3, NULL},
     /* a self-intersection: the sheets u ~ +1 and u ~ -1 of
@@ -226,7 +230,7 @@ static double compare_closed(const ic_local_result *hd, const ic_local_result *c
     return worst;
 }
 
-/* The closed form of seed 000 section 4 (corrected) against the
+/* The closed form of Hassan and Badr (2016) section 4 (corrected) against the
  * height-difference method at random branch points of random, nonlinearly
  * parametrised surface pairs tangent at the origin. Every term of
  * (4.20)-(4.30) is exercised (w'', third and fourth derivatives nonzero). */
@@ -302,12 +306,14 @@ static void test_closed_form_random(void)
         ic_surface_free(B);
     }
     CHECK(tested >= 20, "random branch points tested: %d", tested);
-    printf("seed 000 section 4 closed form vs height-difference at %d random branch points: "
-           "%.2g\n", tested, worst);
+    printf("Hassan and Badr (2016), section 4, closed form vs height-difference at %d random "
+           "branch points: %.2g\n",
+           tested, worst);
 }
 
-/* The corrected seed 001 section 4 against the height-difference method at
- * random branch points of rotated implicit pairs with A = |grad f|/|grad h| != 1. */
+/* The corrected Abdel-All et al. (2012), section 4, against the
+ * height-difference method at random branch points of rotated implicit pairs
+ * with A = |grad f|/|grad h| != 1. */
 static void test_closed_form_implicit_random(void)
 {
     harness_rng rng = {0xbb67ae8584caa73bull};
@@ -374,8 +380,9 @@ static void test_closed_form_implicit_random(void)
         ic_surface_free(B);
     }
     CHECK(tested >= 20, "random implicit branch points tested: %d", tested);
-    printf("seed 001 section 4 closed form vs height-difference at %d random branch points: "
-           "%.2g\n", tested, worst);
+    printf("Abdel-All et al. (2012), section 4, closed form vs height-difference at %d random "
+           "branch points: %.2g\n",
+           tested, worst);
 }
 
 int main(int argc, char **argv)
@@ -420,8 +427,9 @@ int main(int argc, char **argv)
             CHECK(res.npaper == 4 && fabs(res.paper_values[0] - 1) < 1e-14 &&
                       fabs(res.paper_values[1] - 4.5) < 1e-12 && fabs(res.paper_values[2]) < 1e-12 &&
                       fabs(res.paper_values[3] + 4375.0 / 162) < 1e-11,
-                  "%s: seed 001 (4.10) coefficients %g %g %g %g", tc->label, res.paper_values[0],
-                  res.paper_values[1], res.paper_values[2], res.paper_values[3]);
+                  "%s: Abdel-All et al. (2012), eq. (4.10), coefficients %g %g %g %g", tc->label,
+                  res.paper_values[0], res.paper_values[1], res.paper_values[2],
+                  res.paper_values[3]);
             for (int b = 0; b < res.nbranches; b++) /* kappa = 320/319, tau = 0 */
                 CHECK(fabs(res.branches[b].kappa - 320.0 / 319) < 1e-12 &&
                           fabs(res.branches[b].tau) < 1e-12,
@@ -430,9 +438,11 @@ int main(int argc, char **argv)
         if (tc->type == IC_POINT_TANGENTIAL_CURVE && strstr(tc->label, "5.2")) /* kappa 1, tau 0 */
             CHECK(fabs(res.branches[0].kappa - 1) < 1e-12 && fabs(res.branches[0].tau) < 1e-12,
                   "%s: kappa %.17g tau %g", tc->label, res.branches[0].kappa, res.branches[0].tau);
-        if (strstr(tc->label, "Viviani branch point, param/param")) /* seed 000 (4.8) */
+        /* Hassan and Badr (2016), eq. (4.8) */
+        if (strstr(tc->label, "Viviani branch point, param/param"))
             CHECK(res.npaper == 4 && !strcmp(res.paper_names[0], "a11") && res.paper_values[3] > 0,
-                  "%s: seed 000 coefficients, Delta %g", tc->label, res.paper_values[3]);
+                  "%s: Hassan and Badr (2016) coefficients, Delta %g", tc->label,
+                  res.paper_values[3]);
         if (tc->type == IC_POINT_ISOLATED_CONTACT) /* ERRATA: A = 2, a11 = 8, a12 = 0, a13 = 8 */
             CHECK(res.npaper == 4 && fabs(res.paper_values[0] - 2) < 1e-14 &&
                       fabs(res.paper_values[1] - 8) < 1e-13 && fabs(res.paper_values[2]) < 1e-13 &&
@@ -444,7 +454,7 @@ int main(int argc, char **argv)
                   res.discriminant);
         if (tc->type == IC_POINT_CUSP) {
             /* u^3 = v^2: half-branches (t^2, +-t^3) leave along +x; n -> (0, +-1, 0)
-             * (ERRATA rows 13-14) */
+             * (docs/ERRATA.md, items 13-14) */
             CHECK(res.contact_order == 3, "cusp of order 3");
             for (int b = 0; b < 2; b++) {
                 const ic_branch *br = &res.branches[b];
@@ -469,7 +479,7 @@ int main(int argc, char **argv)
             st = ic_local_apparatus(pair, &cf, &pt, 3, IC_METHOD_CLOSED_FORM, &opt, &err);
             CHECK(st == IC_OK && cf.nbranches == 2 && cf.branches[0].kappa < 1e-12 &&
                       cf.branches[1].kappa < 1e-12,
-                  "self-intersection, seed 000 section 4: %s", st ? err.message : "");
+                  "self-intersection, Hassan and Badr (2016) section 4: %s", st ? err.message : "");
         }
         if (tc->type == IC_POINT_HIGHER_ORDER_CONTACT) {
             /* x^3 - 3 x y^2 = x (x^2 - 3 y^2): the lines at 90, 30 and 150 degrees */

@@ -128,7 +128,7 @@ static void test_helix(void)
     ic_surface_free(B);
 }
 
-/* Enneper-type surface of seed 000 Ex. 2: its double curve
+/* Enneper-type surface of Hassan and Badr (2016), Example 2: its double curve
  * (4u + 8u^3/3, 0, -3 - 2u^2) from R(sqrt 2, 3) = R(sqrt 2, -3) to the domain */
 static void test_self_intersection(void)
 {
@@ -311,8 +311,8 @@ static void test_whole(void)
         CHECK(ic_trace_result_report(r)->uncovered_cells == 0, "nothing left uncovered");
     }
     release(r, A, B, pair);
-    /* seed 001 Ex. 5.1: two closed planar ellipses crossing at the branch points
-     * (0, +-0.8, 0); each ellipse a cos p, 0.8 sin p, k a cos p has length
+    /* Abdel-All et al. (2012), Example 5.1: two closed planar ellipses crossing
+     * at the branch points (0, +-0.8, 0); each ellipse a cos p, 0.8 sin p, k a cos p has length
      * 4 times its quarter, by Simpson below (independent of the tracer) */
     r = trace_pair("x^2/0.36 + y^2/0.64 + z^2 - 1", "x^2/0.2025 + y^2/0.64 + z^2/1.5625 - 1", 1.5,
                    &A, &B, &pair, &st);
@@ -337,9 +337,10 @@ static void test_whole(void)
         }
     }
     release(r, A, B, pair);
-    /* a tangential circle (seed 001 Ex. 5.2: the torus of radii 2 and 1 touching
-     * the unit sphere along x^2 + y^2 = 1, z = 0): found by the collinear-normals
-     * search, traced as a tangential curve, shape circle, length 2 pi */
+    /* a tangential circle (Abdel-All et al. (2012), Example 5.2: the torus of
+     * radii 2 and 1 touching the unit sphere along x^2 + y^2 = 1, z = 0): found
+     * by the collinear-normals search, traced as a tangential curve, shape
+     * circle, length 2 pi */
     r = trace_pair("(x^2 + y^2 + z^2 + 3)^2 - 16*(x^2 + y^2)", "x^2 + y^2 + z^2 - 1", 3.5, &A, &B,
                    &pair, &st);
     CHECK(st == IC_OK && ic_trace_result_num_curves(r) == 1 && ic_trace_result_num_specials(r) == 0,
@@ -365,8 +366,8 @@ static void test_whole(void)
 }
 
 /* Self-intersection by the four-parameter search: the Enneper-type surface of
- * seed 000 Ex. 2 on [-5, 5]^2 has two double curves, each ending where a
- * preimage reaches the domain edge, in the planes y = 0
+ * Hassan and Badr (2016), Example 2, on [-5, 5]^2 has two double curves,
+ * each ending where a preimage reaches the domain edge, in the planes y = 0
  * (preimages (w, +-v), v^2 = 3(1 + w^2), z = -3 - 2w^2) and x = 0 (its image
  * under (x, y, z) -> (-y, -x, -z): preimages (+-u, w), u^2 = 3(1 + w^2)). */
 static void test_whole_self(void)
@@ -557,9 +558,10 @@ static void test_isolated_contacts(void)
     }
 }
 
-/* Seed 002 Ex. 3: the plane z = 0 and the torus of radii 2 and 1 centred at
- * (-1/5, 0, 1), both parametric, touch along the circle (x + 1/5)^2 + y^2 = 4,
- * z = 0: one closed tangential circle of length 4 pi. */
+/* Bendrici and Boumedien-Zidani (2022), Example 3: the plane z = 0 and the
+ * torus of radii 2 and 1 centred at (-1/5, 0, 1), both parametric, touch
+ * along the circle (x + 1/5)^2 + y^2 = 4, z = 0: one closed tangential circle
+ * of length 4 pi. */
 static void test_tangential_parametric(void)
 {
     const char *plane[3] = {"8*u - 1", "15*v - 15/2", "0"};
@@ -584,7 +586,8 @@ static void test_tangential_parametric(void)
         st = ic_pair_new(&pair, A, B, &err);
     if (st == IC_OK)
         st = ic_trace(&r, pair, &opt, &err);
-    CHECK(st == IC_OK && ic_trace_result_num_curves(r) == 1, "seed 002 Ex. 3: one curve (%s)",
+    CHECK(st == IC_OK && ic_trace_result_num_curves(r) == 1,
+          "Bendrici and Boumedien-Zidani (2022), Example 3: one curve (%s)",
           st == IC_OK ? "traced" : err.message);
     if (st == IC_OK && ic_trace_result_num_curves(r) == 1) {
         const ic_trace_curve *c = ic_trace_result_curve(r, 0);
@@ -597,9 +600,11 @@ static void test_tangential_parametric(void)
         }
         CHECK(c->tangential && c->closed && c->shape == IC_SHAPE_CIRCLE &&
                   fabs(c->length - L) <= 1e-9 * L && worst <= 1e-10,
-              "seed 002 Ex. 3: tangential %d, closed %d, %s, length %.17g of 4 pi, off %g",
+              "Bendrici and Boumedien-Zidani (2022), Example 3: tangential %d, closed %d, %s, "
+              "length %.17g of 4 pi, off %g",
               c->tangential, c->closed, ic_shape_name(c->shape), c->length, worst);
-        printf("seed 002 Ex. 3 tangential circle: %d points, length error %.2g, off %.2g\n",
+        printf("Bendrici and Boumedien-Zidani (2022), Example 3, tangential circle: %d points, "
+               "length error %.2g, off %.2g\n",
                c->npoints, fabs(c->length - L) / L, worst);
     }
     ic_trace_result_free(r);

@@ -97,8 +97,8 @@ static void check_tacnode(const traced *t)
     printf("%-24s 2 parabolas through the tacnode, length error %.2g\n", "tacnode", worst);
 }
 
-/* Seed 002 Ex. 2: z = u^3 - v^2 against z = 0, the cusp u^3 = v^2 at the
- * origin; each arc v = +-u^(3/2), u in [0, 1], has length
+/* Bendrici and Boumedien-Zidani (2022), Example 2: z = u^3 - v^2 against
+ * z = 0, the cusp u^3 = v^2 at the origin; each arc v = +-u^(3/2), u in [0, 1], has length
  * integral_0^1 sqrt(1 + 9u/4) du = (8/27) ((13/4)^(3/2) - 1). */
 static void check_cusp(const traced *t)
 {
@@ -156,7 +156,7 @@ int main(int argc, char **argv)
     if (trace_example(&t, dir, "tacnode.json") == 0)
         check_tacnode(&t);
     release(&t);
-    if (trace_example(&t, dir, "seed002-cusp.json") == 0)
+    if (trace_example(&t, dir, "cusp.json") == 0)
         check_cusp(&t);
     release(&t);
     return harness_finish("test_trace_examples");

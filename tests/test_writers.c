@@ -47,7 +47,7 @@ static void check_csv(const traced *t, const char *name)
     CHECK(fgets(line, sizeof line, f) &&
               strcmp(line, "curve,s,x,y,z,u,v,p,q,tx,ty,tz,nx,ny,nz,bx,by,bz,kappa,tau,type\n") ==
                   0,
-          "%s: the CSV header of DESIGN.md 3.3", name);
+          "%s: the CSV header of docs/output-formats.md", name);
     int par[2];
     for (int s = 0; s < 2; s++)
         par[s] = ic_surface_get_kind(ic_pair_surface(t->pair, s)) == IC_PARAMETRIC;

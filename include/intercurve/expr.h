@@ -1,6 +1,6 @@
 /**
  * @file expr.h
- * The formula language (DESIGN.md 3.2): parse, report errors with the
+ * The formula language (docs/formulas.md): parse, report errors with the
  * column, compile to a flat tape, evaluate on doubles, intervals and jets.
  *
  * Grammar (lowest precedence first):

@@ -1,6 +1,7 @@
 /**
  * @file local.h
- * The differential geometry of an intersection at one point (DESIGN.md 2.1).
+ * The differential geometry of an intersection at one point (docs/local.md,
+ * docs/tangential.md).
  *
  * A pair is two surfaces A and B (any mix of parametric and implicit), or one
  * parametric surface with itself (a self-intersection: A and B are the two
@@ -9,7 +10,8 @@
  * at a transversal point the curve through it is oriented by
  * t = N_A x N_B / |N_A x N_B| and its Frenet apparatus and arc-length
  * derivatives c^(1..K) are computed by
- *  - the jet method (any order K <= IC_LOCAL_MAX_ORDER; seed 004): order by
+ *  - the jet method (any order K <= IC_LOCAL_MAX_ORDER; Patrikalakis and
+ *    Maekawa (2002), section 6.3.4; docs/references.md): order by
  *    order, three linear equations with the same matrix [t; N_A; N_B];
  *  - the closed-form method (orders <= 3): the papers' formulas, one function
  *    per paper and case (src/local/closed_*.c cite the equations).
@@ -31,7 +33,8 @@ extern "C" {
 /** Highest order of the closed-form method (the papers stop at c'''). */
 #define IC_CLOSED_FORM_MAX_ORDER 3
 
-/** Kinds of intersection points (DESIGN.md 2.2 names them). */
+/** Kinds of intersection points (named in docs/tangential.md and
+ *  docs/output-formats.md). */
 typedef enum {
     IC_POINT_TRANSVERSAL,
     IC_POINT_BRANCH,
@@ -46,7 +49,7 @@ typedef enum {
     IC_POINT_SURFACE_SINGULAR
 } ic_point_type;
 
-/** "transversal", "branch-point", ... (DESIGN.md names). */
+/** "transversal", "branch-point", ... (the names of docs/output-formats.md). */
 const char *ic_point_type_name(ic_point_type type);
 
 typedef enum {
@@ -181,7 +184,7 @@ IC_NODISCARD ic_status ic_local_locate_degenerate(ic_pair *pair, ic_local_point 
                                                   const ic_local_point *near, double reach,
                                                   const ic_local_options *opt, ic_error *err);
 
-/** Darboux quantities of the curve on one surface (DESIGN.md 2.1). */
+/** Darboux quantities of the curve on one surface (docs/local.md, "Outputs"). */
 typedef struct {
     double kappa_n; /**< normal curvature c'' . N */
     double kappa_g; /**< geodesic curvature c'' . (N x t) */
@@ -234,8 +237,9 @@ typedef struct {
      *  tacnode) or of the leading form (higher-order contact); 0 otherwise */
     int contact_order;
     /** closed-form method at tangential points: the paper's coefficients
-     *  (seed 000 (4.8): a11, a12, a22 and its discriminant a12^2 - a11 a22;
-     *  seed 001 (4.1), (4.10): A, a11, a12, a13) */
+     *  (Hassan and Badr (2016), eq. (4.8): a11, a12, a22 and the discriminant
+     *  a12^2 - a11 a22; Abdel-All et al. (2012), eqs. (4.1), (4.10): A, a11,
+     *  a12, a13) */
     int npaper;
     const char *paper_names[4];
     double paper_values[4];
@@ -259,9 +263,9 @@ IC_NODISCARD ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res,
                                           const ic_local_point *pt, int order, ic_method method,
                                           const ic_local_options *opt, ic_error *err);
 
-/** Local straight-line and plane-curve conditions (seed 001 corollaries
- *  3.1, 3.2) at a branch: kappa <= tol (1/length), and tau = 0 within tol
- *  (1/length); a branch with undefined torsion is no plane curve witness. */
+/** Local straight-line and plane-curve conditions (Abdel-All et al. (2012),
+ *  corollaries 3.1, 3.2) at a branch: kappa <= tol (1/length), and tau = 0
+ *  within tol (1/length); a branch with undefined torsion is no plane curve witness. */
 int ic_branch_is_line(const ic_branch *br, double tol);
 int ic_branch_is_planar(const ic_branch *br, double tol);
 

@@ -1,6 +1,6 @@
 /**
  * @file problem.h
- * Problem files (DESIGN.md 3.1; docs/problem-files.md lists every key).
+ * Problem files (docs/problem-files.md lists every key).
  *
  * Every error names the file, the JSON path ("surfaces[1].xyz[2]") in
  * err->path and, for a formula, the column in err->column; the message then

@@ -1,6 +1,6 @@
 /**
  * @file trace.h
- * Marching along an intersection curve (DESIGN.md 2.3), step by step.
+ * Marching along an intersection curve (docs/tracing.md), step by step.
  *
  * From a transversal point the tracer steps along the curve: a Taylor
  * predictor from the local jet of order `order` (the point and, on each
@@ -103,7 +103,7 @@ const ic_trace_point *ic_tracer_point(const ic_tracer *tr, int i);
 
 /* ---- the whole intersection ---- */
 
-/** Shapes of a traced curve (seed 001 corollaries 3.1-3.5). */
+/** Shapes of a traced curve (Abdel-All et al. (2012), corollaries 3.1-3.5). */
 typedef enum {
     IC_SHAPE_GENERAL,
     IC_SHAPE_LINE,

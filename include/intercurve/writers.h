@@ -1,6 +1,6 @@
 /**
  * @file writers.h
- * Traced intersections as files for other tools (DESIGN.md 3.3): CSV, VTK
+ * Traced intersections as files for other tools: CSV, VTK
  * PolyData (legacy ASCII) and OBJ polylines. Each writes to an open stream and
  * reports a failed write as IC_ERR_IO; docs/output-formats.md describes the
  * columns and arrays.

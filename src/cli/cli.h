@@ -1,5 +1,6 @@
-/* Shared pieces of the intercurve command. Exit codes (DESIGN.md 3.3):
- * 0 success, 1 wrong input, 2 the computation cannot be done. */
+/* Shared pieces of the intercurve command. Exit codes (docs/conventions.md,
+ * "Exit status of the command"): 0 success, 1 wrong input, 2 the
+ * computation cannot be done. */
 #ifndef IC_CLI_H
 #define IC_CLI_H
 

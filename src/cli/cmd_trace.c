@@ -1,4 +1,4 @@
-/* intercurve trace: the whole intersection as JSON (DESIGN.md 3.3). */
+/* intercurve trace: the whole intersection as JSON (docs/output-formats.md). */
 #include "cli.h"
 
 #include "io/safe_file.h"

@@ -1,5 +1,5 @@
-/* Traced intersections as CSV, VTK PolyData and OBJ (DESIGN.md 3.3,
- * docs/output-formats.md). Numbers are written with 17 significant digits so
+/* Traced intersections as CSV, VTK PolyData and OBJ
+ * (docs/output-formats.md). Numbers are written with 17 significant digits so
  * that they read back to the same doubles. */
 #include "intercurve/writers.h"
 

@@ -38,9 +38,9 @@ ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res, const ic_local
         if (closed && sh[0].parametric != sh[1].parametric)
             return ic_error_set(err, IC_ERR_INVALID, 0,
                                 "tangential point (normals %.3g rad from parallel): the "
-                                "closed forms there cover two parametric surfaces (seed 000 "
-                                "section 4) or two implicit ones (seed 001 section 4); use "
-                                "height-difference",
+                                "closed forms there cover two parametric surfaces (Hassan and "
+                                "Badr (2016), section 4) or two implicit ones (Abdel-All et "
+                                "al. (2012), section 4); use height-difference",
                                 res->angle);
         const int perturb = res->method == IC_METHOD_PERTURBATION;
         if (!perturb && !closed)
@@ -51,14 +51,14 @@ ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res, const ic_local
             return st;
         /* the papers' coefficients, whatever the method */
         if (sh[0].parametric && sh[1].parametric)
-            ic_closed_seed000_coefficients(res, sh);
+            ic_closed_hassan_badr_coefficients(res, sh);
         else if (!sh[0].parametric && !sh[1].parametric)
-            ic_closed_seed001_coefficients(res, sh);
+            ic_closed_abdel_all_coefficients(res, sh);
         if (perturb)
             return ic_perturbation(pair, res, sh, opt, err);
         if (closed) {
-            st = sh[0].parametric ? ic_closed_seed000_tangential(res, sh, opt, err)
-                                  : ic_closed_seed001_tangential(res, sh, opt, err);
+            st = sh[0].parametric ? ic_closed_hassan_badr_tangential(res, sh, opt, err)
+                                  : ic_closed_abdel_all_tangential(res, sh, opt, err);
             for (int i = 0; st == IC_OK && i < res->nbranches; i++)
                 ic_branch_finish(&res->branches[i], sh, opt);
             return st;

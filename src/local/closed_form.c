@@ -1,6 +1,7 @@
 /* The closed-form method: the papers' formulas, dispatched by pairing
- * (docs/local.md): seed 000 for parametric/parametric and
- * self-intersections, seed 001 for implicit/implicit, seeds 002 and 003
+ * (docs/local.md): Hassan and Badr (2016) for parametric/parametric and
+ * self-intersections, Abdel-All et al. (2012) for implicit/implicit,
+ * Bendrici and Boumedien-Zidani (2022) with Patrikalakis and Maekawa (2002)
  * (which work for any mix) for parametric/implicit. */
 #include "local_internal.h"
 #include "common/vec3.h"
@@ -51,11 +52,11 @@ ic_status ic_closed_form_method(ic_branch *br, const ic_sheet sh[2], int order, 
 {
     ic_status st;
     if (sh[0].parametric && sh[1].parametric)
-        st = ic_closed_seed000(br, sh, NULL, err);
+        st = ic_closed_hassan_badr(br, sh, NULL, err);
     else if (!sh[0].parametric && !sh[1].parametric)
-        st = ic_closed_seed001(br, sh, NULL, err);
+        st = ic_closed_abdel_all(br, sh, NULL, err);
     else
-        st = ic_closed_seed003(br, sh, NULL, err);
+        st = ic_closed_patrikalakis_maekawa(br, sh, NULL, err);
     br->order = order; /* the closed forms give 3 orders; keep what was asked */
     return st;
 }

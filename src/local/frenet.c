@@ -1,6 +1,6 @@
 /*
  * From arc-length derivatives to the Frenet apparatus and the Darboux
- * quantities (DESIGN.md 2.1).
+ * quantities (docs/local.md, "Outputs").
  *
  * c' = t, c'' = kappa n, b = t x n,
  * c''' = -kappa^2 t + kappa' n + kappa tau b            (so tau = det(c', c'', c''')/kappa^2),

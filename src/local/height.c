@@ -1,6 +1,6 @@
 /*
  * Heights over the common tangent plane at a tangential point P
- * (DESIGN.md 2.2): each sheet as a graph P + x e1 + y e2 + psi(x, y) N, with
+ * (docs/tangential.md): each sheet as a graph P + x e1 + y e2 + psi(x, y) N, with
  * psi a bivariate jet.
  *  - implicit f: f(P + x e1 + y e2 + psi N) = 0 solved degree by degree:
  *    psi_d = -[f(X with psi_<d)]_d / (grad f . N), after a Newton solve for

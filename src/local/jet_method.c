@@ -1,6 +1,7 @@
 /*
- * The jet method (DESIGN.md 2.1; seed 004, the algorithm of section 6.3.4
- * whose formulas the extraction lost): arc-length derivatives of any order.
+ * The jet method (docs/local.md; the algorithm of Patrikalakis and Maekawa
+ * (2002), section 6.3.4, eqs. (6.47)-(6.55)): arc-length derivatives of any
+ * order.
  *
  * With c(s) = sum_k a_k s^k (a_k = c^(k)/k!), each order k >= 2 gives three
  * linear equations for a_k:

@@ -78,12 +78,12 @@ ic_status ic_closed_form_method(ic_branch *br, const ic_sheet sh[2], int order, 
 typedef struct {
     double kappa, tau;
 } ic_paper_values;
-ic_status ic_closed_seed000(ic_branch *br, const ic_sheet sh[2], ic_paper_values *paper,
-                            ic_error *err);
-ic_status ic_closed_seed001(ic_branch *br, const ic_sheet sh[2], ic_paper_values *paper,
-                            ic_error *err);
-ic_status ic_closed_seed003(ic_branch *br, const ic_sheet sh[2], ic_paper_values *paper,
-                            ic_error *err);
+ic_status ic_closed_hassan_badr(ic_branch *br, const ic_sheet sh[2], ic_paper_values *paper,
+                                ic_error *err);
+ic_status ic_closed_abdel_all(ic_branch *br, const ic_sheet sh[2], ic_paper_values *paper,
+                              ic_error *err);
+ic_status ic_closed_patrikalakis_maekawa(ic_branch *br, const ic_sheet sh[2],
+                                         ic_paper_values *paper, ic_error *err);
 
 /* x with t . x = r[0], N_A . x = r[1], N_B . x = r[2] (unit t normal to
  * both): x = (r0 N_A x N_B + r1 N_B x t + r2 t x N_A) / det[t; N_A; N_B]. */

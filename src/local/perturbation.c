@@ -1,5 +1,6 @@
 /*
- * The perturbation method at a tangential point (seed 002, section 3).
+ * The perturbation method at a tangential point (Bendrici and
+ * Boumedien-Zidani (2022), section 3; docs/references.md).
  *
  * Singular points (3.1)-(3.3): the intersection points P(rho) on circles of
  * radius rho around P in the tangent plane are transversal; T (3.2) and n
@@ -323,10 +324,11 @@ static ic_status singular_point(ic_pair *pair, ic_local_result *res, const ic_sh
     return IC_OK;
 }
 
-/* A cusp (seed 002 Example 2): both half-branches leave P on one side, each
- * a root of the circle; t and n at the nearby points converge like rho^(1/2),
- * so the radii shrink by 4 and Richardson works in sqrt(rho) (ratio 2). The
- * curvature diverges: the half-branches get one-sided t, n, b only. */
+/* A cusp (Bendrici and Boumedien-Zidani (2022), Example 2): both
+ * half-branches leave P on one side, each a root of the circle; t and n at
+ * the nearby points converge like rho^(1/2), so the radii shrink by 4 and
+ * Richardson works in sqrt(rho) (ratio 2). The curvature diverges: the
+ * half-branches get one-sided t, n, b only. */
 static ic_status cusp(ic_pair *pair, ic_local_result *res, const ic_sheet sh[2], const pctx *c,
                       double L, const ic_local_options *opt, ic_error *err)
 {

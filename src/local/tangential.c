@@ -1,7 +1,7 @@
 /*
- * The height-difference method at a tangential point (DESIGN.md 2.2,
- * docs/tangential.md). With g = psi_A - psi_B the height difference over the
- * common tangent plane, the intersection near P is the zero set of g, a
+ * The height-difference method at a tangential point (docs/tangential.md).
+ * With g = psi_A - psi_B the height difference over the common tangent
+ * plane, the intersection near P is the zero set of g, a
  * plane curve singular at 0. In coordinates (r, w) along a unit direction d
  * and its normal d_perp, each smooth branch is w = phi(r) + r^p omega(r),
  * where omega solves G(r, omega) = g(r, w) / r^q = 0 by the implicit

@@ -29,28 +29,29 @@ ic_status ic_height_difference(ic_local_result *res, const ic_sheet sh[2], int o
 ic_status ic_height_degenerate_step(const ic_sheet sh[2], int m, double reach,
                                     const ic_local_options *opt, double X[3], ic_error *err);
 
-/* The perturbation method (seed 002 section 3) for the branches of a point
- * already classified in res (branch point, higher-order contact, tacnode:
- * nearby points on small circles; tangential curve: B shifted along N by
- * epsilon); Richardson-extrapolated, with res->error_estimate. */
+/* The perturbation method (Bendrici and Boumedien-Zidani (2022), section 3)
+ * for the branches of a point already classified in res (branch point,
+ * higher-order contact, tacnode: nearby points on small circles; tangential
+ * curve: B shifted along N by epsilon); Richardson-extrapolated, with
+ * res->error_estimate. */
 ic_status ic_perturbation(ic_pair *pair, ic_local_result *res, const ic_sheet sh[2],
                           const ic_local_options *opt, ic_error *err);
 
-/* Seed 000 section 4 at a tangential point of two parametric sheets already
- * classified in res (branch point or tangential curve): the paper's
- * coefficients and c', c'', c''' on each branch. */
-ic_status ic_closed_seed000_tangential(ic_local_result *res, const ic_sheet sh[2],
-                                       const ic_local_options *opt, ic_error *err);
+/* Hassan and Badr (2016), section 4, at a tangential point of two
+ * parametric sheets already classified in res (branch point or tangential
+ * curve): the paper's coefficients and c', c'', c''' on each branch. */
+ic_status ic_closed_hassan_badr_tangential(ic_local_result *res, const ic_sheet sh[2],
+                                           const ic_local_options *opt, ic_error *err);
 
-/* Seed 001 section 4 (corrected) at a tangential point of two implicit
- * sheets classified in res: the paper's A, a11, a12, a13 and c', c'', c'''
- * on each branch (replacing the classification's branches). */
-ic_status ic_closed_seed001_tangential(ic_local_result *res, const ic_sheet sh[2],
-                                       const ic_local_options *opt, ic_error *err);
+/* Abdel-All et al. (2012), section 4 (corrected), at a tangential point of
+ * two implicit sheets classified in res: the paper's A, a11, a12, a13 and
+ * c', c'', c''' on each branch (replacing the classification's branches). */
+ic_status ic_closed_abdel_all_tangential(ic_local_result *res, const ic_sheet sh[2],
+                                         const ic_local_options *opt, ic_error *err);
 
 /* The papers' coefficients alone (reported at every tangential point of a
  * parametric/parametric or implicit/implicit pair, whatever the method). */
-void ic_closed_seed001_coefficients(ic_local_result *res, const ic_sheet sh[2]);
-void ic_closed_seed000_coefficients(ic_local_result *res, const ic_sheet sh[2]);
+void ic_closed_abdel_all_coefficients(ic_local_result *res, const ic_sheet sh[2]);
+void ic_closed_hassan_badr_coefficients(ic_local_result *res, const ic_sheet sh[2]);
 
 #endif

@@ -1,4 +1,5 @@
-/* Curve shapes from seed 001's corollaries, and their names. */
+/* Curve shapes from the corollaries 3.1-3.5 of Abdel-All et al. (2012), and
+ * their names. */
 #include "trace_internal.h"
 #include "common/vec3.h"
 
@@ -15,11 +16,12 @@ const char *ic_shape_name(ic_shape shape)
 
 /* Points where the normals are this close to parallel carry large
  * transversal torsion errors (eps/angle^2 near Viviani's branch point, about
- * eps/angle^3.5 near seed 001 Ex. 5.1's: 500 at 1e-5 rad, 1e-5 at 1e-3 rad;
- * docs/tangential.md): the shape tests skip them. */
+ * eps/angle^3.5 near those of Abdel-All et al. (2012), Example 5.1: 500 at
+ * 1e-5 rad, 1e-5 at 1e-3 rad; docs/tangential.md): the shape tests skip
+ * them. */
 #define SHAPE_MIN_ANGLE 1e-2
 
-/* Seed 001 corollaries 3.1-3.5 on the sampled kappa and tau, relative to the
+/* Abdel-All et al. (2012), corollaries 3.1-3.5, on the sampled kappa and tau, relative to the
  * largest curvature (lines: to the total turning kappa L). The shape; along a transversal curve the
  * points near tangency are skipped (their torsion is unreliable), along a tangential curve none is
  * (its apparatus comes from the height-difference method). */

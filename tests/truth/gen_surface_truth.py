@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Truth for tests/test_surface.c: partial derivatives of the seed papers'
+"""Truth for tests/test_surface.c: partial derivatives of the papers'
 surfaces, exact by sympy differentiation, printed with 20 digits.
 
 Each case: a surface in the formula language (parsed by the C test with
@@ -34,40 +34,40 @@ def monomials(m, K):
 
 # name, kind, formulas for the C parser, sympy expressions, point
 PARAMETRIC = [
-    ("seed000-cylinder", ["1 + sin(v)", "cos(v)", "u"],
+    ("viviani-cylinder", ["1 + sin(v)", "cos(v)", "u"],
      [1 + sp.sin(v), sp.cos(v), u], (sp.Rational(3, 10), sp.Rational(7, 5))),
-    ("seed000-sphere", ["2*cos(u)*cos(v)", "2*sin(u)*cos(v)", "2*sin(v)"],
+    ("sphere-r2", ["2*cos(u)*cos(v)", "2*sin(u)*cos(v)", "2*sin(v)"],
      [2 * sp.cos(u) * sp.cos(v), 2 * sp.sin(u) * sp.cos(v), 2 * sp.sin(v)],
      (sp.Rational(-6, 5), sp.Rational(2, 5))),
-    ("seed000-enneper", ["u - u^3/3 + u*v^2", "-v - u^2*v + v^3/3", "u^2 - v^2"],
+    ("enneper", ["u - u^3/3 + u*v^2", "-v - u^2*v + v^3/3", "u^2 - v^2"],
      [u - u**3 / 3 + u * v**2, -v - u**2 * v + v**3 / 3, u**2 - v**2],
      (sp.sqrt(2), sp.Integer(3))),
-    ("seed002-sphere", ["cos(u)*cos(v)", "sin(u)*cos(v)", "sin(v)"],
+    ("unit-sphere", ["cos(u)*cos(v)", "sin(u)*cos(v)", "sin(v)"],
      [sp.cos(u) * sp.cos(v), sp.sin(u) * sp.cos(v), sp.sin(v)],
      (sp.Rational(2385, 10000), sp.Rational(-31, 100))),
-    ("seed002-cylinder", ["0.5*cos(u) + 0.5", "0.5*sin(u)", "v"],
+    ("cylinder-r0.5", ["0.5*cos(u) + 0.5", "0.5*sin(u)", "v"],
      [sp.cos(u) / 2 + sp.Rational(1, 2), sp.sin(u) / 2, v], (sp.Rational(9, 10), sp.Rational(1, 3))),
-    ("seed002-cubic", ["u", "v", "u^3 - v^2"], [u, v, u**3 - v**2],
+    ("cubic-graph", ["u", "v", "u^3 - v^2"], [u, v, u**3 - v**2],
      (sp.Rational(-7, 10), sp.Rational(13, 10))),
-    ("seed002-torus", ["cos(2*pi*u)*(2 + cos(2*pi*v)) - 1/5", "sin(2*pi*u)*(2 + cos(2*pi*v))",
+    ("torus-parametric", ["cos(2*pi*u)*(2 + cos(2*pi*v)) - 1/5", "sin(2*pi*u)*(2 + cos(2*pi*v))",
                        "1 + sin(2*pi*v)"],
      [sp.cos(2 * pi * u) * (2 + sp.cos(2 * pi * v)) - sp.Rational(1, 5),
       sp.sin(2 * pi * u) * (2 + sp.cos(2 * pi * v)), 1 + sp.sin(2 * pi * v)],
      (sp.Rational(6845, 10000), sp.Rational(3, 4))),
 ]
 IMPLICIT = [
-    ("seed001-ellipsoid-f", "x^2/0.6^2 + y^2/0.8^2 + z^2 - 1",
+    ("ellipsoid-f", "x^2/0.6^2 + y^2/0.8^2 + z^2 - 1",
      x**2 / sp.Rational(9, 25) + y**2 / sp.Rational(16, 25) + z**2 - 1,
      (sp.Rational(27, 160), 2 * sp.sqrt(3) / 5, 5 * sp.sqrt(7) / 32)),
-    ("seed001-ellipsoid-h", "x^2/0.45^2 + y^2/0.8^2 + z^2/1.25^2 - 1",
+    ("ellipsoid-h", "x^2/0.45^2 + y^2/0.8^2 + z^2/1.25^2 - 1",
      x**2 / sp.Rational(81, 400) + y**2 / sp.Rational(16, 25) + z**2 / sp.Rational(25, 16) - 1,
      (sp.Rational(27, 160), 2 * sp.sqrt(3) / 5, 5 * sp.sqrt(7) / 32)),
-    ("seed001-torus", "(x^2 + y^2 + z^2 + 3)^2 - 16*(x^2 + y^2)",
+    ("torus-implicit", "(x^2 + y^2 + z^2 + 3)^2 - 16*(x^2 + y^2)",
      (x**2 + y**2 + z**2 + 3)**2 - 16 * (x**2 + y**2),
      (sp.Rational(3, 5), sp.Rational(4, 5), sp.Rational(1, 10))),
-    ("seed001-ex54-f", "x^2 - y^2 + z - 1", x**2 - y**2 + z - 1,
+    ("paraboloid-cubic-f", "x^2 - y^2 + z - 1", x**2 - y**2 + z - 1,
      (sp.sqrt(sp.Rational(11, 2)), sp.sqrt(sp.Rational(5, 2)), sp.Integer(-2))),
-    ("seed001-ex54-h", "x^2 + y^2 + z^3", x**2 + y**2 + z**3,
+    ("paraboloid-cubic-h", "x^2 + y^2 + z^3", x**2 + y**2 + z**3,
      (sp.sqrt(sp.Rational(11, 2)), sp.sqrt(sp.Rational(5, 2)), sp.Integer(-2))),
     ("analytic-mix", "exp(x/2)*sin(y) - log(2 + z^2) + sqrt(1 + x^2*y^2)",
      sp.exp(x / 2) * sp.sin(y) - sp.log(2 + z**2) + sp.sqrt(1 + x**2 * y**2),

@@ -7,20 +7,20 @@ Closed-form curves: the derivatives with respect to arc length come from
 repeated application of D = |c'(p)|^-1 d/dp to the power series of an exact
 parametrisation c(p0 + h) (mpmath at 60 digits: Taylor coefficients of the
 sympy expression, then series derivative and series division).
-  - Viviani's curve (seed 000 Example 1): (1 + cos p, sin p, 2 sin(p/2)) lies on
-    the cylinder (x-1)^2 + y^2 = 1 and the sphere x^2 + y^2 + z^2 = 4;
+  - Viviani's curve (Hassan and Badr (2016), Example 1): (1 + cos p, sin p,
+    2 sin(p/2)) lies on the cylinder (x-1)^2 + y^2 = 1 and the sphere x^2 + y^2 + z^2 = 4;
   - a circle of the sphere x^2 + y^2 + z^2 = 4 and the plane z = 1;
   - the circular helix (cos p, sin p, p/2) of the cylinder x^2 + y^2 = 1 and
     the helicoid (v cos u, v sin u, u/2);
-  - a planar ellipse of the two ellipsoids of seed 001 Example 5.1, in the
-    plane z = k x, k^2 = (1/0.2025 - 1/0.36)/(1 - 1/1.5625);
+  - a planar ellipse of the two ellipsoids of Abdel-All et al. (2012),
+    Example 5.1, in the plane z = k x, k^2 = (1/0.2025 - 1/0.36)/(1 - 1/1.5625);
   - the double curve (4u + 8u^3/3, 0, -3 - 2u^2) of the Enneper-type surface of
-    seed 000 Example 2, with preimages (u, +-sqrt(3(1 + u^2))).
-Implicit curve without closed form: seed 001 Example 5.4 at
+    Hassan and Badr (2016), Example 2, with preimages (u, +-sqrt(3(1 + u^2))).
+Implicit curve without closed form: Abdel-All et al. (2012), Example 5.4, at
 p = (sqrt(11/2), sqrt(5/2), -2): the series of y(x), z(x) with f = h = 0,
 solved order by order (implicit function theorem, parametrised by x, not by
 arc length), then the same arc-length reparametrisation; its torsion is
-checked against the exact value of ERRATA.md row 9.
+checked against the exact value of docs/ERRATA.md, item 9.
 
 Each curve is checked to lie on both surfaces (symbolically, or to 1e-40).
 Run:  python3 tests/truth/gen_transversal_truth.py
@@ -186,28 +186,30 @@ def main():
         emit_closed(lines, "enneper", double, p0, "u=%s v=%s" % (sp.N(p0, 25), sp.N(q, 25)))
 
     # Tangential points (the branches through them, each a smooth closed-form curve):
-    # Viviani's branch point (2, 0, 0) at p = 0 and p = 2 pi; the seed 002 Ex. 1 curve
-    # (sphere of radius 1, cylinder of radius 1/2) at (1, 0, 0); the two ellipses of
-    # seed 001 Ex. 5.1 (planes z = +-k x) through (0, 0.8, 0); the tangential circles of
-    # seed 001 Ex. 5.2 and seed 002 Ex. 3; the tacnode branches y = +-x^2 of
-    # z = y^2 - x^4 and z = 0.
+    # Viviani's branch point (2, 0, 0) at p = 0 and p = 2 pi; the curve of
+    # Bendrici and Boumedien-Zidani (2022), Example 1 (sphere of radius 1, cylinder
+    # of radius 1/2) at (1, 0, 0); the two ellipses of Abdel-All et al. (2012),
+    # Example 5.1 (planes z = +-k x) through (0, 0.8, 0); the tangential circles of
+    # Abdel-All et al. (2012), Example 5.2, and Bendrici and Boumedien-Zidani (2022),
+    # Example 3; the tacnode branches y = +-x^2 of z = y^2 - x^4 and z = 0.
     for p0 in [sp.Integer(0), 2 * sp.pi]:
         emit_closed(lines, "tangent-viviani", viviani, p0, "p=%s" % sp.N(p0, 20))
     viviani_half = [(1 + sp.cos(p)) / 2, sp.sin(p) / 2, sp.sin(p / 2)]
     check_on(viviani_half, [(x - sp.Rational(1, 2)) ** 2 + y**2 - sp.Rational(1, 4),
                             x**2 + y**2 + z**2 - 1], sp.Rational(7, 10))
     for p0 in [sp.Integer(0), 2 * sp.pi]:
-        emit_closed(lines, "tangent-seed002", viviani_half, p0, "p=%s" % sp.N(p0, 20))
+        emit_closed(lines, "tangent-viviani-half", viviani_half, p0, "p=%s" % sp.N(p0, 20))
     ellipse_minus = [a * sp.cos(p), sp.Rational(4, 5) * sp.sin(p), -k * a * sp.cos(p)]
     check_on(ellipse_minus, [f51, h51], sp.Rational(1, 2))
     emit_closed(lines, "tangent-ellipse51", ellipse, sp.pi / 2, "plane=+")
     emit_closed(lines, "tangent-ellipse51", ellipse_minus, sp.pi / 2, "plane=-")
     circle52 = [sp.cos(p), sp.sin(p), sp.Integer(0)]
     emit_closed(lines, "tangent-circle52", circle52, sp.atan2(4, 3), "p=atan2(4,3)")
-    circle002 = [-sp.Rational(1, 5) + 2 * sp.cos(p), 2 * sp.sin(p), sp.Integer(0)]
-    p002 = sp.atan2(-sp.sqrt(21) / 5, -sp.Rational(2, 5))
-    check_on(circle002, [z], p002)
-    emit_closed(lines, "tangent-circle002", circle002, p002, "p=atan2(-sqrt21/5,-2/5)")
+    circle_torus_plane = [-sp.Rational(1, 5) + 2 * sp.cos(p), 2 * sp.sin(p), sp.Integer(0)]
+    p_torus_plane = sp.atan2(-sp.sqrt(21) / 5, -sp.Rational(2, 5))
+    check_on(circle_torus_plane, [z], p_torus_plane)
+    emit_closed(lines, "tangent-circle-torus-plane", circle_torus_plane, p_torus_plane,
+                "p=atan2(-sqrt21/5,-2/5)")
     for sgn in (1, -1):
         emit_closed(lines, "tacnode", [p, sgn * p**2, sp.Integer(0)], sp.Integer(0),
                     "branch=%+d" % sgn)
@@ -220,7 +222,7 @@ def main():
     coefs = implicit_curve_taylor(f54, h54, mp.sqrt(mp.mpf(11) / 2), mp.sqrt(mp.mpf(5) / 2),
                                   mp.mpf(-2))
     tau54 = emit(lines, "ex54", coefs, "")
-    # ERRATA row 9: tau = -27395 sqrt(55)/394282 at p, independent of orientation
+    # docs/ERRATA.md, item 9: tau = -27395 sqrt(55)/394282 at p, independent of orientation
     assert abs(tau54 + 27395 * mp.sqrt(55) / 394282) < mp.mpf(10) ** -40, tau54
 
     with open(OUT, "w") as fh:

@@ -1,10 +1,10 @@
 /*
- * Any mix of parametric and implicit surfaces:
- *  - seed 002 (Bendrici & Boumedien-Zidani 2022, after Ye & Maekawa),
- *    (2.4)-(2.9): t = N_A x N_B / |.|, the parameter derivatives (2.5),
+ * Any mix of parametric and implicit surfaces (docs/references.md):
+ *  - Bendrici and Boumedien-Zidani (2022), after Ye and Maekawa (1999),
+ *    eqs. (2.4)-(2.9): t = N_A x N_B / |.|, the parameter derivatives (2.5),
  *    the normal curvatures, and the curvature vector
  *    K = [(kn_A - kn_B cos) N_A + (kn_B - kn_A cos) N_B] / sin^2;
- *  - seed 003 (Patrikalakis & Maekawa, section 6.3.3), (6.35)-(6.46): the
+ *  - Patrikalakis and Maekawa (2002), section 6.3.3, eqs. (6.35)-(6.46): the
  *    normal projections lambda_n = c''' . N of each surface give
  *    c''' = -kappa^2 t + gamma N_A + delta N_B (6.37) and the torsion (6.46).
  * cos = N_A . N_B, sin^2 = 1 - cos^2 (theta is the angle between the normals).
@@ -95,14 +95,15 @@ static double normal_curvature(const ic_sheet *sh, const double *t)
     return -q / sh->geo.normal_length;
 }
 
-ic_status ic_closed_seed003(ic_branch *br, const ic_sheet sh[2], ic_paper_values *paper,
-                            ic_error *err)
+ic_status ic_closed_patrikalakis_maekawa(ic_branch *br, const ic_sheet sh[2],
+                                         ic_paper_values *paper, ic_error *err)
 {
     const double *NA = sh[0].geo.normal, *NB = sh[1].geo.normal;
     double t[3];
     ic_cross3(t, NA, NB); /* (2.4) */
     if (!(ic_normalize3(t) > 0.0))
-        return ic_error_set(err, IC_ERR_UNABLE, 0, "seed 002 (2.4): parallel normals");
+        return ic_error_set(err, IC_ERR_UNABLE, 0,
+                            "Bendrici and Boumedien-Zidani (2022), eq. (2.4): parallel normals");
     const double cs = ic_dot3(NA, NB), sn2 = 1.0 - cs * cs;
     /* (2.7), (2.8) and the formula for K after them */
     const double knA = normal_curvature(&sh[0], t), knB = normal_curvature(&sh[1], t);

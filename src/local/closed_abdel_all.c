@@ -1,5 +1,5 @@
 /*
- * Seed 001 (Abdel-All, Badr, Soliman & Hassan 2012), section 3: transversal
+ * Abdel-All et al. (2012), section 3 (docs/references.md): transversal
  * intersection of two implicit surfaces f = 0 and h = 0, the curve
  * parametrised by x1 as beta(x1) = (x1, x2(x1), x3(x1)). Equation numbers
  * are the paper's.
@@ -64,11 +64,12 @@ static void c_coefficients(const implicit_data *f, double A12, double A13, doubl
                A12 * A13 * A13 * T[1][1][2]);
 }
 
-ic_status ic_closed_seed001(ic_branch *br, const ic_sheet sh[2], ic_paper_values *paper,
-                            ic_error *err)
+ic_status ic_closed_abdel_all(ic_branch *br, const ic_sheet sh[2], ic_paper_values *paper,
+                              ic_error *err)
 {
     if (sh[0].parametric || sh[1].parametric)
-        return ic_error_set(err, IC_ERR_INVALID, 0, "seed 001 needs two implicit sheets");
+        return ic_error_set(err, IC_ERR_INVALID, 0,
+                            "Abdel-All et al. (2012), section 3, needs two implicit sheets");
     /* choose the relabelling with the largest A23 */
     int shift = 0;
     double best = -1.0;
@@ -87,7 +88,8 @@ ic_status ic_closed_seed001(ic_branch *br, const ic_sheet sh[2], ic_paper_values
     const double A13 = f.g[0] * h.g[2] - f.g[2] * h.g[0];
     const double A23 = f.g[1] * h.g[2] - f.g[2] * h.g[1];
     if (A23 == 0.0)
-        return ic_error_set(err, IC_ERR_UNABLE, 0, "seed 001: the normals are parallel");
+        return ic_error_set(err, IC_ERR_UNABLE, 0,
+                            "Abdel-All et al. (2012), section 3: the normals are parallel");
     const double S = A12 * A12 + A13 * A13 + A23 * A23;
     /* (3.9) beta' = (A23, -A13, A12)/A23 */
     const double b1[3] = {1.0, -A13 / A23, A12 / A23};

@@ -1,5 +1,5 @@
 /*
- * Seed 001 (Abdel-All, Badr, Soliman & Hassan 2012), section 4: tangential
+ * Abdel-All et al. (2012), section 4 (docs/references.md): tangential
  * intersection of two implicit surfaces f = 0, h = 0 with grad f = A grad h
  * (4.1), the curve parametrised by a coordinate, beta = (x1, x2(x1), x3(x1)).
  * Derived again before transcription (docs/ERRATA.md lists the printed
@@ -134,7 +134,7 @@ static void coefficients(double paper[4], double D[3][3], const derivs4 *f, cons
     paper[3] = f1 * f1 * D[1][1] - 2 * f1 * f2 * D[0][1] + f2 * f2 * D[0][0];
 }
 
-void ic_closed_seed001_coefficients(ic_local_result *res, const ic_sheet sh[2])
+void ic_closed_abdel_all_coefficients(ic_local_result *res, const ic_sheet sh[2])
 {
     int perm[3];
     choose_axes(perm, sh[0].geo.normal, NULL);
@@ -161,7 +161,8 @@ static int branch(ic_branch *br, const ic_sheet sh[2], const double *dir, double
     coefficients(paper, D, &f, &h); /* (4.1), (4.10) */
     const double A = paper[0], f1 = f.g[0], f2 = f.g[1], f3 = f.g[2];
     /* (4.9): a11 x3'^2 + 2 a12 x3' + a13 = 0; of its roots the one along this
-     * branch (dir only picks the root); x2' from grad f . beta' = 0 (4.11) */
+     * branch (dir only picks the root); x2' from grad f . beta' = 0 (4.6), as
+     * in the roots printed after (4.10) */
     const double a11 = paper[1], a12 = paper[2], a13 = paper[3];
     const double want = dir[a3] / dir[a1];
     double x3d;
@@ -214,17 +215,18 @@ static int branch(ic_branch *br, const ic_sheet sh[2], const double *dir, double
     return 0;
 }
 
-ic_status ic_closed_seed001_tangential(ic_local_result *res, const ic_sheet sh[2],
-                                       const ic_local_options *opt, ic_error *err)
+ic_status ic_closed_abdel_all_tangential(ic_local_result *res, const ic_sheet sh[2],
+                                         const ic_local_options *opt, ic_error *err)
 {
     (void)opt;
     if (sh[0].parametric || sh[1].parametric)
-        return ic_error_set(err, IC_ERR_INVALID, 0, "seed 001 section 4 needs two implicit sheets");
+        return ic_error_set(err, IC_ERR_INVALID, 0,
+                            "Abdel-All et al. (2012), section 4, needs two implicit sheets");
     if (!(res->type == IC_POINT_BRANCH || res->type == IC_POINT_TANGENTIAL_CURVE) ||
         res->nbranches < 1)
         return ic_error_set(err, IC_ERR_UNABLE, 0,
-                            "the closed form (seed 001 section 4) gives the branches of branch "
-                            "points and tangential curves; this point is %s",
+                            "the closed form (Abdel-All et al. (2012), section 4) gives the "
+                            "branches of branch points and tangential curves; this point is %s",
                             ic_point_type_name(res->type));
     /* the directions solve beta'^T D beta' = 0 in the tangent plane, the
      * roots of (4.9); the classification's branches give which root is which */
@@ -234,9 +236,9 @@ ic_status ic_closed_seed001_tangential(ic_local_result *res, const ic_sheet sh[2
         const double *t = res->branches[b].derivs[0]; /* the classification's tangent */
         if (branch(&out[b], sh, t, paper) != 0)
             return ic_error_set(err, IC_ERR_UNABLE, 0,
-                                "seed 001 section 4: Omega = 0 (4.18), the system for x2'', "
-                                "x3'' is singular (as on a tangential curve, where the paper's "
-                                "formulas do not apply); use height-difference");
+                                "Abdel-All et al. (2012), eq. (4.18): Omega = 0, the system "
+                                "for x2'', x3'' is singular (as on a tangential curve, where "
+                                "the paper's formulas do not apply); use height-difference");
     }
     memcpy(res->branches, out, (size_t)res->nbranches * sizeof out[0]);
     res->npaper = 4;

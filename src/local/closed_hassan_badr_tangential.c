@@ -1,8 +1,9 @@
 /*
- * Seed 000 (Hassan & Badr 2016), section 4: tangential intersection of two
- * parametric surfaces P(v1, v2), Q(w1, w2) (or the self-intersection of R),
- * N_1 = delta N_2 (4.1). Equation numbers are the paper's; the corrections
- * are ERRATA.md rows 4-6 and docs/ERRATA.md:
+ * Hassan and Badr (2016), section 4 (docs/references.md): tangential
+ * intersection of two parametric surfaces P(v1, v2), Q(w1, w2) (or the
+ * self-intersection of R), N_1 = delta N_2 (4.1). Equation numbers are the
+ * paper's; the corrections are docs/ERRATA.md's items 4-6 and its section on
+ * these formulas:
  *  - (4.7)-(4.10): with a_ij as in (4.8), the directions v2' = lambda v1' solve
  *    a22 lambda^2 + 2 a12 lambda + a11 = 0 (the printed form swaps a11, a22);
  *  - (4.8): the middle term of a12 is -(A11 A22 + A12 A21) L^2_12;
@@ -11,7 +12,8 @@
  *    -6 (2 w1' w2' w1'' + w1'^2 w2'') <Q112, N2> - 6 (w1'' w2'^2 + 2 w1' w2' w2'') <Q122, N2>.
  * Each unknown pair is solved from two scalar equations: (4.20) or (4.26)
  * give w'' (w''') in terms of v'' (v'''), then (4.22) and (4.24) (resp.
- * (4.28) and <alpha', alpha'''> = -kappa^2) are two equations for v'' (v''').
+ * (4.28) and <alpha', alpha'''> = -kappa^2 (4.30)) are two equations for v''
+ * (v''').
  */
 #include "tangential.h"
 #include "common/vec3.h"
@@ -165,25 +167,26 @@ static int branch(ic_branch *br, const ic_param_data *P, const ic_param_data *Q,
     return 0;
 }
 
-void ic_closed_seed000_coefficients(ic_local_result *res, const ic_sheet sh[2])
+void ic_closed_hassan_badr_coefficients(ic_local_result *res, const ic_sheet sh[2])
 {
     const ic_point_type type = res->type;
     ic_local_result tmp = *res;
     tmp.type = IC_POINT_TANGENTIAL; /* coefficients only: stop before the branches */
-    (void)ic_closed_seed000_tangential(&tmp, sh, NULL, NULL);
+    (void)ic_closed_hassan_badr_tangential(&tmp, sh, NULL, NULL);
     res->npaper = tmp.npaper;
     memcpy(res->paper_names, tmp.paper_names, sizeof tmp.paper_names);
     memcpy(res->paper_values, tmp.paper_values, sizeof tmp.paper_values);
     res->type = type;
 }
 
-ic_status ic_closed_seed000_tangential(ic_local_result *res, const ic_sheet sh[2],
-                                       const ic_local_options *opt, ic_error *err)
+ic_status ic_closed_hassan_badr_tangential(ic_local_result *res, const ic_sheet sh[2],
+                                           const ic_local_options *opt, ic_error *err)
 {
     if (!sh[0].parametric || !sh[1].parametric)
         return ic_error_set(err, IC_ERR_INVALID, 0,
                             "the closed form at tangential points covers two parametric "
-                            "surfaces (seed 000); use height-difference");
+                            "surfaces (Hassan and Badr (2016), section 4); use "
+                            "height-difference");
     ic_param_data P, Q;
     ic_param_data_load(&P, &sh[0]);
     ic_param_data_load(&Q, &sh[1]);
@@ -222,8 +225,8 @@ ic_status ic_closed_seed000_tangential(ic_local_result *res, const ic_sheet sh[2
     const double scale = fmax(fmax(fabs(a11), fabs(a22)), fabs(a12));
     if (scale == 0.0 || !(res->type == IC_POINT_BRANCH || res->type == IC_POINT_TANGENTIAL_CURVE))
         return ic_error_set(err, IC_ERR_UNABLE, 0,
-                            "the closed form (seed 000 section 4) gives the branches of branch "
-                            "points and tangential curves; this point is %s",
+                            "the closed form (Hassan and Badr (2016), section 4) gives the "
+                            "branches of branch points and tangential curves; this point is %s",
                             ic_point_type_name(res->type));
     /* directions: a11 v1'^2 + 2 a12 v1' v2' + a22 v2'^2 = 0 (Lemmas 1, 2) */
     const int nroots = res->type == IC_POINT_BRANCH ? 2 : 1;
@@ -241,7 +244,8 @@ ic_status ic_closed_seed000_tangential(ic_local_result *res, const ic_sheet sh[2
         v1[0] /= norm, v1[1] /= norm;
         if (branch(&res->branches[res->nbranches], &P, &Q, N2, delta, C, B12, v1) != 0)
             return ic_error_set(err, IC_ERR_UNABLE, 0,
-                                "seed 000 (4.20)-(4.24): the system for v'' is singular");
+                                "Hassan and Badr (2016), eqs. (4.20)-(4.24): the system for v'' "
+                                "is singular");
         res->nbranches++;
     }
     (void)opt;

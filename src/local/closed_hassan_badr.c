@@ -1,7 +1,8 @@
 /*
- * Seed 000 (Hassan & Badr 2016), section 3: transversal intersection of two
- * parametric surfaces P(v1, v2) and Q(w1, w2), and the self-intersection of
- * R (P = R(v), Q = R(w)). Equation numbers are the paper's.
+ * Hassan and Badr (2016), section 3 (docs/references.md): transversal
+ * intersection of two parametric surfaces P(v1, v2) and Q(w1, w2), and the
+ * self-intersection of R (P = R(v), Q = R(w)). Equation numbers are the
+ * paper's.
  *
  * The paper takes the rows {l, m} of (3.2) where Q's 2x2 minor B12 is not
  * zero "without loss of generality"; here {l, m} is the pair with the largest
@@ -46,11 +47,12 @@ static double psi(const ic_param_data *p, const double *v1, const double *v2)
            3 * b * v2[1] * p->L[1][1];
 }
 
-ic_status ic_closed_seed000(ic_branch *br, const ic_sheet sh[2], ic_paper_values *paper,
-                            ic_error *err)
+ic_status ic_closed_hassan_badr(ic_branch *br, const ic_sheet sh[2], ic_paper_values *paper,
+                                ic_error *err)
 {
     if (!sh[0].parametric || !sh[1].parametric)
-        return ic_error_set(err, IC_ERR_INVALID, 0, "seed 000 needs two parametric sheets");
+        return ic_error_set(err, IC_ERR_INVALID, 0,
+                            "Hassan and Badr (2016), section 3, needs two parametric sheets");
     ic_param_data P, Q;
     ic_param_data_load(&P, &sh[0]);
     ic_param_data_load(&Q, &sh[1]);
@@ -77,7 +79,8 @@ ic_status ic_closed_seed000(ic_branch *br, const ic_sheet sh[2], ic_paper_values
     ic_axpy3(t, t, -eta, P.d1[1]);
     const double D = ic_normalize3(t);
     if (!(D > 0.0) || B12 == 0.0)
-        return ic_error_set(err, IC_ERR_UNABLE, 0, "seed 000 (3.9): the tangent vanishes");
+        return ic_error_set(err, IC_ERR_UNABLE, 0,
+                            "Hassan and Badr (2016), eq. (3.9): the tangent vanishes");
     /* (3.10), (3.11) */
     const double v1[2] = {zeta / D, -eta / D};
     const double w1[2] = {(zeta * A[0][1] - eta * A[1][1]) / (B12 * D),

@@ -149,6 +149,16 @@ IC_NODISCARD ic_status ic_local_locate_params(ic_pair *pair, ic_local_point *pt,
                                               const ic_local_options *opt, ic_error *err);
 
 /**
+ * Locates a point of the intersection from a guess with its position and
+ * its parameters on the parametric surfaces (the others' entries ignored):
+ * ic_local_locate_params from the parameters where the pair has any, else
+ * ic_local_locate from the position.
+ */
+IC_NODISCARD ic_status ic_local_locate_guess(ic_pair *pair, ic_local_point *pt,
+                                             const double xyz[3], const double params[2][2],
+                                             const ic_local_options *opt, ic_error *err);
+
+/**
  * The tangential point nearest to a point close to it: on both surfaces with
  * parallel normals (N_A x N_B = 0), by Gauss-Newton on the residuals of the
  * pairing (distances to the surfaces, the components of N_A x N_B) from

@@ -514,3 +514,15 @@ ic_status ic_local_locate_params(ic_pair *pair, ic_local_point *pt, const double
                             pt->residual, opt->point_tol);
     return refine(pair, pt, opt, err);
 }
+
+ic_status ic_local_locate_guess(ic_pair *pair, ic_local_point *pt, const double xyz[3],
+                                const double params[2][2], const ic_local_options *opt,
+                                ic_error *err)
+{
+    const ic_pairing *pg = &pair->pairing;
+    double flat[4];
+    if (pg->kind->nparams == 0)
+        return ic_local_locate(pair, pt, xyz, opt, err);
+    pg->kind->flatten(pg, xyz, params, flat);
+    return ic_local_locate_params(pair, pt, flat, pg->kind->nparams, opt, err);
+}

@@ -149,15 +149,7 @@ static int transversal_at(ic_pair *pair, const found_point *fp, const pctx *c,
     ic_local_point pt;
     ic_local_options o = *opt;
     o.tangential_angle = 0.0; /* near P the angle is small but nonzero */
-    double params[4];
-    int np = 0;
-    for (int s = 0; s < 2; s++)
-        if (ic_surface_get_kind(ic_pair_surface(pair, s)) == IC_PARAMETRIC) {
-            params[np++] = fp->uv[s][0];
-            params[np++] = fp->uv[s][1];
-        }
-    ic_status st = np ? ic_local_locate_params(pair, &pt, params, np, &o, NULL)
-                      : ic_local_locate(pair, &pt, fp->X, &o, NULL);
+    ic_status st = ic_local_locate_guess(pair, &pt, fp->X, fp->uv, &o, NULL);
     ic_local_result r;
     if (st != IC_OK || ic_local_apparatus(pair, &r, &pt, 3, IC_METHOD_JET, &o, NULL) != IC_OK ||
         r.type != IC_POINT_TRANSVERSAL)

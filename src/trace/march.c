@@ -335,20 +335,12 @@ static double step_arc(const ic_tracer *tr, double h, const double *X, const dou
 
 static int corrected(const ic_tracer *tr, double h, ic_local_point *next, double *X)
 {
-    double params[2][2], flat[4];
+    double params[2][2];
     predict(tr, h, X, params);
     if (tr->tcurve)
         return ic_tcurve_correct(tr->pair, tr->par, X, params, fmax(1e3 * tr->opt.tol, 1e-3 * h),
                                  &tr->opt.local, next) == IC_OK;
-    int np = 0;
-    for (int s = 0; s < 2; s++)
-        if (tr->par[s]) {
-            flat[np++] = params[s][0];
-            flat[np++] = params[s][1];
-        }
-    ic_local_options lo = tr->opt.local;
-    return (np ? ic_local_locate_params(tr->pair, next, flat, np, &lo, NULL)
-               : ic_local_locate(tr->pair, next, X, &lo, NULL)) == IC_OK;
+    return ic_local_locate_guess(tr->pair, next, X, params, &tr->opt.local, NULL) == IC_OK;
 }
 
 /* Ends the curve exactly on the boundary it crosses within the step h: the

@@ -650,13 +650,8 @@ ic_status ic_trace_from_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *p
         ic_trace_progress(r, opt, "tracing start points", i, nc);
         ic_local_point pt;
         ic_local_options lo = opt->local;
-        const ic_pairing *pg = ic_pair_pairing(pair);
-        double flat[4];
-        const int np = pg->kind->nparams;
-        pg->kind->flatten(pg, cand[i].xyz, cand[i].params, flat);
         ic_error e2;
-        if ((np ? ic_local_locate_params(pair, &pt, flat, np, &lo, &e2)
-                : ic_local_locate(pair, &pt, cand[i].xyz, &lo, &e2)) != IC_OK) {
+        if (ic_local_locate_guess(pair, &pt, cand[i].xyz, cand[i].params, &lo, &e2) != IC_OK) {
             /* the candidates at the same place (a pole's many preimages)
              * would fail the same way: one is kept */
             cover_point(cand, nc, cand[i].xyz, 1e-10 * (r->scale + ic_norm3(cand[i].xyz)));

@@ -57,7 +57,7 @@
 /* The unknowns' own size: a coordinate's is L, a parameter's 1. */
 static double unit_of(const ic_tres *c)
 {
-    return c->par[0] || c->par[1] ? 1.0 : c->L;
+    return c->params ? 1.0 : c->L;
 }
 
 /* Forward-difference Jacobian; the step is at most `cap` (and at least a few
@@ -242,7 +242,7 @@ static double solve(const ic_tres *c, double *z, int m, double *F)
     if (!(worst > LOCATE_FLOOR && worst < INFINITY && ratio > LOCATE_SLOW_RATIO && ratio < 1))
         return worst;
     const double remaining = last / (1 - ratio);
-    if (!c->par[0] || !c->par[1] || !c->opt)
+    if (!c->two_sheets || !c->opt)
         return multiple(c, z, m, F, worst, last, remaining);
     ic_tres r;
     ic_tres_reduce(c, z, &r);
@@ -275,11 +275,8 @@ ic_status ic_local_locate_tangential(ic_pair *pair, ic_local_point *pt, const ic
                             "no tangential point converged near (%g, %g, %g) (residual %.3g)",
                             near->xyz[0], near->xyz[1], near->xyz[2], worst);
     ic_tres_unpack(&c, z, pt);
-    if (c.par[0] || c.par[1]) {
-        const int P = c.par[0] ? 0 : 1;
-        if (ic_surface_eval(ic_pair_surface(pair, P), pt->xyz, pt->params[P], err) != IC_OK)
-            return IC_ERR_UNABLE;
-    }
+    if (ic_tres_position(&c, z, pt->xyz, err) != IC_OK)
+        return IC_ERR_UNABLE;
     double d[3];
     ic_axpy3(d, pt->xyz, -1.0, near->xyz);
     if (ic_norm3(d) > reach)

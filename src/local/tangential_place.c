@@ -21,12 +21,8 @@
 static double xyz_distance(const ic_tres *c, const double *z, const ic_local_point *pt)
 {
     ic_local_point q;
-    ic_tres_unpack(c, z, &q);
-    if (c->par[0] || c->par[1]) {
-        const int P = c->par[0] ? 0 : 1;
-        if (ic_surface_eval(ic_pair_surface(c->pair, P), q.xyz, q.params[P], NULL) != IC_OK)
-            return INFINITY;
-    }
+    if (ic_tres_position(c, z, q.xyz, NULL) != IC_OK)
+        return INFINITY;
     double d[3];
     ic_axpy3(d, q.xyz, -1.0, pt->xyz);
     return ic_norm3(d);
@@ -38,7 +34,7 @@ static double place_along(const ic_tres *c, const double *z, int m, int j, int s
                           const ic_local_point *pt)
 {
     double r[PLACE_RUNGS], zs[PLACE_RUNGS][4], F[6];
-    double rho = PLACE_FIRST_RUNG * (c->par[0] || c->par[1] ? 1.0 + fabs(z[j]) : c->L);
+    double rho = PLACE_FIRST_RUNG * (c->params ? 1.0 + fabs(z[j]) : c->L);
     for (int k = 0; k < PLACE_RUNGS; k++, rho *= 10) {
         memcpy(zs[k], z, sizeof zs[k]);
         zs[k][j] += sgn * rho;
@@ -56,7 +52,7 @@ ic_status ic_local_tangential_place(ic_pair *pair, const ic_local_point *pt,
     ic_tres c;
     double z[4] = {0}, F[6];
     ic_tres_setup(&c, pair, pt, opt, z);
-    if (c.par[0] && c.par[1] && opt) { /* along (u, v), B following */
+    if (c.two_sheets && opt) { /* along (u, v), B following */
         ic_tres r;
         ic_tres_reduce(&c, z, &r);
         c = r;

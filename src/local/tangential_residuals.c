@@ -6,20 +6,20 @@
 #include <math.h>
 #include <string.h>
 
-/* Builds the point from the unknowns. */
+/* Builds the point from the unknowns: the pairing's parameters and
+ * position (a reduced context: A's parameters; B's stay the base's). */
 void ic_tres_unpack(const ic_tres *c, const double *z, ic_local_point *pt)
 {
+    const ic_pairing *pg = ic_pair_pairing(c->pair);
     *pt = c->base;
-    int k = 0;
-    if (!c->par[0] && !c->par[1]) {
-        memcpy(pt->xyz, z, 3 * sizeof *z);
+    if (c->reduced) {
+        pt->params[0][0] = z[0], pt->params[0][1] = z[1];
         return;
     }
-    for (int s = 0; s < 2; s++)
-        if (c->par[s] && !(c->reduced && s == 1)) {
-            pt->params[s][0] = z[k++];
-            pt->params[s][1] = z[k++];
-        }
+    pg->kind->unflatten(pg, z, pt->params);
+    double X[3];
+    if (pg->kind->position(pg, z, X, NULL) == IC_OK)
+        memcpy(pt->xyz, X, sizeof X);
 }
 
 /* The reduced residuals: R_A(u, v) - R_B(projection) over L, N_A x N_B;
@@ -41,38 +41,13 @@ int ic_tres_reduced_at(const ic_tres *c, ic_local_point *pt, double *F)
 /* Residuals: returns their number, or -1 where a surface is singular. */
 int ic_tres_residuals(const ic_tres *c, const double *z, double *F)
 {
-    ic_local_point pt;
-    ic_tres_unpack(c, z, &pt);
-    if (c->reduced)
+    if (c->reduced) {
+        ic_local_point pt;
+        ic_tres_unpack(c, z, &pt);
         return ic_tres_reduced_at(c, &pt, F);
-    ic_surface_geometry g[2];
-    double X[2][3];
-    for (int s = 0; s < 2; s++) {
-        ic_surface *srf = ic_pair_surface(c->pair, s);
-        if (c->par[s]) {
-            if (ic_surface_normal_at(srf, &g[s], pt.params[s], NULL) != IC_OK)
-                return -1;
-            memcpy(X[s], g[s].point, sizeof X[s]);
-        }
     }
-    int m = 0;
-    if (c->par[0] && c->par[1]) {
-        for (int k = 0; k < 3; k++)
-            F[m++] = (X[0][k] - X[1][k]) / c->L;
-    } else {
-        const double *P = c->par[0] ? X[0] : c->par[1] ? X[1] : pt.xyz;
-        for (int s = 0; s < 2; s++)
-            if (!c->par[s]) {
-                if (ic_surface_normal_at(ic_pair_surface(c->pair, s), &g[s], P, NULL) != IC_OK)
-                    return -1;
-                F[m++] = g[s].value / g[s].normal_length / c->L;
-            }
-    }
-    double cr[3];
-    ic_cross3(cr, g[0].normal, g[1].normal);
-    for (int k = 0; k < 3; k++)
-        F[m++] = cr[k];
-    return m;
+    const ic_pairing *pg = ic_pair_pairing(c->pair);
+    return pg->kind->contact_residuals(pg, z, c->L, F);
 }
 
 /* The largest residual at z (infinite where a surface is singular or the
@@ -96,17 +71,11 @@ void ic_tres_setup(ic_tres *c, ic_pair *pair, const ic_local_point *near, const 
     c->opt = opt;
     c->base = *near;
     c->L = opt && opt->scale > 0 && isfinite(opt->scale) ? opt->scale : 1.0;
-    for (int s = 0; s < 2; s++) {
-        c->par[s] = ic_surface_get_kind(ic_pair_surface(pair, s)) == IC_PARAMETRIC;
-        if (c->par[s]) {
-            z[c->n++] = near->params[s][0];
-            z[c->n++] = near->params[s][1];
-        }
-    }
-    if (c->n == 0) {
-        memcpy(z, near->xyz, sizeof near->xyz);
-        c->n = 3;
-    }
+    const ic_pairing *pg = ic_pair_pairing(pair);
+    c->n = pg->kind->dim;
+    c->params = pg->kind->nparams > 0;
+    c->two_sheets = pg->kind->nparams == 4;
+    pg->kind->flatten(pg, near->xyz, near->params, z);
 }
 
 /* The reduced context of two parametric sheets at the unknowns z. */
@@ -118,3 +87,11 @@ void ic_tres_reduce(const ic_tres *c, const double *z, ic_tres *r)
     r->n = 2;
 }
 
+
+ic_status ic_tres_position(const ic_tres *c, const double *z, double xyz[3], ic_error *err)
+{
+    if (c->reduced) /* R_A(u, v) */
+        return ic_surface_eval(ic_pair_surface(c->pair, 0), xyz, z, err);
+    const ic_pairing *pg = ic_pair_pairing(c->pair);
+    return pg->kind->position(pg, z, xyz, err);
+}

@@ -9,8 +9,9 @@
 
 typedef struct {
     ic_pair *pair;
-    int par[2];
-    int n; /* unknowns */
+    int params;     /* the unknowns are parameters (else a position) */
+    int two_sheets; /* two parametric sheets: (u, v, p, q) */
+    int n;          /* unknowns: the pairing's search coordinates */
     ic_local_point base;
     double L; /* the problem's size: length residuals are divided by it */
     /* two parametric sheets with the unknowns (u, v) of A alone, B's (p, q)
@@ -30,6 +31,8 @@ void ic_tres_reduce(const ic_tres *c, const double *z, ic_tres *r);
 /* Builds the point from the unknowns (a reduced context leaves B's
  * parameters at the base's; ic_tres_residuals_at fills them). */
 void ic_tres_unpack(const ic_tres *c, const double *z, ic_local_point *pt);
+/* The point in space of the unknowns z. */
+ic_status ic_tres_position(const ic_tres *c, const double *z, double xyz[3], ic_error *err);
 /* The residuals at z: their number, or -1 where a surface is singular. */
 int ic_tres_residuals(const ic_tres *c, const double *z, double *F);
 /* The reduced residuals at pt (B's parameters projected into pt). */

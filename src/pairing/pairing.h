@@ -57,6 +57,11 @@ typedef struct {
     void (*step)(const ic_pairing *p, double *z, const double *dz);
     /* The point of search coordinates z. */
     ic_status (*position)(const ic_pairing *p, const double *z, double xyz[3], ic_error *err);
+    /* The residuals of a tangential point at search coordinates z: the
+     * distances to the surfaces (over L: f / |grad f|, or R_A - R_B) and
+     * the components of N_A x N_B; their number, or -1 where a surface is
+     * singular (its normal undefined). */
+    int (*contact_residuals)(const ic_pairing *p, const double *z, double L, double *F);
     /* The cell's place in space: its centre's point and parameters and a
      * radius covering the cell; radius 0 where it cannot be placed. */
     void (*place)(const ic_pairing *p, const double *lo, const double *hi, double xyz[3],

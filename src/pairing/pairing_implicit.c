@@ -130,6 +130,19 @@ static ic_status position(const ic_pairing *p, const double *z, double xyz[3], i
     return IC_OK;
 }
 
+/* f_A / |grad f_A| / L, f_B / |grad f_B| / L, N_A x N_B at X = z */
+static int contact_residuals(const ic_pairing *p, const double *z, double L, double *F)
+{
+    ic_surface_geometry g[2];
+    for (int s = 0; s < 2; s++) {
+        if (ic_surface_normal_at(p->S[s], &g[s], z, NULL) != IC_OK)
+            return -1;
+        F[s] = g[s].value / g[s].normal_length / L;
+    }
+    ic_cross3(F + 2, g[0].normal, g[1].normal);
+    return 5;
+}
+
 static void place(const ic_pairing *p, const double *lo, const double *hi, double xyz[3],
                   double params[2][2], double *radius)
 {
@@ -205,6 +218,7 @@ const ic_pairing_kind ic_pairing_implicit = {
     .unflatten = unflatten,
     .flatten = flatten,
     .place = place,
+    .contact_residuals = contact_residuals,
     .section = section,
     .step = step,
     .position = position,

@@ -112,6 +112,18 @@ static ic_status position(const ic_pairing *p, const double *z, double xyz[3], i
     return ic_surface_eval(p->S[p->P], xyz, z, err);
 }
 
+/* f(R) / |grad f| / L, N_A x N_B at R = R_P(z) */
+static int contact_residuals(const ic_pairing *p, const double *z, double L, double *F)
+{
+    ic_surface_geometry g[2];
+    if (ic_surface_normal_at(p->S[p->P], &g[p->P], z, NULL) != IC_OK ||
+        ic_surface_normal_at(p->S[p->I], &g[p->I], g[p->P].point, NULL) != IC_OK)
+        return -1;
+    F[0] = g[p->I].value / g[p->I].normal_length / L;
+    ic_cross3(F + 1, g[0].normal, g[1].normal);
+    return 4;
+}
+
 static void place(const ic_pairing *p, const double *lo, const double *hi, double xyz[3],
                   double params[2][2], double *radius)
 {
@@ -185,6 +197,7 @@ const ic_pairing_kind ic_pairing_mixed = {
     .unflatten = unflatten,
     .flatten = flatten,
     .place = place,
+    .contact_residuals = contact_residuals,
     .section = section,
     .step = step,
     .position = position,

@@ -157,6 +157,19 @@ static ic_status position(const ic_pairing *p, const double *z, double xyz[3], i
     return ic_surface_eval(p->S[0], xyz, z, err);
 }
 
+/* (R_A - R_B) / L, N_A x N_B at z = (u, v, p, q) */
+static int contact_residuals(const ic_pairing *p, const double *z, double L, double *F)
+{
+    ic_surface_geometry g[2];
+    for (int s = 0; s < 2; s++)
+        if (ic_surface_normal_at(p->S[s], &g[s], z + 2 * s, NULL) != IC_OK)
+            return -1;
+    for (int k = 0; k < 3; k++)
+        F[k] = (g[0].point[k] - g[1].point[k]) / L;
+    ic_cross3(F + 3, g[0].normal, g[1].normal);
+    return 6;
+}
+
 static void place(const ic_pairing *p, const double *lo, const double *hi, double xyz[3],
                   double params[2][2], double *radius)
 {
@@ -248,6 +261,7 @@ const ic_pairing_kind ic_pairing_params = {
     .unflatten = unflatten,
     .flatten = flatten,
     .place = place,
+    .contact_residuals = contact_residuals,
     .section = section,
     .step = step,
     .position = position,

@@ -77,6 +77,11 @@ static ic_status position(const ic_pairing *p, const double *z, double xyz[3], i
     return ic_pairing_params.position(p, z, xyz, err);
 }
 
+static int contact_residuals(const ic_pairing *p, const double *z, double L, double *F)
+{
+    return ic_pairing_params.contact_residuals(p, z, L, F);
+}
+
 static void place(const ic_pairing *p, const double *lo, const double *hi, double xyz[3],
                   double params[2][2], double *radius)
 {
@@ -110,6 +115,7 @@ const ic_pairing_kind ic_pairing_self = {
     .unflatten = unflatten,
     .flatten = flatten,
     .place = place,
+    .contact_residuals = contact_residuals,
     .section = section,
     .step = step,
     .position = position,

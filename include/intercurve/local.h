@@ -47,7 +47,7 @@ typedef enum {
 } ic_point_type;
 
 /** "transversal", "branch-point", ... (DESIGN.md names). */
-const char *ic_point_type_name(ic_point_type type);
+IC_API const char *ic_point_type_name(ic_point_type type);
 
 typedef enum {
     IC_METHOD_AUTO,        /**< jet at transversal points, height-difference at tangential ones */
@@ -59,8 +59,8 @@ typedef enum {
 
 /** "auto", "jet", "closed-form", "perturbation", "height-difference"; and
  *  back (-1 if unknown). */
-const char *ic_method_name(ic_method method);
-int ic_method_from_name(const char *name);
+IC_API const char *ic_method_name(ic_method method);
+IC_API int ic_method_from_name(const char *name);
 
 /** Tolerances of the local computations, with their units. */
 typedef struct {
@@ -103,19 +103,20 @@ typedef struct {
 } ic_local_options;
 
 /** Fills the defaults above. */
-void ic_local_defaults(ic_local_options *opt);
+IC_API void ic_local_defaults(ic_local_options *opt);
 
 typedef struct ic_pair ic_pair;
 
 /** A pair of surfaces (not owned; they must outlive the pair). B = NULL
  *  makes a self-intersection pair of A, which must be parametric. */
-IC_NODISCARD ic_status ic_pair_new(ic_pair **pair, ic_surface *A, ic_surface *B, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_pair_new(ic_pair **pair, ic_surface *A, ic_surface *B,
+                                          ic_error *err);
 /** Frees a pair; NULL is allowed. */
-void ic_pair_free(ic_pair *pair);
+IC_API void ic_pair_free(ic_pair *pair);
 /** 1 for a self-intersection pair. */
-int ic_pair_is_self(const ic_pair *pair);
+IC_API int ic_pair_is_self(const ic_pair *pair);
 /** Surface 0 (A) or 1 (B; A again for a self-intersection). */
-ic_surface *ic_pair_surface(const ic_pair *pair, int which);
+IC_API ic_surface *ic_pair_surface(const ic_pair *pair, int which);
 
 /** A point of the intersection: coordinates and the parameters on each
  *  parametric sheet (unused entries of implicit surfaces are 0). */
@@ -133,17 +134,18 @@ typedef struct {
  * IC_ERR_UNABLE with the distance in the message when xyz is farther than
  * opt->point_tol from either surface (or from the intersection).
  */
-IC_NODISCARD ic_status ic_local_locate(ic_pair *pair, ic_local_point *pt, const double xyz[3],
-                                       const ic_local_options *opt, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_local_locate(ic_pair *pair, ic_local_point *pt,
+                                              const double xyz[3], const ic_local_options *opt,
+                                              ic_error *err);
 
 /**
  * The same from parameters: params lists the parameters of the parametric
  * surfaces in problem order (u, v for A if parametric, then those of B; for a
  * self-intersection u, v, p, q). nparams must match (IC_ERR_INVALID).
  */
-IC_NODISCARD ic_status ic_local_locate_params(ic_pair *pair, ic_local_point *pt,
-                                              const double *params, int nparams,
-                                              const ic_local_options *opt, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_local_locate_params(ic_pair *pair, ic_local_point *pt,
+                                                     const double *params, int nparams,
+                                                     const ic_local_options *opt, ic_error *err);
 
 /**
  * The tangential point nearest to a point close to it: on both surfaces with
@@ -152,9 +154,10 @@ IC_NODISCARD ic_status ic_local_locate_params(ic_pair *pair, ic_local_point *pt,
  * `near`. IC_ERR_UNABLE if it does not converge (residual above 1e-12) or
  * moves farther than `reach` (a length).
  */
-IC_NODISCARD ic_status ic_local_locate_tangential(ic_pair *pair, ic_local_point *pt,
-                                                  const ic_local_point *near, double reach,
-                                                  const ic_local_options *opt, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_local_locate_tangential(ic_pair *pair, ic_local_point *pt,
+                                                         const ic_local_point *near, double reach,
+                                                         const ic_local_options *opt,
+                                                         ic_error *err);
 
 /**
  * How well the place of a located tangential point `pt` is known: the
@@ -165,9 +168,9 @@ IC_NODISCARD ic_status ic_local_locate_tangential(ic_pair *pair, ic_local_point 
  * (noise)^(1/(m-1)); at most 1e-4 of the problem's size (then the place is
  * not known at all). IC_ERR_UNABLE where a surface is singular near it.
  */
-IC_NODISCARD ic_status ic_local_tangential_place(ic_pair *pair, const ic_local_point *pt,
-                                                 const ic_local_options *opt, double *radius,
-                                                 ic_error *err);
+IC_API IC_NODISCARD ic_status ic_local_tangential_place(ic_pair *pair, const ic_local_point *pt,
+                                                        const ic_local_options *opt, double *radius,
+                                                        ic_error *err);
 
 /**
  * Locates a degenerate tangential point (a cusp, a tacnode or a higher one,
@@ -177,9 +180,10 @@ IC_NODISCARD ic_status ic_local_tangential_place(ic_pair *pair, const ic_local_p
  * the kernel curve (docs/tracing.md). IC_ERR_UNABLE when no point within
  * `reach` (a length) classifies with the contact order it was solved for.
  */
-IC_NODISCARD ic_status ic_local_locate_degenerate(ic_pair *pair, ic_local_point *pt,
-                                                  const ic_local_point *near, double reach,
-                                                  const ic_local_options *opt, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_local_locate_degenerate(ic_pair *pair, ic_local_point *pt,
+                                                         const ic_local_point *near, double reach,
+                                                         const ic_local_options *opt,
+                                                         ic_error *err);
 
 /** Darboux quantities of the curve on one surface (DESIGN.md 2.1). */
 typedef struct {
@@ -245,15 +249,16 @@ typedef struct {
  * available yet: IC_ERR_INVALID). IC_ERR_INVALID for an order out of range;
  * IC_ERR_UNABLE where the classification cannot decide (it says why).
  */
-IC_NODISCARD ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res,
-                                          const ic_local_point *pt, int order, ic_method method,
-                                          const ic_local_options *opt, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res,
+                                                 const ic_local_point *pt, int order,
+                                                 ic_method method, const ic_local_options *opt,
+                                                 ic_error *err);
 
 /** Local straight-line and plane-curve conditions (seed 001 corollaries
  *  3.1, 3.2) at a branch: kappa <= tol (1/length), and tau = 0 within tol
  *  (1/length); a branch with undefined torsion is no plane curve witness. */
-int ic_branch_is_line(const ic_branch *br, double tol);
-int ic_branch_is_planar(const ic_branch *br, double tol);
+IC_API int ic_branch_is_line(const ic_branch *br, double tol);
+IC_API int ic_branch_is_planar(const ic_branch *br, double tol);
 
 #ifdef __cplusplus
 }

@@ -26,7 +26,7 @@ typedef struct {
     int mesh;                  /**< mesh cells per parameter or box axis (default 36) */
 } ic_plot_options;
 
-void ic_plot_defaults(ic_plot_options *opt);
+IC_API void ic_plot_defaults(ic_plot_options *opt);
 
 /** What a picture shows. Surfaces are not owned. A parametric surface is
  *  meshed over its domain (and cut to the box if there is one), an implicit
@@ -44,8 +44,8 @@ typedef struct {
 
 /** The scene of a problem file (title, surfaces, names, box) with a trace
  *  of it (NULL: surfaces only); the problem keeps owning the surfaces. */
-void ic_plot_scene_of_problem(ic_plot_scene *scene, const ic_problem *problem,
-                              const ic_trace_result *trace);
+IC_API void ic_plot_scene_of_problem(ic_plot_scene *scene, const ic_problem *problem,
+                                     const ic_trace_result *trace);
 
 /**
  * Draws the scene into `path`; the format comes from its extension (.svg,
@@ -53,8 +53,8 @@ void ic_plot_scene_of_problem(ic_plot_scene *scene, const ic_problem *problem,
  * and a rename (IC_ERR_IO when that fails). Where the trace has no curve and
  * no point, the figure says "no intersection".
  */
-IC_NODISCARD ic_status ic_plot_write(const char *path, const ic_plot_scene *scene,
-                                     const ic_plot_options *opt, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_plot_write(const char *path, const ic_plot_scene *scene,
+                                            const ic_plot_options *opt, ic_error *err);
 
 #ifdef __cplusplus
 }

@@ -52,7 +52,7 @@ typedef struct {
     ic_local_options local;
 } ic_trace_options;
 
-void ic_trace_defaults(ic_trace_options *opt);
+IC_API void ic_trace_defaults(ic_trace_options *opt);
 
 typedef enum {
     IC_TRACE_CONTINUE,
@@ -64,7 +64,7 @@ typedef enum {
     IC_TRACE_FAILED       /**< the step shrank below min_step: err says why */
 } ic_trace_event;
 
-const char *ic_trace_event_name(ic_trace_event ev);
+IC_API const char *ic_trace_event_name(ic_trace_event ev);
 
 /** One point of a traced curve (t oriented along the marching direction). */
 typedef struct {
@@ -80,21 +80,21 @@ typedef struct {
 typedef struct ic_tracer ic_tracer;
 
 /** A tracer for a pair (not owned). */
-IC_NODISCARD ic_status ic_tracer_new(ic_tracer **tr, ic_pair *pair, const ic_trace_options *opt,
-                                     ic_error *err);
-void ic_tracer_free(ic_tracer *tr);
+IC_API IC_NODISCARD ic_status ic_tracer_new(ic_tracer **tr, ic_pair *pair,
+                                            const ic_trace_options *opt, ic_error *err);
+IC_API void ic_tracer_free(ic_tracer *tr);
 
 /** Starts a curve at a located transversal point, marching along +t
  *  (direction = +1) or -t (-1). IC_ERR_UNABLE at a tangential point. */
-IC_NODISCARD ic_status ic_tracer_start(ic_tracer *tr, const ic_local_point *start, int direction,
-                                       ic_error *err);
+IC_API IC_NODISCARD ic_status ic_tracer_start(ic_tracer *tr, const ic_local_point *start,
+                                              int direction, ic_error *err);
 /** One step: appends a point (unless the event ends the curve before it). */
-IC_NODISCARD ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err);
 /** Steps until an event other than IC_TRACE_CONTINUE. */
-IC_NODISCARD ic_status ic_tracer_run(ic_tracer *tr, ic_trace_event *event, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_tracer_run(ic_tracer *tr, ic_trace_event *event, ic_error *err);
 
-int ic_tracer_num_points(const ic_tracer *tr);
-const ic_trace_point *ic_tracer_point(const ic_tracer *tr, int i);
+IC_API int ic_tracer_num_points(const ic_tracer *tr);
+IC_API const ic_trace_point *ic_tracer_point(const ic_tracer *tr, int i);
 
 /* ---- the whole intersection ---- */
 
@@ -109,7 +109,7 @@ typedef enum {
 } ic_shape;
 
 /** "general", "line", "circle", "planar", "circular-helix", "helix". */
-const char *ic_shape_name(ic_shape shape);
+IC_API const char *ic_shape_name(ic_shape shape);
 
 typedef struct {
     int closed;
@@ -186,14 +186,14 @@ typedef struct ic_trace_result ic_trace_result;
  * both directions, tangential curve ends recorded. The result is freed with
  * ic_trace_result_free.
  */
-IC_NODISCARD ic_status ic_trace(ic_trace_result **res, ic_pair *pair, const ic_trace_options *opt,
-                                ic_error *err);
-void ic_trace_result_free(ic_trace_result *res);
-int ic_trace_result_num_curves(const ic_trace_result *res);
-const ic_trace_curve *ic_trace_result_curve(const ic_trace_result *res, int i);
-int ic_trace_result_num_specials(const ic_trace_result *res);
-const ic_trace_special *ic_trace_result_special(const ic_trace_result *res, int i);
-const ic_trace_report *ic_trace_result_report(const ic_trace_result *res);
+IC_API IC_NODISCARD ic_status ic_trace(ic_trace_result **res, ic_pair *pair,
+                                       const ic_trace_options *opt, ic_error *err);
+IC_API void ic_trace_result_free(ic_trace_result *res);
+IC_API int ic_trace_result_num_curves(const ic_trace_result *res);
+IC_API const ic_trace_curve *ic_trace_result_curve(const ic_trace_result *res, int i);
+IC_API int ic_trace_result_num_specials(const ic_trace_result *res);
+IC_API const ic_trace_special *ic_trace_result_special(const ic_trace_result *res, int i);
+IC_API const ic_trace_report *ic_trace_result_report(const ic_trace_result *res);
 
 #ifdef __cplusplus
 }

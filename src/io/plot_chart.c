@@ -153,11 +153,11 @@ static void panel(cairo_t *cr, const ic_trace_result *tr, int which, double x, d
     cairo_rectangle(cr, x, y, w, h);
     cairo_stroke(cr);
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-    ic_plot_text(cr, x, y - 8, 13, 1,
-              which
-                  ? (clipped ? "torsion \xcf\x84 (clipped to the 2-98% range)" : "torsion \xcf\x84")
-                  : (clipped ? "curvature \xce\xba (clipped)" : "curvature \xce\xba"),
-              0, 1);
+    ic_plot_text(
+        cr, x, y - 8, 13, 1,
+        which ? (clipped ? "torsion \xcf\x84 (clipped to the 2-98% range)" : "torsion \xcf\x84")
+              : (clipped ? "curvature \xce\xba (clipped)" : "curvature \xce\xba"),
+        0, 1);
 }
 
 void ic_plot_draw_chart(cairo_t *cr, const ic_trace_result *tr, double x, double y, double w,

@@ -420,7 +420,7 @@ static int frame_points(const ic_trace_result *tr, int n, int (*at)[2])
 }
 
 ic_status ic_plot_draw_3d(cairo_t *cr, const ic_plot_scene *scene, const ic_plot_options *opt,
-                       double x, double y, double w, double h, ic_error *err)
+                          double x, double y, double w, double h, ic_error *err)
 {
     ctx3d c;
     memset(&c, 0, sizeof c);
@@ -435,8 +435,8 @@ ic_status ic_plot_draw_3d(cairo_t *cr, const ic_plot_scene *scene, const ic_plot
             const int par = ic_surface_get_kind(scene->surfaces[s]) == IC_PARAMETRIC;
             if (par == (pass == 0))
                 st = ic_plot_mesh_surface(&c.mesh, scene->surfaces[s], s,
-                                       pass == 0 ? (scene->has_box ? scene->box : NULL) : c.box,
-                                       par ? opt->mesh : opt->mesh / 2, err);
+                                          pass == 0 ? (scene->has_box ? scene->box : NULL) : c.box,
+                                          par ? opt->mesh : opt->mesh / 2, err);
         }
     }
     if (st != IC_OK) {

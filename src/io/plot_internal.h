@@ -22,7 +22,7 @@ typedef struct {
 /* Meshes surface `which` of the scene: a parametric one over its domain, an
  * implicit one by marching tetrahedra inside `box`. Appends to mesh. */
 ic_status ic_plot_mesh_surface(plot_mesh *mesh, ic_surface *s, int which, const double box[3][2],
-                            int cells, ic_error *err);
+                               int cells, ic_error *err);
 
 /* An orthographic camera from azimuth and elevation (degrees): screen
  * coordinates (x right, y down) and a depth that grows away from the viewer. */
@@ -34,9 +34,9 @@ typedef struct {
 void ic_plot_camera_init(plot_camera *cam, double azimuth, double elevation);
 /* Fits the box (its 8 corners) into the rectangle (x0, y0, w, h). */
 void ic_plot_camera_fit(plot_camera *cam, const double box[3][2], double x0, double y0, double w,
-                     double h);
+                        double h);
 void ic_plot_camera_project(const plot_camera *cam, const double *p, double *sx, double *sy,
-                         double *depth);
+                            double *depth);
 
 /* Colours (the same in every figure): viridis for curvature, fixed ones for
  * t, n, b, the two surfaces, the curves of the chart and point types. */
@@ -52,7 +52,7 @@ void ic_plot_curve_color(int i, double rgb[3]);
 
 /* Text helpers: the toy font API, sans-serif. */
 void ic_plot_text(cairo_t *cr, double x, double y, double size, int bold, const char *text,
-               double align_x, double align_y);
+                  double align_x, double align_y);
 double ic_plot_text_width(cairo_t *cr, double size, int bold, const char *text);
 /* About n "nice" ticks (1, 2, 5 times a power of 10) covering [lo, hi]:
  * first tick, step and count. */
@@ -62,9 +62,9 @@ void ic_plot_tick_label(char *buf, size_t size, double v, double step);
 
 /* The 3D panel in the rectangle (x, y, w, h). */
 ic_status ic_plot_draw_3d(cairo_t *cr, const ic_plot_scene *scene, const ic_plot_options *opt,
-                       double x, double y, double w, double h, ic_error *err);
+                          double x, double y, double w, double h, ic_error *err);
 /* The chart of curvature and torsion against arc length. */
 void ic_plot_draw_chart(cairo_t *cr, const ic_trace_result *trace, double x, double y, double w,
-                     double h);
+                        double h);
 
 #endif

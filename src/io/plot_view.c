@@ -25,7 +25,7 @@ static double dot(const double *a, const double *b)
 }
 
 void ic_plot_camera_fit(plot_camera *cam, const double box[3][2], double x0, double y0, double w,
-                     double h)
+                        double h)
 {
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (int c = 0; c < 8; c++) {
@@ -43,7 +43,7 @@ void ic_plot_camera_fit(plot_camera *cam, const double box[3][2], double x0, dou
 }
 
 void ic_plot_camera_project(const plot_camera *cam, const double *p, double *sx, double *sy,
-                         double *depth)
+                            double *depth)
 {
     *sx = cam->ox + cam->scale * (dot(p, cam->right) - cam->cx);
     *sy = cam->oy - cam->scale * (dot(p, cam->up) - cam->cy);
@@ -99,7 +99,7 @@ double ic_plot_text_width(cairo_t *cr, double size, int bold, const char *text)
 }
 
 void ic_plot_text(cairo_t *cr, double x, double y, double size, int bold, const char *text,
-               double align_x, double align_y)
+                  double align_x, double align_y)
 {
     cairo_text_extents_t ext;
     set_font(cr, size, bold);

@@ -64,7 +64,8 @@ typedef struct {
     double value;
 } ic_constant;
 
-/** Short English name of a status ("domain error", ...). Never NULL. */
+/** Short English name of a status ("domain error", ...): a static string,
+ *  never NULL. */
 IC_API const char *ic_status_name(ic_status status);
 
 /** Clears an error record (code IC_OK, empty strings). NULL is allowed. */

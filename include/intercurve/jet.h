@@ -51,7 +51,10 @@ IC_API IC_NODISCARD ic_status ic_jet_space_new(ic_jet_space **sp, int nvars, int
 /** Frees a space; NULL is allowed. */
 IC_API void ic_jet_space_free(ic_jet_space *sp);
 
-IC_API int ic_jet_space_nvars(const ic_jet_space *sp);
+/** Number of variables m. */
+IC_API int ic_jet_space_num_vars(const ic_jet_space *sp);
+/* The spelling before 0.1.0 (deprecated; docs/packaging.md). */
+#define ic_jet_space_nvars ic_jet_space_num_vars
 IC_API int ic_jet_space_order(const ic_jet_space *sp);
 /** Number of coefficients, C(m + K, m). */
 IC_API int ic_jet_space_len(const ic_jet_space *sp);

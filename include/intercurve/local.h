@@ -13,8 +13,8 @@
  *    order, three linear equations with the same matrix [t; N_A; N_B];
  *  - the closed-form method (orders <= 3): the papers' formulas, one function
  *    per paper and case (src/local/closed_*.c cite the equations).
- * Tangential points (normals parallel within the angle option) are reported
- * as such; their analysis is the tangential issue's.
+ * At a tangential point (normals parallel within the angle option) the point
+ * is classified and every branch through it computed (docs/tangential.md).
  */
 #ifndef INTERCURVE_LOCAL_H
 #define INTERCURVE_LOCAL_H
@@ -46,7 +46,7 @@ typedef enum {
     IC_POINT_SURFACE_SINGULAR
 } ic_point_type;
 
-/** "transversal", "branch-point", ... (DESIGN.md names). */
+/** "transversal", "branch-point", ... (DESIGN.md names): a static string. */
 IC_API const char *ic_point_type_name(ic_point_type type);
 
 typedef enum {
@@ -57,8 +57,8 @@ typedef enum {
     IC_METHOD_HEIGHT_DIFFERENCE /**< tangential points, any order (docs/tangential.md) */
 } ic_method;
 
-/** "auto", "jet", "closed-form", "perturbation", "height-difference"; and
- *  back (-1 if unknown). */
+/** "auto", "jet", "closed-form", "perturbation", "height-difference" (a
+ *  static string); and back (-1 if unknown). */
 IC_API const char *ic_method_name(ic_method method);
 IC_API int ic_method_from_name(const char *name);
 
@@ -115,7 +115,8 @@ IC_API IC_NODISCARD ic_status ic_pair_new(ic_pair **pair, ic_surface *A, ic_surf
 IC_API void ic_pair_free(ic_pair *pair);
 /** 1 for a self-intersection pair. */
 IC_API int ic_pair_is_self(const ic_pair *pair);
-/** Surface 0 (A) or 1 (B; A again for a self-intersection). */
+/** Surface 0 (A) or 1 (B; A again for a self-intersection): the caller's
+ *  surface given to ic_pair_new, not owned by the pair. */
 IC_API ic_surface *ic_pair_surface(const ic_pair *pair, int which);
 
 /** A point of the intersection: coordinates and the parameters on each
@@ -231,7 +232,7 @@ typedef struct {
      *  (seed 000 (4.8): a11, a12, a22 and its discriminant a12^2 - a11 a22;
      *  seed 001 (4.1), (4.10): A, a11, a12, a13) */
     int npaper;
-    const char *paper_names[4];
+    const char *paper_names[4]; /**< static strings */
     double paper_values[4];
     /** perturbation method: the change of the extrapolated t, n, kappa
      *  between the last two Richardson levels (an error estimate); 0 otherwise */
@@ -244,9 +245,11 @@ typedef struct {
  * The apparatus at a located point, to order K (1..IC_LOCAL_MAX_ORDER; the
  * closed-form method to IC_CLOSED_FORM_MAX_ORDER). At a tangential point
  * (angle below opt->tangential_angle) the point is classified and every
- * branch through it computed by the height-difference method (auto, jet or
- * height-difference; the other methods at tangential points are not
- * available yet: IC_ERR_INVALID). IC_ERR_INVALID for an order out of range;
+ * branch through it computed: by the height-difference method (auto, jet or
+ * height-difference), the perturbation method (to order 2) or the papers'
+ * closed forms (two parametric or two implicit surfaces; a mixed pair is
+ * IC_ERR_INVALID). Perturbation and height-difference at a transversal
+ * point are IC_ERR_INVALID, as is an order out of range;
  * IC_ERR_UNABLE where the classification cannot decide (it says why).
  */
 IC_API IC_NODISCARD ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res,

@@ -28,7 +28,8 @@ typedef struct {
 
 IC_API void ic_plot_defaults(ic_plot_options *opt);
 
-/** What a picture shows. Surfaces are not owned. A parametric surface is
+/** What a picture shows. Nothing is owned: the surfaces, title, names and
+ *  trace must outlive the scene's use. A parametric surface is
  *  meshed over its domain (and cut to the box if there is one), an implicit
  *  one inside the box (or, without a box, inside the other surface's and the
  *  curves' bounding box). trace may be NULL: surfaces only. */

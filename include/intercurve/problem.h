@@ -29,6 +29,9 @@ IC_API IC_NODISCARD ic_status ic_problem_parse(ic_problem **p, const char *json,
 /** Frees a problem and its surfaces; NULL is allowed. */
 IC_API void ic_problem_free(ic_problem *p);
 
+/* The accessors' pointers (NULL for an index out of range) point into the
+ * problem: valid until ic_problem_free. */
+/** The title ("" when the file has none). */
 IC_API const char *ic_problem_title(const ic_problem *p);
 IC_API int ic_problem_num_surfaces(const ic_problem *p);
 /** The i-th surface (owned by the problem). */

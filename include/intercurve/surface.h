@@ -104,8 +104,10 @@ IC_API IC_NODISCARD ic_status ic_surface_new_primitive(ic_surface **s, const ic_
 IC_API void ic_surface_free(ic_surface *s);
 
 IC_API ic_surface_kind ic_surface_get_kind(const ic_surface *s);
-/** 2 for parametric (u, v), 3 for implicit (x, y, z). */
-IC_API int ic_surface_num_inputs(const ic_surface *s);
+/** Number of variables: 2 for parametric (u, v), 3 for implicit (x, y, z). */
+IC_API int ic_surface_num_vars(const ic_surface *s);
+/* The spelling before 0.1.0 (deprecated; docs/packaging.md). */
+#define ic_surface_num_inputs ic_surface_num_vars
 /** 3 for parametric (x, y, z), 1 for implicit (f). */
 IC_API int ic_surface_num_outputs(const ic_surface *s);
 
@@ -117,7 +119,7 @@ IC_API void ic_surface_get_domain(const ic_surface *s, double domain[2][2], int 
 
 /**
  * Taylor coefficients of the surface at `at` (u, v or x, y, z): `sp` must
- * have ic_surface_num_inputs(s) variables; `out` receives
+ * have ic_surface_num_vars(s) variables; `out` receives
  * ic_surface_num_outputs(s) consecutive jets of sp. The partial derivative
  * d^alpha is out[i] * ic_jet_factorial(sp, i). IC_ERR_DOMAIN where the
  * surface is undefined at `at` (err says which operation), IC_ERR_INVALID on
@@ -127,7 +129,7 @@ IC_API IC_NODISCARD ic_status ic_surface_taylor(ic_surface *s, double *out, cons
                                                 const ic_jet_space *sp, ic_error *err);
 
 /**
- * The surface composed with jets: `in` holds ic_surface_num_inputs(s) jets of
+ * The surface composed with jets: `in` holds ic_surface_num_vars(s) jets of
  * `sp` (a parameter curve (u(s), v(s)) or a space curve (x(s), y(s), z(s)),
  * or jets in more variables); `out` receives ic_surface_num_outputs(s)
  * consecutive jets of sp: R(u(s), v(s)) or f(x(s), y(s), z(s)).

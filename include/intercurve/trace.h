@@ -12,8 +12,9 @@
  * start, left a parameter domain or the box, reached a tangential point, or
  * the point budget ran out.
  *
- * This is the marching core; start points, singular points located on the
- * way and whole-intersection tracing come with the tracing issue.
+ * ic_tracer is the marching core; ic_trace below traces the whole
+ * intersection: start points, every curve, the special points on the way
+ * (docs/tracing.md).
  */
 #ifndef INTERCURVE_TRACE_H
 #define INTERCURVE_TRACE_H
@@ -64,6 +65,7 @@ typedef enum {
     IC_TRACE_FAILED       /**< the step shrank below min_step: err says why */
 } ic_trace_event;
 
+/** "continue", "closed", ...: a static string. */
 IC_API const char *ic_trace_event_name(ic_trace_event ev);
 
 /** One point of a traced curve (t oriented along the marching direction). */
@@ -94,6 +96,9 @@ IC_API IC_NODISCARD ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *even
 IC_API IC_NODISCARD ic_status ic_tracer_run(ic_tracer *tr, ic_trace_event *event, ic_error *err);
 
 IC_API int ic_tracer_num_points(const ic_tracer *tr);
+/** Point i of the current curve, NULL out of range. Valid until the next
+ *  ic_tracer_start, ic_tracer_step or ic_tracer_run (the points grow by
+ *  reallocation) or ic_tracer_free. */
 IC_API const ic_trace_point *ic_tracer_point(const ic_tracer *tr, int i);
 
 /* ---- the whole intersection ---- */
@@ -108,13 +113,14 @@ typedef enum {
     IC_SHAPE_HELIX
 } ic_shape;
 
-/** "general", "line", "circle", "planar", "circular-helix", "helix". */
+/** "general", "line", "circle", "planar", "circular-helix", "helix": a
+ *  static string. */
 IC_API const char *ic_shape_name(ic_shape shape);
 
 typedef struct {
     int closed;
     int npoints;
-    const ic_trace_point *points;
+    const ic_trace_point *points; /**< owned by the result */
     double length;
     ic_trace_event ends[2]; /**< how the two ends stopped (both CLOSED for a loop) */
     int tangential;         /**< 1: the surfaces touch all along it (a tangential curve) */
@@ -189,6 +195,8 @@ typedef struct ic_trace_result ic_trace_result;
 IC_API IC_NODISCARD ic_status ic_trace(ic_trace_result **res, ic_pair *pair,
                                        const ic_trace_options *opt, ic_error *err);
 IC_API void ic_trace_result_free(ic_trace_result *res);
+/* The accessors' pointers (NULL for an index out of range) point into the
+ * result: valid until ic_trace_result_free. */
 IC_API int ic_trace_result_num_curves(const ic_trace_result *res);
 IC_API const ic_trace_curve *ic_trace_result_curve(const ic_trace_result *res, int i);
 IC_API int ic_trace_result_num_specials(const ic_trace_result *res);

@@ -1,5 +1,5 @@
 # intercurve: the commands for people. CMake does the building underneath.
-#   make          build (build/; warnings stay warnings)
+#   make          build (build/)
 #   make test     install missing Debian packages, build with warnings as errors, run every test
 #   make demo     run the main job on a bundled example (writes demo.png)
 #   make gallery  draw every bundled example into docs/gallery/

@@ -1,17 +1,21 @@
 # intercurve: the commands for people. CMake does the building underneath.
 #   make          build (build/)
-#   make test     install missing Debian packages, build, run every test
+#   make test     install missing Debian packages, build with warnings as errors, run every test
 #   make demo     run the main job on a bundled example (writes demo.png)
 #   make gallery  draw every bundled example into docs/gallery/
-#   make bench    run the benchmarks
-#   make install  install library, headers, pkg-config file and command (PREFIX)
+#   make bench    build and run the benchmarks
+#   make install  install both libraries, headers, pkg-config file, CMake package and
+#                 command (PREFIX)
 #   make fuzz     build the libFuzzer targets with clang and run each (FUZZ_SECONDS)
 
 BUILD ?= build
 PREFIX ?= /usr/local
 FUZZ_SECONDS ?= 60
 CMAKE_FLAGS ?=
-DEB_PACKAGES = cmake pkg-config libcjson-dev libcairo2-dev libxml2-dev poppler-utils
+# g++: the test that the headers work from C++ (tests/test_cxx.cpp)
+DEB_PACKAGES = cmake pkg-config g++ libcjson-dev libcairo2-dev libxml2-dev poppler-utils
+# more, for one run: .ci/run adds clang
+EXTRA_DEB_PACKAGES ?=
 
 .PHONY: all deps configure test demo gallery bench install fuzz sanitize clean
 
@@ -20,7 +24,7 @@ all: configure
 
 # Debian packages the build needs, installed only when missing.
 deps:
-	@missing=""; for p in $(DEB_PACKAGES); do \
+	@missing=""; for p in $(DEB_PACKAGES) $(EXTRA_DEB_PACKAGES); do \
 	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
 	done; \
 	if [ -n "$$missing" ]; then \
@@ -32,7 +36,10 @@ deps:
 configure: deps
 	@test -f $(BUILD)/CMakeCache.txt || cmake -S . -B $(BUILD) -DCMAKE_INSTALL_PREFIX=$(PREFIX) $(CMAKE_FLAGS)
 
-test: all
+# developers and CI: warnings are errors (IC_WERROR, docs/packaging.md)
+test: configure
+	cmake -S . -B $(BUILD) -DIC_WERROR=ON >/dev/null
+	cmake --build $(BUILD) -j2
 	cd $(BUILD) && ctest --output-on-failure -j2
 
 sanitize:
@@ -57,7 +64,9 @@ gallery: all
 	done
 	@echo "pictures in docs/gallery/"
 
-bench: all
+bench: configure
+	cmake -S . -B $(BUILD) -DIC_BUILD_BENCH=ON >/dev/null
+	cmake --build $(BUILD) -j2
 	./$(BUILD)/bench/bench_surface
 	./$(BUILD)/bench/bench_local
 	./$(BUILD)/bench/bench_trace examples
@@ -77,4 +86,4 @@ fuzz: deps
 	  -dict=fuzz/problem.dict -artifact_prefix=fuzz/ fuzz/corpus/trace fuzz/seeds/trace
 
 clean:
-	rm -rf build build-asan build-fuzz
+	rm -rf build build-asan build-fuzz build-gcc-release build-clang-release

@@ -44,6 +44,24 @@ typedef struct {
     double at[3];
 } bench_case;
 
+/* The surfaces made, freed together at the end. */
+typedef struct {
+    ic_surface *s[24];
+    int n;
+} surface_pool;
+
+/* A primitive added to the pool, or NULL. A function, not a macro: two calls
+ * in one initializer list are then each done whole, in either order. */
+static ic_surface *prim(surface_pool *pool, const ic_primitive *p, ic_surface_kind form)
+{
+    ic_surface *srf = NULL;
+    if (pool->n == (int)(sizeof pool->s / sizeof pool->s[0]) ||
+        ic_surface_new_primitive(&srf, p, form, NULL) != IC_OK)
+        return NULL;
+    pool->s[pool->n++] = srf;
+    return srf;
+}
+
 int main(void)
 {
     ic_primitive cyl = {.kind = IC_PRIM_CYLINDER, .center = {1, 0, 0}, .radius = 1};
@@ -56,9 +74,8 @@ int main(void)
     const double th = 0.7;
     bench_case cases[8];
     int n = 0;
-    ic_surface *s[24] = {NULL};
-    int ns = 0;
-#define PRIM(p, form) (ic_surface_new_primitive(&s[ns], &(p), (form), NULL) == IC_OK ? s[ns++] : NULL)
+    surface_pool pool = {.n = 0};
+#define PRIM(p, form) prim(&pool, &(p), (form))
     cases[n++] = (bench_case){"Viviani param/param (primitives)", PRIM(cyl, IC_PARAMETRIC),
                               PRIM(sph, IC_PARAMETRIC),
                               {1 + cos(th), sin(th), 2 * sin(th / 2)}};
@@ -74,7 +91,7 @@ int main(void)
                               PRIM(plane, IC_IMPLICIT), {0, 0, 0}};
     ic_surface *enn = NULL;
     if (ic_surface_new_parametric(&enn, enneper, NULL, NULL, 0, NULL, NULL) == IC_OK)
-        s[ns++] = enn;
+        pool.s[pool.n++] = enn;
     const double dom[2][2] = {{-5, 5}, {-5, 5}};
     if (!enn || ic_surface_set_domain(enn, dom, NULL, NULL) != IC_OK)
         return 1;
@@ -171,7 +188,7 @@ int main(void)
                r4);
         ic_pair_free(j.pair);
     }
-    for (int i = 0; i < ns; i++)
-        ic_surface_free(s[i]);
+    for (int i = 0; i < pool.n; i++)
+        ic_surface_free(pool.s[i]);
     return 0;
 }

@@ -1,7 +1,8 @@
 /**
  * @file intercurve.h
  * intercurve: differential geometry of surface intersection curves.
- * Includes every public header (docs/architecture.md lists the layers).
+ * Includes every public header (docs/architecture.md lists the layers); each
+ * carries its own extern "C" guards, so C++ includes this one as it is.
  */
 #ifndef INTERCURVE_H
 #define INTERCURVE_H

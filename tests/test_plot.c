@@ -125,7 +125,7 @@ static void plot_example(const char *dir, const char *tmpdir, const char *name)
                   "%s: %d frame arrows, not %d", name, arrows, want);
             xmlFreeDoc(doc);
         } else if (f == 1) {
-            static const int RED[3] = {214, 39, 40}; /* t arrows: PLOT_T */
+            static const int RED[3] = {214, 39, 40}; /* t arrows: ic_plot_rgb_t */
             check_png(path, name, RED, ncurves > 0);
         } else {
             FILE *fp = fopen(path, "rb");

@@ -20,10 +20,14 @@
 extern "C" {
 #endif
 
+/* IC_API marks the library's API: the shared library is built with hidden
+ * visibility and exports only the functions that carry it (docs/packaging.md). */
 #if defined(__GNUC__) || defined(__clang__)
+#define IC_API __attribute__((visibility("default")))
 #define IC_NODISCARD __attribute__((warn_unused_result))
 #define IC_PRINTF(f, a) __attribute__((format(printf, f, a)))
 #else
+#define IC_API
 #define IC_NODISCARD
 #define IC_PRINTF(f, a)
 #endif
@@ -60,22 +64,23 @@ typedef struct {
     double value;
 } ic_constant;
 
-/** Short English name of a status ("domain error", ...). Never NULL. */
-const char *ic_status_name(ic_status status);
+/** Short English name of a status ("domain error", ...): a static string,
+ *  never NULL. */
+IC_API const char *ic_status_name(ic_status status);
 
 /** Clears an error record (code IC_OK, empty strings). NULL is allowed. */
-void ic_error_clear(ic_error *err);
+IC_API void ic_error_clear(ic_error *err);
 
 /**
  * Fills `err` (if not NULL) with `code`, `column` and a printf-formatted
  * message; keeps an existing path. Returns `code`, so callers can write
  * `return ic_error_set(err, IC_ERR_DOMAIN, 0, "...")`.
  */
-ic_status ic_error_set(ic_error *err, ic_status code, int column, const char *fmt, ...)
+IC_API ic_status ic_error_set(ic_error *err, ic_status code, int column, const char *fmt, ...)
     IC_PRINTF(4, 5);
 
 /** Sets the JSON path of `err` (printf-formatted). NULL `err` is allowed. */
-void ic_error_set_path(ic_error *err, const char *fmt, ...) IC_PRINTF(2, 3);
+IC_API void ic_error_set_path(ic_error *err, const char *fmt, ...) IC_PRINTF(2, 3);
 
 #ifdef __cplusplus
 }

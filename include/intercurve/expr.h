@@ -51,17 +51,17 @@ typedef struct {
  * constants must be identifiers distinct from each other, from pi and e
  * and from the function names (IC_ERR_INVALID otherwise).
  */
-IC_NODISCARD ic_status ic_expr_compile(ic_expr **out, const char *const *formulas, int nformulas,
-                                       const char *const *vars, int nvars,
-                                       const ic_constant *consts, int nconsts, int *which,
-                                       ic_error *err);
+IC_API IC_NODISCARD ic_status ic_expr_compile(ic_expr **out, const char *const *formulas,
+                                              int nformulas, const char *const *vars, int nvars,
+                                              const ic_constant *consts, int nconsts, int *which,
+                                              ic_error *err);
 /** Frees a compiled expression; NULL is allowed. */
-void ic_expr_free(ic_expr *e);
+IC_API void ic_expr_free(ic_expr *e);
 
-int ic_expr_num_outputs(const ic_expr *e);
-int ic_expr_num_vars(const ic_expr *e);
+IC_API int ic_expr_num_outputs(const ic_expr *e);
+IC_API int ic_expr_num_vars(const ic_expr *e);
 /** Number of instructions of the tape (after folding and sharing). */
-int ic_expr_tape_len(const ic_expr *e);
+IC_API int ic_expr_tape_len(const ic_expr *e);
 
 /**
  * Evaluates a formula made only of numbers, pi, e and the given constants
@@ -69,30 +69,30 @@ int ic_expr_tape_len(const ic_expr *e);
  * IC_ERR_PARSE with the column on a malformed or non-constant formula,
  * IC_ERR_DOMAIN if the value is not finite.
  */
-IC_NODISCARD ic_status ic_expr_eval_constant(double *value, const char *formula,
-                                             const ic_constant *consts, int nconsts,
-                                             ic_error *err);
+IC_API IC_NODISCARD ic_status ic_expr_eval_constant(double *value, const char *formula,
+                                                    const ic_constant *consts, int nconsts,
+                                                    ic_error *err);
 
 /** Doubles of work memory for ic_expr_eval. */
-size_t ic_expr_work_len(const ic_expr *e);
+IC_API size_t ic_expr_work_len(const ic_expr *e);
 /**
  * out[i] = formula i at the point x[nvars]. Returns IC_ERR_DOMAIN (with the
  * column of the operation in `err`) if an intermediate value is not finite
  * or an argument is outside its function's domain.
  */
-IC_NODISCARD ic_status ic_expr_eval(const ic_expr *e, double *out, const double *x, double *work,
-                                    ic_error *err);
+IC_API IC_NODISCARD ic_status ic_expr_eval(const ic_expr *e, double *out, const double *x,
+                                           double *work, ic_error *err);
 
 /** ic_interval elements of work memory for ic_expr_eval_interval. */
-size_t ic_expr_interval_work_len(const ic_expr *e);
+IC_API size_t ic_expr_interval_work_len(const ic_expr *e);
 /**
  * out[i] encloses the values of formula i over the box x[nvars], at the
  * points of the box where it is defined (rounding is outward). An empty
  * result means the formula is defined nowhere in the box; an infinite bound
  * means no finite bound was found (a division by an interval holding 0).
  */
-void ic_expr_eval_interval(const ic_expr *e, ic_interval *out, const ic_interval *x,
-                           ic_interval *work);
+IC_API void ic_expr_eval_interval(const ic_expr *e, ic_interval *out, const ic_interval *x,
+                                  ic_interval *work);
 
 /** Most seed directions of an interval gradient. */
 #define IC_INTERVAL_GRAD_MAX 3
@@ -104,7 +104,7 @@ typedef struct {
 } ic_interval_grad;
 
 /** ic_interval_grad elements of work memory for ic_expr_eval_interval_grad. */
-size_t ic_expr_interval_grad_work_len(const ic_expr *e);
+IC_API size_t ic_expr_interval_grad_work_len(const ic_expr *e);
 /**
  * Forward mode on intervals: x[i].v is variable i's interval and x[i].d[k]
  * its derivative along seed direction k (k < ngrad <= IC_INTERVAL_GRAD_MAX;
@@ -117,52 +117,53 @@ size_t ic_expr_interval_grad_work_len(const ic_expr *e);
  * need the formula on the whole box (the mean value theorem of centred
  * forms, the normal cones of the loop test) must decide nothing on 0.
  */
-int ic_expr_eval_interval_grad(const ic_expr *e, ic_interval_grad *out,
-                                const ic_interval_grad *x, int ngrad, ic_interval_grad *work);
+IC_API int ic_expr_eval_interval_grad(const ic_expr *e, ic_interval_grad *out,
+                                      const ic_interval_grad *x, int ngrad, ic_interval_grad *work);
 
 /** Doubles of work memory for ic_expr_eval_jet in space sp. */
-size_t ic_expr_jet_work_len(const ic_expr *e, const ic_jet_space *sp);
+IC_API size_t ic_expr_jet_work_len(const ic_expr *e, const ic_jet_space *sp);
 /**
  * out[i] (jet i of ic_jet_space_len(sp) doubles, consecutive) = formula i
  * composed with the jets x[0..nvars-1] of sp. IC_ERR_DOMAIN (with the
  * column in `err`) where a function's jet does not exist.
  */
-IC_NODISCARD ic_status ic_expr_eval_jet(const ic_expr *e, double *out, const double *const *x,
-                                        const ic_jet_space *sp, double *work, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_expr_eval_jet(const ic_expr *e, double *out,
+                                               const double *const *x, const ic_jet_space *sp,
+                                               double *work, ic_error *err);
 
 /**
  * Writes a two-line picture of an error position into buf:
  *   "  <formula>\n  <spaces>^\n". Formulas longer than fits are cut around
  * the column. Returns buf.
  */
-char *ic_expr_caret(char *buf, size_t size, const char *formula, int column);
+IC_API char *ic_expr_caret(char *buf, size_t size, const char *formula, int column);
 
 /* Interval arithmetic used by the evaluator, exposed for the subdivision
  * code and for tests. Every result encloses the exact image. */
-ic_interval ic_interval_add(ic_interval a, ic_interval b);
-ic_interval ic_interval_sub(ic_interval a, ic_interval b);
-ic_interval ic_interval_mul(ic_interval a, ic_interval b);
-ic_interval ic_interval_div(ic_interval a, ic_interval b);
-ic_interval ic_interval_neg(ic_interval a);
-ic_interval ic_interval_sqrt(ic_interval a);
-ic_interval ic_interval_exp(ic_interval a);
-ic_interval ic_interval_log(ic_interval a);
-ic_interval ic_interval_pow_int(ic_interval a, long n);
-ic_interval ic_interval_pow_real(ic_interval a, double p);
-ic_interval ic_interval_pow(ic_interval a, ic_interval b);
-ic_interval ic_interval_sin(ic_interval a);
-ic_interval ic_interval_cos(ic_interval a);
-ic_interval ic_interval_tan(ic_interval a);
-ic_interval ic_interval_asin(ic_interval a);
-ic_interval ic_interval_acos(ic_interval a);
-ic_interval ic_interval_atan(ic_interval a);
-ic_interval ic_interval_atan2(ic_interval y, ic_interval x);
-ic_interval ic_interval_sinh(ic_interval a);
-ic_interval ic_interval_cosh(ic_interval a);
-ic_interval ic_interval_tanh(ic_interval a);
-ic_interval ic_interval_abs(ic_interval a);
+IC_API ic_interval ic_interval_add(ic_interval a, ic_interval b);
+IC_API ic_interval ic_interval_sub(ic_interval a, ic_interval b);
+IC_API ic_interval ic_interval_mul(ic_interval a, ic_interval b);
+IC_API ic_interval ic_interval_div(ic_interval a, ic_interval b);
+IC_API ic_interval ic_interval_neg(ic_interval a);
+IC_API ic_interval ic_interval_sqrt(ic_interval a);
+IC_API ic_interval ic_interval_exp(ic_interval a);
+IC_API ic_interval ic_interval_log(ic_interval a);
+IC_API ic_interval ic_interval_pow_int(ic_interval a, long n);
+IC_API ic_interval ic_interval_pow_real(ic_interval a, double p);
+IC_API ic_interval ic_interval_pow(ic_interval a, ic_interval b);
+IC_API ic_interval ic_interval_sin(ic_interval a);
+IC_API ic_interval ic_interval_cos(ic_interval a);
+IC_API ic_interval ic_interval_tan(ic_interval a);
+IC_API ic_interval ic_interval_asin(ic_interval a);
+IC_API ic_interval ic_interval_acos(ic_interval a);
+IC_API ic_interval ic_interval_atan(ic_interval a);
+IC_API ic_interval ic_interval_atan2(ic_interval y, ic_interval x);
+IC_API ic_interval ic_interval_sinh(ic_interval a);
+IC_API ic_interval ic_interval_cosh(ic_interval a);
+IC_API ic_interval ic_interval_tanh(ic_interval a);
+IC_API ic_interval ic_interval_abs(ic_interval a);
 /** 1 if the interval is empty (lo > hi or NaN). */
-int ic_interval_is_empty(ic_interval a);
+IC_API int ic_interval_is_empty(ic_interval a);
 
 #ifdef __cplusplus
 }

@@ -15,8 +15,8 @@
  *    order, three linear equations with the same matrix [t; N_A; N_B];
  *  - the closed-form method (orders <= 3): the papers' formulas, one function
  *    per paper and case (src/local/closed_*.c cite the equations).
- * Tangential points (normals parallel within the angle option) are reported
- * as such; their analysis is the tangential issue's.
+ * At a tangential point (normals parallel within the angle option) the point
+ * is classified and every branch through it computed (docs/tangential.md).
  */
 #ifndef INTERCURVE_LOCAL_H
 #define INTERCURVE_LOCAL_H
@@ -49,8 +49,9 @@ typedef enum {
     IC_POINT_SURFACE_SINGULAR
 } ic_point_type;
 
-/** "transversal", "branch-point", ... (the names of docs/output-formats.md). */
-const char *ic_point_type_name(ic_point_type type);
+/** "transversal", "branch-point", ... (the names of docs/output-formats.md): a
+ *  static string. */
+IC_API const char *ic_point_type_name(ic_point_type type);
 
 typedef enum {
     IC_METHOD_AUTO,        /**< jet at transversal points, height-difference at tangential ones */
@@ -60,10 +61,10 @@ typedef enum {
     IC_METHOD_HEIGHT_DIFFERENCE /**< tangential points, any order (docs/tangential.md) */
 } ic_method;
 
-/** "auto", "jet", "closed-form", "perturbation", "height-difference"; and
- *  back (-1 if unknown). */
-const char *ic_method_name(ic_method method);
-int ic_method_from_name(const char *name);
+/** "auto", "jet", "closed-form", "perturbation", "height-difference" (a
+ *  static string); and back (-1 if unknown). */
+IC_API const char *ic_method_name(ic_method method);
+IC_API int ic_method_from_name(const char *name);
 
 /** Tolerances of the local computations, with their units. */
 typedef struct {
@@ -106,19 +107,21 @@ typedef struct {
 } ic_local_options;
 
 /** Fills the defaults above. */
-void ic_local_defaults(ic_local_options *opt);
+IC_API void ic_local_defaults(ic_local_options *opt);
 
 typedef struct ic_pair ic_pair;
 
 /** A pair of surfaces (not owned; they must outlive the pair). B = NULL
  *  makes a self-intersection pair of A, which must be parametric. */
-IC_NODISCARD ic_status ic_pair_new(ic_pair **pair, ic_surface *A, ic_surface *B, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_pair_new(ic_pair **pair, ic_surface *A, ic_surface *B,
+                                          ic_error *err);
 /** Frees a pair; NULL is allowed. */
-void ic_pair_free(ic_pair *pair);
+IC_API void ic_pair_free(ic_pair *pair);
 /** 1 for a self-intersection pair. */
-int ic_pair_is_self(const ic_pair *pair);
-/** Surface 0 (A) or 1 (B; A again for a self-intersection). */
-ic_surface *ic_pair_surface(const ic_pair *pair, int which);
+IC_API int ic_pair_is_self(const ic_pair *pair);
+/** Surface 0 (A) or 1 (B; A again for a self-intersection): the caller's
+ *  surface given to ic_pair_new, not owned by the pair. */
+IC_API ic_surface *ic_pair_surface(const ic_pair *pair, int which);
 
 /** A point of the intersection: coordinates and the parameters on each
  *  parametric sheet (unused entries of implicit surfaces are 0). */
@@ -136,17 +139,18 @@ typedef struct {
  * IC_ERR_UNABLE with the distance in the message when xyz is farther than
  * opt->point_tol from either surface (or from the intersection).
  */
-IC_NODISCARD ic_status ic_local_locate(ic_pair *pair, ic_local_point *pt, const double xyz[3],
-                                       const ic_local_options *opt, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_local_locate(ic_pair *pair, ic_local_point *pt,
+                                              const double xyz[3], const ic_local_options *opt,
+                                              ic_error *err);
 
 /**
  * The same from parameters: params lists the parameters of the parametric
  * surfaces in problem order (u, v for A if parametric, then those of B; for a
  * self-intersection u, v, p, q). nparams must match (IC_ERR_INVALID).
  */
-IC_NODISCARD ic_status ic_local_locate_params(ic_pair *pair, ic_local_point *pt,
-                                              const double *params, int nparams,
-                                              const ic_local_options *opt, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_local_locate_params(ic_pair *pair, ic_local_point *pt,
+                                                     const double *params, int nparams,
+                                                     const ic_local_options *opt, ic_error *err);
 
 /**
  * Locates a point of the intersection from a guess with its position and
@@ -154,7 +158,7 @@ IC_NODISCARD ic_status ic_local_locate_params(ic_pair *pair, ic_local_point *pt,
  * ic_local_locate_params from the parameters where the pair has any, else
  * ic_local_locate from the position.
  */
-IC_NODISCARD ic_status ic_local_locate_guess(ic_pair *pair, ic_local_point *pt,
+IC_API IC_NODISCARD ic_status ic_local_locate_guess(ic_pair *pair, ic_local_point *pt,
                                              const double xyz[3], const double params[2][2],
                                              const ic_local_options *opt, ic_error *err);
 
@@ -165,9 +169,10 @@ IC_NODISCARD ic_status ic_local_locate_guess(ic_pair *pair, ic_local_point *pt,
  * `near`. IC_ERR_UNABLE if it does not converge (residual above 1e-12) or
  * moves farther than `reach` (a length).
  */
-IC_NODISCARD ic_status ic_local_locate_tangential(ic_pair *pair, ic_local_point *pt,
-                                                  const ic_local_point *near, double reach,
-                                                  const ic_local_options *opt, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_local_locate_tangential(ic_pair *pair, ic_local_point *pt,
+                                                         const ic_local_point *near, double reach,
+                                                         const ic_local_options *opt,
+                                                         ic_error *err);
 
 /**
  * How well the place of a located tangential point `pt` is known: the
@@ -178,9 +183,9 @@ IC_NODISCARD ic_status ic_local_locate_tangential(ic_pair *pair, ic_local_point 
  * (noise)^(1/(m-1)); at most 1e-4 of the problem's size (then the place is
  * not known at all). IC_ERR_UNABLE where a surface is singular near it.
  */
-IC_NODISCARD ic_status ic_local_tangential_place(ic_pair *pair, const ic_local_point *pt,
-                                                 const ic_local_options *opt, double *radius,
-                                                 ic_error *err);
+IC_API IC_NODISCARD ic_status ic_local_tangential_place(ic_pair *pair, const ic_local_point *pt,
+                                                        const ic_local_options *opt, double *radius,
+                                                        ic_error *err);
 
 /**
  * Locates a degenerate tangential point (a cusp, a tacnode or a higher one,
@@ -190,9 +195,10 @@ IC_NODISCARD ic_status ic_local_tangential_place(ic_pair *pair, const ic_local_p
  * the kernel curve (docs/tracing.md). IC_ERR_UNABLE when no point within
  * `reach` (a length) classifies with the contact order it was solved for.
  */
-IC_NODISCARD ic_status ic_local_locate_degenerate(ic_pair *pair, ic_local_point *pt,
-                                                  const ic_local_point *near, double reach,
-                                                  const ic_local_options *opt, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_local_locate_degenerate(ic_pair *pair, ic_local_point *pt,
+                                                         const ic_local_point *near, double reach,
+                                                         const ic_local_options *opt,
+                                                         ic_error *err);
 
 /** Darboux quantities of the curve on one surface (docs/local.md, "Outputs"). */
 typedef struct {
@@ -227,7 +233,7 @@ typedef struct {
  * geodesic curvatures kappa_g change sign; n, kappa, tau, the normal
  * curvatures and the geodesic torsions do not.
  */
-void ic_branch_reverse(ic_branch *br);
+IC_API void ic_branch_reverse(ic_branch *br);
 
 
 #define IC_LOCAL_MAX_BRANCHES 8
@@ -251,7 +257,7 @@ typedef struct {
      *  a12^2 - a11 a22; Abdel-All et al. (2012), eqs. (4.1), (4.10): A, a11,
      *  a12, a13) */
     int npaper;
-    const char *paper_names[4];
+    const char *paper_names[4]; /**< static strings */
     double paper_values[4];
     /** perturbation method: the change of the extrapolated t, n, kappa
      *  between the last two Richardson levels (an error estimate); 0 otherwise */
@@ -264,20 +270,23 @@ typedef struct {
  * The apparatus at a located point, to order K (1..IC_LOCAL_MAX_ORDER; the
  * closed-form method to IC_CLOSED_FORM_MAX_ORDER). At a tangential point
  * (angle below opt->tangential_angle) the point is classified and every
- * branch through it computed by the height-difference method (auto, jet or
- * height-difference; the other methods at tangential points are not
- * available yet: IC_ERR_INVALID). IC_ERR_INVALID for an order out of range;
+ * branch through it computed: by the height-difference method (auto, jet or
+ * height-difference), the perturbation method (to order 2) or the papers'
+ * closed forms (two parametric or two implicit surfaces; a mixed pair is
+ * IC_ERR_INVALID). Perturbation and height-difference at a transversal
+ * point are IC_ERR_INVALID, as is an order out of range;
  * IC_ERR_UNABLE where the classification cannot decide (it says why).
  */
-IC_NODISCARD ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res,
-                                          const ic_local_point *pt, int order, ic_method method,
-                                          const ic_local_options *opt, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res,
+                                                 const ic_local_point *pt, int order,
+                                                 ic_method method, const ic_local_options *opt,
+                                                 ic_error *err);
 
 /** Local straight-line and plane-curve conditions (Abdel-All et al. (2012),
  *  corollaries 3.1, 3.2) at a branch: kappa <= tol (1/length), and tau = 0
  *  within tol (1/length); a branch with undefined torsion is no plane curve witness. */
-int ic_branch_is_line(const ic_branch *br, double tol);
-int ic_branch_is_planar(const ic_branch *br, double tol);
+IC_API int ic_branch_is_line(const ic_branch *br, double tol);
+IC_API int ic_branch_is_planar(const ic_branch *br, double tol);
 
 #ifdef __cplusplus
 }

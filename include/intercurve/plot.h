@@ -26,9 +26,10 @@ typedef struct {
     int mesh;                  /**< mesh cells per parameter or box axis (default 36) */
 } ic_plot_options;
 
-void ic_plot_defaults(ic_plot_options *opt);
+IC_API void ic_plot_defaults(ic_plot_options *opt);
 
-/** What a picture shows. Surfaces are not owned. A parametric surface is
+/** What a picture shows. Nothing is owned: the surfaces, title, names and
+ *  trace must outlive the scene's use. A parametric surface is
  *  meshed over its domain (and cut to the box if there is one), an implicit
  *  one inside the box (or, without a box, inside the other surface's and the
  *  curves' bounding box). trace may be NULL: surfaces only. */
@@ -44,8 +45,8 @@ typedef struct {
 
 /** The scene of a problem file (title, surfaces, names, box) with a trace
  *  of it (NULL: surfaces only); the problem keeps owning the surfaces. */
-void ic_plot_scene_of_problem(ic_plot_scene *scene, const ic_problem *problem,
-                              const ic_trace_result *trace);
+IC_API void ic_plot_scene_of_problem(ic_plot_scene *scene, const ic_problem *problem,
+                                     const ic_trace_result *trace);
 
 /**
  * Draws the scene into `path`; the format comes from its extension (.svg,
@@ -53,8 +54,8 @@ void ic_plot_scene_of_problem(ic_plot_scene *scene, const ic_problem *problem,
  * and a rename (IC_ERR_IO when that fails). Where the trace has no curve and
  * no point, the figure says "no intersection".
  */
-IC_NODISCARD ic_status ic_plot_write(const char *path, const ic_plot_scene *scene,
-                                     const ic_plot_options *opt, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_plot_write(const char *path, const ic_plot_scene *scene,
+                                            const ic_plot_options *opt, ic_error *err);
 
 #ifdef __cplusplus
 }

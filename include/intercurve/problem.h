@@ -22,24 +22,27 @@ typedef struct ic_problem ic_problem;
 
 /** Reads and validates a problem file. IC_ERR_PARSE for malformed JSON or
  *  formulas, IC_ERR_INVALID for wrong values, with path and message. */
-IC_NODISCARD ic_status ic_problem_load(ic_problem **p, const char *filename, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_problem_load(ic_problem **p, const char *filename, ic_error *err);
 /** The same from a JSON text in memory. */
-IC_NODISCARD ic_status ic_problem_parse(ic_problem **p, const char *json, size_t len,
-                                        ic_error *err);
+IC_API IC_NODISCARD ic_status ic_problem_parse(ic_problem **p, const char *json, size_t len,
+                                               ic_error *err);
 /** Frees a problem and its surfaces; NULL is allowed. */
-void ic_problem_free(ic_problem *p);
+IC_API void ic_problem_free(ic_problem *p);
 
-const char *ic_problem_title(const ic_problem *p);
-int ic_problem_num_surfaces(const ic_problem *p);
+/* The accessors' pointers (NULL for an index out of range) point into the
+ * problem: valid until ic_problem_free. */
+/** The title ("" when the file has none). */
+IC_API const char *ic_problem_title(const ic_problem *p);
+IC_API int ic_problem_num_surfaces(const ic_problem *p);
 /** The i-th surface (owned by the problem). */
-ic_surface *ic_problem_surface(const ic_problem *p, int i);
-const char *ic_problem_surface_name(const ic_problem *p, int i);
+IC_API ic_surface *ic_problem_surface(const ic_problem *p, int i);
+IC_API const char *ic_problem_surface_name(const ic_problem *p, int i);
 /** Index of the surface called `name`, or -1. */
-int ic_problem_find_surface(const ic_problem *p, const char *name);
+IC_API int ic_problem_find_surface(const ic_problem *p, const char *name);
 /** 1 for a self-intersection problem. */
-int ic_problem_is_self(const ic_problem *p);
+IC_API int ic_problem_is_self(const ic_problem *p);
 /** 1 if the problem has a box; then box[3][2] receives it. */
-int ic_problem_box(const ic_problem *p, double box[3][2]);
+IC_API int ic_problem_box(const ic_problem *p, double box[3][2]);
 
 #ifdef __cplusplus
 }

@@ -84,60 +84,63 @@ typedef struct ic_surface ic_surface;
 /** Parametric surface from formulas x, y, z over the parameters
  *  params[2] (NULL: "u", "v"). On a parse error, *which (if not NULL) is the
  *  index of the formula at fault and err->column its column. */
-IC_NODISCARD ic_status ic_surface_new_parametric(ic_surface **s, const char *const xyz[3],
-                                                 const char *const params[2],
-                                                 const ic_constant *consts, int nconsts,
-                                                 int *which, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_surface_new_parametric(ic_surface **s, const char *const xyz[3],
+                                                        const char *const params[2],
+                                                        const ic_constant *consts, int nconsts,
+                                                        int *which, ic_error *err);
 /** Implicit surface f(x, y, z) = 0 from a formula. */
-IC_NODISCARD ic_status ic_surface_new_implicit(ic_surface **s, const char *f,
-                                               const ic_constant *consts, int nconsts,
-                                               ic_error *err);
-IC_NODISCARD ic_status ic_surface_new_callback(ic_surface **s, ic_surface_kind kind,
-                                               ic_surface_callback fn, void *user,
-                                               ic_error *err);
+IC_API IC_NODISCARD ic_status ic_surface_new_implicit(ic_surface **s, const char *f,
+                                                      const ic_constant *consts, int nconsts,
+                                                      ic_error *err);
+IC_API IC_NODISCARD ic_status ic_surface_new_callback(ic_surface **s, ic_surface_kind kind,
+                                                      ic_surface_callback fn, void *user,
+                                                      ic_error *err);
 /** A primitive in its parametric or implicit form. IC_ERR_INVALID on
  *  non-positive radii or axes, a zero plane normal, a cone angle outside
  *  (0, pi/2). Parametric primitives get their natural domain (docs). */
-IC_NODISCARD ic_status ic_surface_new_primitive(ic_surface **s, const ic_primitive *prim,
-                                                ic_surface_kind form, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_surface_new_primitive(ic_surface **s, const ic_primitive *prim,
+                                                       ic_surface_kind form, ic_error *err);
 /** Frees a surface; NULL is allowed. */
-void ic_surface_free(ic_surface *s);
+IC_API void ic_surface_free(ic_surface *s);
 
-ic_surface_kind ic_surface_get_kind(const ic_surface *s);
-/** 2 for parametric (u, v), 3 for implicit (x, y, z). */
-int ic_surface_num_inputs(const ic_surface *s);
+IC_API ic_surface_kind ic_surface_get_kind(const ic_surface *s);
+/** Number of variables: 2 for parametric (u, v), 3 for implicit (x, y, z). */
+IC_API int ic_surface_num_vars(const ic_surface *s);
+/* The spelling before 0.1.0 (deprecated; docs/packaging.md). */
+#define ic_surface_num_inputs ic_surface_num_vars
 /** 3 for parametric (x, y, z), 1 for implicit (f). */
-int ic_surface_num_outputs(const ic_surface *s);
+IC_API int ic_surface_num_outputs(const ic_surface *s);
 
 /** Parameter domain [[u0, u1], [v0, v1]] and periodic flags of a parametric
  *  surface. IC_ERR_INVALID for an implicit surface or u0 >= u1. */
-IC_NODISCARD ic_status ic_surface_set_domain(ic_surface *s, const double domain[2][2],
-                                             const int periodic[2], ic_error *err);
-void ic_surface_get_domain(const ic_surface *s, double domain[2][2], int periodic[2]);
+IC_API IC_NODISCARD ic_status ic_surface_set_domain(ic_surface *s, const double domain[2][2],
+                                                    const int periodic[2], ic_error *err);
+IC_API void ic_surface_get_domain(const ic_surface *s, double domain[2][2], int periodic[2]);
 
 /**
  * Taylor coefficients of the surface at `at` (u, v or x, y, z): `sp` must
- * have ic_surface_num_inputs(s) variables; `out` receives
+ * have ic_surface_num_vars(s) variables; `out` receives
  * ic_surface_num_outputs(s) consecutive jets of sp. The partial derivative
  * d^alpha is out[i] * ic_jet_factorial(sp, i). IC_ERR_DOMAIN where the
  * surface is undefined at `at` (err says which operation), IC_ERR_INVALID on
  * a space of the wrong number of variables.
  */
-IC_NODISCARD ic_status ic_surface_taylor(ic_surface *s, double *out, const double *at,
-                                         const ic_jet_space *sp, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_surface_taylor(ic_surface *s, double *out, const double *at,
+                                                const ic_jet_space *sp, ic_error *err);
 
 /**
- * The surface composed with jets: `in` holds ic_surface_num_inputs(s) jets of
+ * The surface composed with jets: `in` holds ic_surface_num_vars(s) jets of
  * `sp` (a parameter curve (u(s), v(s)) or a space curve (x(s), y(s), z(s)),
  * or jets in more variables); `out` receives ic_surface_num_outputs(s)
  * consecutive jets of sp: R(u(s), v(s)) or f(x(s), y(s), z(s)).
  */
-IC_NODISCARD ic_status ic_surface_compose(ic_surface *s, double *out, const double *const *in,
-                                          const ic_jet_space *sp, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_surface_compose(ic_surface *s, double *out,
+                                                 const double *const *in, const ic_jet_space *sp,
+                                                 ic_error *err);
 
 /** Point R(at) (parametric, out[3]) or value f(at) (implicit, out[1]). */
-IC_NODISCARD ic_status ic_surface_eval(ic_surface *s, double *out, const double *at,
-                                       ic_error *err);
+IC_API IC_NODISCARD ic_status ic_surface_eval(ic_surface *s, double *out, const double *at,
+                                              ic_error *err);
 
 /**
  * Encloses the surface over a box of its inputs: out[3] (parametric: x, y, z
@@ -145,8 +148,8 @@ IC_NODISCARD ic_status ic_surface_eval(ic_surface *s, double *out, const double 
  * outward rounding (expr.h). Formula surfaces only: IC_ERR_UNABLE for
  * callbacks and primitives (the caller then samples instead of proving).
  */
-IC_NODISCARD ic_status ic_surface_eval_interval(ic_surface *s, ic_interval *out,
-                                                const ic_interval *in, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_surface_eval_interval(ic_surface *s, ic_interval *out,
+                                                       const ic_interval *in, ic_error *err);
 
 /**
  * The same with the derivatives: out[3] for a parametric surface (out[i].d[0]
@@ -156,8 +159,8 @@ IC_NODISCARD ic_status ic_surface_eval_interval(ic_surface *s, ic_interval *out,
  * not defined over the whole box (then the enclosures prove nothing about
  * the box as a whole).
  */
-IC_NODISCARD ic_status ic_surface_eval_interval_grad(ic_surface *s, ic_interval_grad *out,
-                                                     const ic_interval *in, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_surface_eval_interval_grad(ic_surface *s, ic_interval_grad *out,
+                                                            const ic_interval *in, ic_error *err);
 
 /** Local geometry of a surface at a point (see the conventions above). */
 typedef struct {
@@ -179,13 +182,13 @@ typedef struct {
  * |R_u x R_v| <= IC_SURFACE_DEGENERATE max(|R_u|, |R_v|)^2, e.g. a sphere
  * pole; implicit: grad f = 0), with err saying so.
  */
-IC_NODISCARD ic_status ic_surface_geometry_at(ic_surface *s, ic_surface_geometry *g,
-                                              const double *at, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_surface_geometry_at(ic_surface *s, ic_surface_geometry *g,
+                                                     const double *at, ic_error *err);
 /** The first-order part of ic_surface_geometry_at, several times cheaper:
  *  point, value, normal, normal_length (and, parametric, the basis R_u,
  *  R_v); the other fields are zero. Same errors at degenerate points. */
-IC_NODISCARD ic_status ic_surface_normal_at(ic_surface *s, ic_surface_geometry *g,
-                                            const double *at, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_surface_normal_at(ic_surface *s, ic_surface_geometry *g,
+                                                   const double *at, ic_error *err);
 
 #ifdef __cplusplus
 }

@@ -12,8 +12,9 @@
  * start, left a parameter domain or the box, reached a tangential point, or
  * the point budget ran out.
  *
- * This is the marching core; start points, singular points located on the
- * way and whole-intersection tracing come with the tracing issue.
+ * ic_tracer is the marching core; ic_trace below traces the whole
+ * intersection: start points, every curve, the special points on the way
+ * (docs/tracing.md).
  */
 #ifndef INTERCURVE_TRACE_H
 #define INTERCURVE_TRACE_H
@@ -52,7 +53,7 @@ typedef struct {
     ic_local_options local;
 } ic_trace_options;
 
-void ic_trace_defaults(ic_trace_options *opt);
+IC_API void ic_trace_defaults(ic_trace_options *opt);
 
 typedef enum {
     IC_TRACE_CONTINUE,
@@ -64,7 +65,8 @@ typedef enum {
     IC_TRACE_FAILED       /**< the step shrank below min_step: err says why */
 } ic_trace_event;
 
-const char *ic_trace_event_name(ic_trace_event ev);
+/** "continue", "closed", ...: a static string. */
+IC_API const char *ic_trace_event_name(ic_trace_event ev);
 
 /** One point of a traced curve (t oriented along the marching direction). */
 typedef struct {
@@ -80,26 +82,29 @@ typedef struct {
 /** Reverses a run of curve points in place: their order, their
  *  orientation (t and b change sign, as in ic_branch_reverse) and their arc
  *  length (s -> p[0].s + p[n-1].s - s, so the run covers the same range). */
-void ic_trace_points_reverse(ic_trace_point *p, int n);
+IC_API void ic_trace_points_reverse(ic_trace_point *p, int n);
 
 typedef struct ic_tracer ic_tracer;
 
 /** A tracer for a pair (not owned). */
-IC_NODISCARD ic_status ic_tracer_new(ic_tracer **tr, ic_pair *pair, const ic_trace_options *opt,
-                                     ic_error *err);
-void ic_tracer_free(ic_tracer *tr);
+IC_API IC_NODISCARD ic_status ic_tracer_new(ic_tracer **tr, ic_pair *pair,
+                                            const ic_trace_options *opt, ic_error *err);
+IC_API void ic_tracer_free(ic_tracer *tr);
 
 /** Starts a curve at a located transversal point, marching along +t
  *  (direction = +1) or -t (-1). IC_ERR_UNABLE at a tangential point. */
-IC_NODISCARD ic_status ic_tracer_start(ic_tracer *tr, const ic_local_point *start, int direction,
-                                       ic_error *err);
+IC_API IC_NODISCARD ic_status ic_tracer_start(ic_tracer *tr, const ic_local_point *start,
+                                              int direction, ic_error *err);
 /** One step: appends a point (unless the event ends the curve before it). */
-IC_NODISCARD ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err);
 /** Steps until an event other than IC_TRACE_CONTINUE. */
-IC_NODISCARD ic_status ic_tracer_run(ic_tracer *tr, ic_trace_event *event, ic_error *err);
+IC_API IC_NODISCARD ic_status ic_tracer_run(ic_tracer *tr, ic_trace_event *event, ic_error *err);
 
-int ic_tracer_num_points(const ic_tracer *tr);
-const ic_trace_point *ic_tracer_point(const ic_tracer *tr, int i);
+IC_API int ic_tracer_num_points(const ic_tracer *tr);
+/** Point i of the current curve, NULL out of range. Valid until the next
+ *  ic_tracer_start, ic_tracer_step or ic_tracer_run (the points grow by
+ *  reallocation) or ic_tracer_free. */
+IC_API const ic_trace_point *ic_tracer_point(const ic_tracer *tr, int i);
 
 /* ---- the whole intersection ---- */
 
@@ -113,13 +118,14 @@ typedef enum {
     IC_SHAPE_HELIX
 } ic_shape;
 
-/** "general", "line", "circle", "planar", "circular-helix", "helix". */
-const char *ic_shape_name(ic_shape shape);
+/** "general", "line", "circle", "planar", "circular-helix", "helix": a
+ *  static string. */
+IC_API const char *ic_shape_name(ic_shape shape);
 
 typedef struct {
     int closed;
     int npoints;
-    const ic_trace_point *points;
+    const ic_trace_point *points; /**< owned by the result */
     double length;
     ic_trace_event ends[2]; /**< how the two ends stopped (both CLOSED for a loop) */
     int tangential;         /**< 1: the surfaces touch all along it (a tangential curve) */
@@ -191,14 +197,16 @@ typedef struct ic_trace_result ic_trace_result;
  * both directions, tangential curve ends recorded. The result is freed with
  * ic_trace_result_free.
  */
-IC_NODISCARD ic_status ic_trace(ic_trace_result **res, ic_pair *pair, const ic_trace_options *opt,
-                                ic_error *err);
-void ic_trace_result_free(ic_trace_result *res);
-int ic_trace_result_num_curves(const ic_trace_result *res);
-const ic_trace_curve *ic_trace_result_curve(const ic_trace_result *res, int i);
-int ic_trace_result_num_specials(const ic_trace_result *res);
-const ic_trace_special *ic_trace_result_special(const ic_trace_result *res, int i);
-const ic_trace_report *ic_trace_result_report(const ic_trace_result *res);
+IC_API IC_NODISCARD ic_status ic_trace(ic_trace_result **res, ic_pair *pair,
+                                       const ic_trace_options *opt, ic_error *err);
+IC_API void ic_trace_result_free(ic_trace_result *res);
+/* The accessors' pointers (NULL for an index out of range) point into the
+ * result: valid until ic_trace_result_free. */
+IC_API int ic_trace_result_num_curves(const ic_trace_result *res);
+IC_API const ic_trace_curve *ic_trace_result_curve(const ic_trace_result *res, int i);
+IC_API int ic_trace_result_num_specials(const ic_trace_result *res);
+IC_API const ic_trace_special *ic_trace_result_special(const ic_trace_result *res, int i);
+IC_API const ic_trace_report *ic_trace_result_report(const ic_trace_result *res);
 
 #ifdef __cplusplus
 }

@@ -29,7 +29,7 @@ static cJSON *derivative_tensor(ic_surface *s, const double *at, int order, ic_e
     ic_jet_space *sp = NULL;
     double *t = NULL;
     cJSON *list = NULL;
-    if (ic_jet_space_new(&sp, ic_surface_num_inputs(s), order, err) != IC_OK)
+    if (ic_jet_space_new(&sp, ic_surface_num_vars(s), order, err) != IC_OK)
         goto cleanup;
     const int n = ic_jet_space_len(sp), nout = ic_surface_num_outputs(s);
     t = malloc((size_t)nout * n * sizeof *t);
@@ -45,7 +45,7 @@ static cJSON *derivative_tensor(ic_surface *s, const double *at, int order, ic_e
         ic_jet_exponents(sp, i, alpha);
         const double f = ic_jet_factorial(sp, i);
         cJSON *item = cJSON_CreateObject();
-        cJSON_AddItemToObject(item, "order", cJSON_CreateIntArray(alpha, ic_surface_num_inputs(s)));
+        cJSON_AddItemToObject(item, "order", cJSON_CreateIntArray(alpha, ic_surface_num_vars(s)));
         if (nout == 1) {
             cJSON_AddItemToObject(item, "value", ic_json_number_or_null(t[i] * f));
         } else {
@@ -150,7 +150,7 @@ int ic_cmd_eval(int argc, char **argv)
     }
     ic_surface *s = ic_problem_surface(p, idx);
     const int parametric = ic_surface_get_kind(s) == IC_PARAMETRIC;
-    const int nin = ic_surface_num_inputs(s);
+    const int nin = ic_surface_num_vars(s);
     double at[3];
     const int count = ic_cli_parse_list(at, 3, at_text, "--at");
     if (count < 0)

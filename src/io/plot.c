@@ -60,10 +60,10 @@ static void draw_title(cairo_t *cr, const char *title, double w)
     if (!title || !*title)
         return;
     double size = 20;
-    while (size > 10 && plot_text_width(cr, size, 1, title) > w - 40)
+    while (size > 10 && ic_plot_text_width(cr, size, 1, title) > w - 40)
         size -= 1;
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-    plot_text(cr, 0.5 * w, 16, size, 1, title, 0.5, 0);
+    ic_plot_text(cr, 0.5 * w, 16, size, 1, title, 0.5, 0);
 }
 
 /* Where cairo's bytes go: the open file and the first write error, kept
@@ -99,9 +99,9 @@ static ic_status draw_figure(cairo_t *cr, const ic_plot_scene *scene, const ic_p
     /* the chart only where there is a curve to chart */
     const int chart = opt->chart && scene->trace && ic_trace_result_num_curves(scene->trace) > 0;
     const double w3 = chart ? 0.62 * W : W;
-    const ic_status st = plot_draw_3d(cr, scene, opt, 0, 40, w3, H - 40, err);
+    const ic_status st = ic_plot_draw_3d(cr, scene, opt, 0, 40, w3, H - 40, err);
     if (st == IC_OK && chart)
-        plot_draw_chart(cr, scene->trace, w3 + 10, 50, W - w3 - 20, H - 60);
+        ic_plot_draw_chart(cr, scene->trace, w3 + 10, 50, W - w3 - 20, H - 60);
     return st;
 }
 

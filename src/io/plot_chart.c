@@ -80,7 +80,7 @@ static void panel(cairo_t *cr, const ic_trace_result *tr, int which, double x, d
     cairo_fill(cr);
     /* grid and ticks */
     double first, step;
-    int n = plot_ticks(lo, hi, 4, &first, &step);
+    int n = ic_plot_ticks(lo, hi, 4, &first, &step);
     cairo_set_line_width(cr, 0.6);
     for (int i = 0; i < n; i++) {
         const double v = first + i * step, yy = y + h - (v - lo) / (hi - lo) * h;
@@ -89,11 +89,11 @@ static void panel(cairo_t *cr, const ic_trace_result *tr, int which, double x, d
         cairo_line_to(cr, x + w, yy);
         cairo_stroke(cr);
         char buf[32];
-        plot_tick_label(buf, sizeof buf, v, step);
+        ic_plot_tick_label(buf, sizeof buf, v, step);
         cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
-        plot_text(cr, x - 5, yy, 11, 0, buf, 1, 0.5);
+        ic_plot_text(cr, x - 5, yy, 11, 0, buf, 1, 0.5);
     }
-    n = plot_ticks(0, smax, 5, &first, &step);
+    n = ic_plot_ticks(0, smax, 5, &first, &step);
     for (int i = 0; i < n; i++) {
         const double v = first + i * step, xx = x + v / smax * w;
         cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
@@ -101,9 +101,9 @@ static void panel(cairo_t *cr, const ic_trace_result *tr, int which, double x, d
         cairo_line_to(cr, xx, y + h);
         cairo_stroke(cr);
         char buf[32];
-        plot_tick_label(buf, sizeof buf, v, step);
+        ic_plot_tick_label(buf, sizeof buf, v, step);
         cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
-        plot_text(cr, xx, y + h + 5, 11, 0, buf, 0.5, 0);
+        ic_plot_text(cr, xx, y + h + 5, 11, 0, buf, 0.5, 0);
     }
     cairo_save(cr);
     cairo_rectangle(cr, x, y, w, h);
@@ -111,7 +111,7 @@ static void panel(cairo_t *cr, const ic_trace_result *tr, int which, double x, d
     for (int c = 0; c < ic_trace_result_num_curves(tr); c++) {
         const ic_trace_curve *cv = ic_trace_result_curve(tr, c);
         double rgb[3];
-        plot_curve_color(c, rgb);
+        ic_plot_curve_color(c, rgb);
         cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
         cairo_set_line_width(cr, 1.6);
         int pen = 0;
@@ -153,14 +153,15 @@ static void panel(cairo_t *cr, const ic_trace_result *tr, int which, double x, d
     cairo_rectangle(cr, x, y, w, h);
     cairo_stroke(cr);
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-    plot_text(cr, x, y - 8, 13, 1,
-              which
-                  ? (clipped ? "torsion \xcf\x84 (clipped to the 2-98% range)" : "torsion \xcf\x84")
-                  : (clipped ? "curvature \xce\xba (clipped)" : "curvature \xce\xba"),
-              0, 1);
+    ic_plot_text(
+        cr, x, y - 8, 13, 1,
+        which ? (clipped ? "torsion \xcf\x84 (clipped to the 2-98% range)" : "torsion \xcf\x84")
+              : (clipped ? "curvature \xce\xba (clipped)" : "curvature \xce\xba"),
+        0, 1);
 }
 
-void plot_draw_chart(cairo_t *cr, const ic_trace_result *tr, double x, double y, double w, double h)
+void ic_plot_draw_chart(cairo_t *cr, const ic_trace_result *tr, double x, double y, double w,
+                        double h)
 {
     double smax = 0;
     const int nc = tr ? ic_trace_result_num_curves(tr) : 0;
@@ -168,7 +169,8 @@ void plot_draw_chart(cairo_t *cr, const ic_trace_result *tr, double x, double y,
         smax = fmax(smax, ic_trace_result_curve(tr, c)->length);
     if (nc == 0 || !(smax > 0)) {
         cairo_set_source_rgb(cr, 0.4, 0.4, 0.4);
-        plot_text(cr, x + 0.5 * w, y + 0.5 * h, 13, 0, "no curve: no curvature to chart", 0.5, 0.5);
+        ic_plot_text(cr, x + 0.5 * w, y + 0.5 * h, 13, 0, "no curve: no curvature to chart", 0.5,
+                     0.5);
         return;
     }
     /* two panels, each with its s ticks below it; the axis title and the
@@ -184,13 +186,13 @@ void plot_draw_chart(cairo_t *cr, const ic_trace_result *tr, double x, double y,
     panel(cr, tr, 0, x + left, y + 30, w - left - 15, ph, smax, kscale);
     panel(cr, tr, 1, x + left, y + 30 + ph + 50, w - left - 15, ph, smax, kscale);
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-    plot_text(cr, x + left + 0.5 * (w - left - 15), y + h - 28, 12, 0, "arc length s", 0.5, 0.5);
+    ic_plot_text(cr, x + left + 0.5 * (w - left - 15), y + h - 28, 12, 0, "arc length s", 0.5, 0.5);
     /* the curve legend */
     double lx = x + left;
     for (int c = 0; c < nc && c < 8; c++) {
         double rgb[3];
         char buf[32];
-        plot_curve_color(c, rgb);
+        ic_plot_curve_color(c, rgb);
         cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
         cairo_set_line_width(cr, 3);
         cairo_move_to(cr, lx, y + h - 5);
@@ -198,7 +200,7 @@ void plot_draw_chart(cairo_t *cr, const ic_trace_result *tr, double x, double y,
         cairo_stroke(cr);
         snprintf(buf, sizeof buf, "curve %d", c + 1);
         cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-        plot_text(cr, lx + 20, y + h - 5, 11, 0, buf, 0, 0.5);
-        lx += 30 + plot_text_width(cr, 11, 0, buf);
+        ic_plot_text(cr, lx + 20, y + h - 5, 11, 0, buf, 0, 0.5);
+        lx += 30 + ic_plot_text_width(cr, 11, 0, buf);
     }
 }

@@ -41,7 +41,7 @@ static double mean_depth(const ctx3d *c, const double (*p)[3], int n)
     double sum = 0;
     for (int i = 0; i < n; i++) {
         double x, y, d;
-        plot_camera_project(&c->cam, p[i], &x, &y, &d);
+        ic_plot_camera_project(&c->cam, p[i], &x, &y, &d);
         sum += d;
     }
     return sum / n;
@@ -61,11 +61,11 @@ static void draw_tri(ctx3d *c, const plot_tri *t)
     /* two-sided Lambert shading with an ambient part */
     const double lam = fabs(nrm[0] * c->light[0] + nrm[1] * c->light[1] + nrm[2] * c->light[2]);
     const double shade = 0.45 + 0.55 * lam / len;
-    const double *col = PLOT_SURFACE[t->surface & 1];
+    const double *col = ic_plot_rgb_surface[t->surface & 1];
     cairo_set_source_rgba(c->cr, col[0] * shade, col[1] * shade, col[2] * shade, 0.55);
     for (int i = 0; i < 3; i++) {
         double x, y;
-        plot_camera_project(&c->cam, t->v[i], &x, &y, NULL);
+        ic_plot_camera_project(&c->cam, t->v[i], &x, &y, NULL);
         if (i == 0)
             cairo_move_to(c->cr, x, y);
         else
@@ -85,9 +85,9 @@ static void draw_seg(ctx3d *c, int curve, int k)
     const ic_trace_point *p = curve_point(c, curve, k), *q = curve_point(c, curve, k + 1);
     double rgb[3], x0, y0, x1, y1;
     const double kap = 0.5 * (p->kappa + q->kappa);
-    plot_colormap(c->kmax > c->kmin ? (kap - c->kmin) / (c->kmax - c->kmin) : 0.5, rgb);
-    plot_camera_project(&c->cam, p->xyz, &x0, &y0, NULL);
-    plot_camera_project(&c->cam, q->xyz, &x1, &y1, NULL);
+    ic_plot_colormap(c->kmax > c->kmin ? (kap - c->kmin) / (c->kmax - c->kmin) : 0.5, rgb);
+    ic_plot_camera_project(&c->cam, p->xyz, &x0, &y0, NULL);
+    ic_plot_camera_project(&c->cam, q->xyz, &x1, &y1, NULL);
     cairo_set_source_rgb(c->cr, rgb[0], rgb[1], rgb[2]);
     cairo_set_line_width(c->cr, PLOT_CURVE_WIDTH);
     cairo_set_line_cap(c->cr, CAIRO_LINE_CAP_ROUND);
@@ -100,12 +100,12 @@ static void draw_arrow(ctx3d *c, int curve, int k, int which)
 {
     const ic_trace_point *p = curve_point(c, curve, k);
     const double *v = which == 0 ? p->t : which == 1 ? p->n : p->b;
-    const double *col = which == 0 ? PLOT_T : which == 1 ? PLOT_N : PLOT_B;
+    const double *col = which == 0 ? ic_plot_rgb_t : which == 1 ? ic_plot_rgb_n : ic_plot_rgb_b;
     double tip[3], x0, y0, x1, y1;
     for (int i = 0; i < 3; i++)
         tip[i] = p->xyz[i] + c->arrow * v[i];
-    plot_camera_project(&c->cam, p->xyz, &x0, &y0, NULL);
-    plot_camera_project(&c->cam, tip, &x1, &y1, NULL);
+    ic_plot_camera_project(&c->cam, p->xyz, &x0, &y0, NULL);
+    ic_plot_camera_project(&c->cam, tip, &x1, &y1, NULL);
     cairo_set_source_rgb(c->cr, col[0], col[1], col[2]);
     cairo_set_line_width(c->cr, PLOT_ARROW_WIDTH);
     cairo_set_line_cap(c->cr, CAIRO_LINE_CAP_BUTT);
@@ -135,8 +135,8 @@ static void draw_axes(ctx3d *c)
         a[ax] = c->box[ax][0], b[ax] = c->box[ax][1];
         a[o1] = b[o1] = c->box[o1][e & 1];
         a[o2] = b[o2] = c->box[o2][(e >> 1) & 1];
-        plot_camera_project(&c->cam, a, &x0, &y0, NULL);
-        plot_camera_project(&c->cam, b, &x1, &y1, NULL);
+        ic_plot_camera_project(&c->cam, a, &x0, &y0, NULL);
+        ic_plot_camera_project(&c->cam, b, &x1, &y1, NULL);
         cairo_move_to(cr, x0, y0);
         cairo_line_to(cr, x1, y1);
         cairo_stroke(cr);
@@ -161,7 +161,7 @@ static void draw_axes(ctx3d *c)
             if (ax < 2 && p[2] != c->box[2][0])
                 continue;
             double sx, sy;
-            plot_camera_project(&c->cam, p, &sx, &sy, NULL);
+            ic_plot_camera_project(&c->cam, p, &sx, &sy, NULL);
             const double score = ax < 2 ? sy : -sx;
             if (score > best) {
                 best = score;
@@ -178,9 +178,9 @@ static void draw_axes(ctx3d *c)
                     memcpy(r, p, sizeof p);
                     q[0] += (p[0] == c->box[0][0] ? -1 : 1) * size;
                     r[o3] += (p[o3] == c->box[o3][0] ? -1 : 1) * size;
-                    plot_camera_project(&c->cam, p, &x0, &y0, NULL);
-                    plot_camera_project(&c->cam, q, &x1, &y1, NULL);
-                    plot_camera_project(&c->cam, r, &x2, &y2, NULL);
+                    ic_plot_camera_project(&c->cam, p, &x0, &y0, NULL);
+                    ic_plot_camera_project(&c->cam, q, &x1, &y1, NULL);
+                    ic_plot_camera_project(&c->cam, r, &x2, &y2, NULL);
                     if (x2 < x1) {
                         off = o3;
                         sign = p[o3] == c->box[o3][0] ? -1 : 1;
@@ -195,11 +195,11 @@ static void draw_axes(ctx3d *c)
         memcpy(e0, corner, sizeof e0);
         memcpy(e1, corner, sizeof e1);
         e0[ax] = c->box[ax][0], e1[ax] = c->box[ax][1];
-        plot_camera_project(&c->cam, e0, &sx0, &sy0, NULL);
-        plot_camera_project(&c->cam, e1, &sx1, &sy1, NULL);
+        ic_plot_camera_project(&c->cam, e0, &sx0, &sy0, NULL);
+        ic_plot_camera_project(&c->cam, e1, &sx1, &sy1, NULL);
         const double px = hypot(sx1 - sx0, sy1 - sy0);
         const int want = px < 140 ? 2 : px > 350 ? 5 : (int)(px / 70);
-        const int n = plot_ticks(c->box[ax][0], c->box[ax][1], want, &first, &step);
+        const int n = ic_plot_ticks(c->box[ax][0], c->box[ax][1], want, &first, &step);
         cairo_set_source_rgb(cr, 0.25, 0.25, 0.25);
         cairo_set_line_width(cr, 1.0);
         for (int i = 0; i < n; i++) {
@@ -212,15 +212,15 @@ static void draw_axes(ctx3d *c)
             b[off] += sign * 0.02 * size;
             l[off] += sign * 0.07 * size;
             double x0, y0, x1, y1, xl, yl;
-            plot_camera_project(&c->cam, a, &x0, &y0, NULL);
-            plot_camera_project(&c->cam, b, &x1, &y1, NULL);
-            plot_camera_project(&c->cam, l, &xl, &yl, NULL);
+            ic_plot_camera_project(&c->cam, a, &x0, &y0, NULL);
+            ic_plot_camera_project(&c->cam, b, &x1, &y1, NULL);
+            ic_plot_camera_project(&c->cam, l, &xl, &yl, NULL);
             cairo_move_to(cr, x0, y0);
             cairo_line_to(cr, x1, y1);
             cairo_stroke(cr);
             char buf[32];
-            plot_tick_label(buf, sizeof buf, v, step);
-            plot_text(cr, xl, yl, 11, 0, buf, 0.5, 0.5);
+            ic_plot_tick_label(buf, sizeof buf, v, step);
+            ic_plot_text(cr, xl, yl, 11, 0, buf, 0.5, 0.5);
         }
         /* the axis name beyond the tick labels of the axis' middle, 26 px
          * further along the screen direction from the axis to the labels */
@@ -229,17 +229,17 @@ static void draw_axes(ctx3d *c)
         a[ax] = 0.5 * (c->box[ax][0] + c->box[ax][1]);
         memcpy(l, a, sizeof a);
         l[off] += sign * 0.07 * size;
-        plot_camera_project(&c->cam, a, &xa, &ya, NULL);
-        plot_camera_project(&c->cam, l, &xl, &yl, NULL);
+        ic_plot_camera_project(&c->cam, a, &xa, &ya, NULL);
+        ic_plot_camera_project(&c->cam, l, &xl, &yl, NULL);
         const double dx = xl - xa, dy = yl - ya, dl = hypot(dx, dy);
         if (dl > 1e-9)
             xl += 26 * dx / dl, yl += 26 * dy / dl;
         if (ax == 2) { /* z: above the top of its edge */
             a[2] = c->box[2][1];
-            plot_camera_project(&c->cam, a, &xl, &yl, NULL);
+            ic_plot_camera_project(&c->cam, a, &xl, &yl, NULL);
             yl -= 18;
         }
-        plot_text(cr, xl, yl, 14, 1, NAMES[ax], 0.5, 0.5);
+        ic_plot_text(cr, xl, yl, 14, 1, NAMES[ax], 0.5, 0.5);
     }
 }
 
@@ -250,7 +250,7 @@ static void draw_colorbar(ctx3d *c, double x, double y, double h)
     enum { STEPS = 48 };
     for (int i = 0; i < STEPS; i++) {
         double rgb[3];
-        plot_colormap(c->kmax > c->kmin ? (i + 0.5) / STEPS : 0.5, rgb);
+        ic_plot_colormap(c->kmax > c->kmin ? (i + 0.5) / STEPS : 0.5, rgb);
         cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
         cairo_rectangle(cr, x, y + h - (i + 1) * h / STEPS, 16, h / STEPS + 0.5);
         cairo_fill(cr);
@@ -259,37 +259,37 @@ static void draw_colorbar(ctx3d *c, double x, double y, double h)
     if (!(c->kmax > c->kmin)) { /* constant curvature: its value, mid-bar */
         char buf[48];
         snprintf(buf, sizeof buf, "%.6g (constant)", c->kmin);
-        plot_text(cr, x + 20, y + 0.5 * h, 11, 0, buf, 0, 0.5);
+        ic_plot_text(cr, x + 20, y + 0.5 * h, 11, 0, buf, 0, 0.5);
     } else {
         double first, step;
         const double lo = c->kmin, hi = c->kmax;
-        const int n = plot_ticks(lo, hi, 4, &first, &step);
+        const int n = ic_plot_ticks(lo, hi, 4, &first, &step);
         for (int i = 0; i < n; i++) {
             const double v = first + i * step, yy = y + h - (v - lo) / (hi - lo) * h;
             char buf[32];
-            plot_tick_label(buf, sizeof buf, v, step);
-            plot_text(cr, x + 20, yy, 11, 0, buf, 0, 0.5);
+            ic_plot_tick_label(buf, sizeof buf, v, step);
+            ic_plot_text(cr, x + 20, yy, 11, 0, buf, 0, 0.5);
         }
     }
-    plot_text(cr, x + 8, y - 12, 12, 1, "curvature \xce\xba", 0.5, 1);
+    ic_plot_text(cr, x + 8, y - 12, 12, 1, "curvature \xce\xba", 0.5, 1);
 }
 
 static void draw_legend(ctx3d *c, const ic_plot_scene *scene, double x, double y, int frames)
 {
     cairo_t *cr = c->cr;
     for (int s = 0; s < scene->nsurfaces; s++) {
-        const double *col = PLOT_SURFACE[s];
+        const double *col = ic_plot_rgb_surface[s];
         cairo_set_source_rgba(cr, col[0], col[1], col[2], 0.8);
         cairo_rectangle(cr, x, y - 6, 14, 12);
         cairo_fill(cr);
         cairo_set_source_rgb(cr, 0.15, 0.15, 0.15);
         char buf[160];
         snprintf(buf, sizeof buf, "%c: %s", 'A' + s, scene->names[s] ? scene->names[s] : "");
-        plot_text(cr, x + 20, y, 12, 0, buf, 0, 0.5);
-        x += 30 + plot_text_width(cr, 12, 0, buf);
+        ic_plot_text(cr, x + 20, y, 12, 0, buf, 0, 0.5);
+        x += 30 + ic_plot_text_width(cr, 12, 0, buf);
     }
     static const char *const FRAME[3] = {"t", "n", "b"};
-    const double *cols[3] = {PLOT_T, PLOT_N, PLOT_B};
+    const double *cols[3] = {ic_plot_rgb_t, ic_plot_rgb_n, ic_plot_rgb_b};
     for (int k = 0; k < (frames ? 3 : 0); k++) {
         cairo_set_source_rgb(cr, cols[k][0], cols[k][1], cols[k][2]);
         cairo_set_line_width(cr, 3);
@@ -297,7 +297,7 @@ static void draw_legend(ctx3d *c, const ic_plot_scene *scene, double x, double y
         cairo_line_to(cr, x + 18, y);
         cairo_stroke(cr);
         cairo_set_source_rgb(cr, 0.15, 0.15, 0.15);
-        plot_text(cr, x + 22, y, 12, 1, FRAME[k], 0, 0.5);
+        ic_plot_text(cr, x + 22, y, 12, 1, FRAME[k], 0, 0.5);
         x += 40;
     }
 }
@@ -325,7 +325,7 @@ static void draw_specials(ctx3d *c)
     for (int i = 0; i < n; i++) {
         const ic_trace_special *sp = ic_trace_result_special(c->trace, i);
         double x, y;
-        plot_camera_project(&c->cam, sp->xyz, &x, &y, NULL);
+        ic_plot_camera_project(&c->cam, sp->xyz, &x, &y, NULL);
         cairo_new_path(c->cr); /* the text before leaves a current point */
         cairo_arc(c->cr, x, y, 5.5, 0, 2 * IC_PI);
         cairo_set_source_rgb(c->cr, 1, 1, 1);
@@ -336,7 +336,7 @@ static void draw_specials(ctx3d *c)
         char label[64];
         snprintf(label, sizeof label, "%s%s", ic_point_type_name(sp->type),
                  sp->approximate ? " (approximate)" : "");
-        const double w = plot_text_width(c->cr, 12, 0, label), h = 12;
+        const double w = ic_plot_text_width(c->cr, 12, 0, label), h = 12;
         /* the first of eight places around the marker that is free */
         static const double DX[8] = {10, 10, -10, -10, 10, -10, 0, 0};
         static const double DY[8] = {-10, 10, -10, 10, 0, 0, -16, 16};
@@ -353,7 +353,7 @@ static void draw_specials(ctx3d *c)
         cairo_rectangle(c->cr, r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);
         cairo_fill(c->cr);
         cairo_set_source_rgb(c->cr, 0, 0, 0);
-        plot_text(c->cr, r.x0 + 2, r.y0 + 2, 12, 0, label, 0, 0);
+        ic_plot_text(c->cr, r.x0 + 2, r.y0 + 2, 12, 0, label, 0, 0);
     }
     free(placed);
 }
@@ -419,8 +419,8 @@ static int frame_points(const ic_trace_result *tr, int n, int (*at)[2])
     return count;
 }
 
-ic_status plot_draw_3d(cairo_t *cr, const ic_plot_scene *scene, const ic_plot_options *opt,
-                       double x, double y, double w, double h, ic_error *err)
+ic_status ic_plot_draw_3d(cairo_t *cr, const ic_plot_scene *scene, const ic_plot_options *opt,
+                          double x, double y, double w, double h, ic_error *err)
 {
     ctx3d c;
     memset(&c, 0, sizeof c);
@@ -434,17 +434,17 @@ ic_status plot_draw_3d(cairo_t *cr, const ic_plot_scene *scene, const ic_plot_op
         for (int s = 0; s < scene->nsurfaces && st == IC_OK; s++) {
             const int par = ic_surface_get_kind(scene->surfaces[s]) == IC_PARAMETRIC;
             if (par == (pass == 0))
-                st = plot_mesh_surface(&c.mesh, scene->surfaces[s], s,
-                                       pass == 0 ? (scene->has_box ? scene->box : NULL) : c.box,
-                                       par ? opt->mesh : opt->mesh / 2, err);
+                st = ic_plot_mesh_surface(&c.mesh, scene->surfaces[s], s,
+                                          pass == 0 ? (scene->has_box ? scene->box : NULL) : c.box,
+                                          par ? opt->mesh : opt->mesh / 2, err);
         }
     }
     if (st != IC_OK) {
         free(c.mesh.t);
         return st;
     }
-    plot_camera_init(&c.cam, opt->azimuth, opt->elevation);
-    plot_camera_fit(&c.cam, c.box, x + 40, y + 30, w - 150, h - 90);
+    ic_plot_camera_init(&c.cam, opt->azimuth, opt->elevation);
+    ic_plot_camera_fit(&c.cam, c.box, x + 40, y + 30, w - 150, h - 90);
     /* light from the viewer, raised and to the left */
     for (int k = 0; k < 3; k++)
         c.light[k] = 0.8 * c.cam.toward[k] + 0.45 * c.cam.up[k] - 0.3 * c.cam.right[k];
@@ -520,13 +520,13 @@ ic_status plot_draw_3d(cairo_t *cr, const ic_plot_scene *scene, const ic_plot_op
          * not proven */
         const ic_trace_report *rep = ic_trace_result_report(c.trace);
         cairo_set_source_rgb(cr, 0.6, 0.1, 0.1);
-        plot_text(cr, x + 0.5 * w, y + 0.5 * h, 28, 1, "no intersection", 0.5, 0.5);
+        ic_plot_text(cr, x + 0.5 * w, y + 0.5 * h, 28, 1, "no intersection", 0.5, 0.5);
         if (!rep->proven || rep->uncovered_cells > 0 || rep->unproven_cells > 0) {
             char buf[160];
             snprintf(buf, sizeof buf, "found: not proven (%s%d cells uncovered, %d unproven)",
                      rep->proven ? "" : "sampled only, ", rep->uncovered_cells,
                      rep->unproven_cells);
-            plot_text(cr, x + 0.5 * w, y + 0.5 * h + 28, 14, 0, buf, 0.5, 0.5);
+            ic_plot_text(cr, x + 0.5 * w, y + 0.5 * h + 28, 14, 0, buf, 0.5, 0.5);
         }
     }
     free(pr);

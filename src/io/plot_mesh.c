@@ -161,8 +161,8 @@ static ic_status implicit_mesh(plot_mesh *mesh, ic_surface *s, int which, const 
     return st;
 }
 
-ic_status plot_mesh_surface(plot_mesh *mesh, ic_surface *s, int which, const double box[3][2],
-                            int cells, ic_error *err)
+ic_status ic_plot_mesh_surface(plot_mesh *mesh, ic_surface *s, int which, const double box[3][2],
+                               int cells, ic_error *err)
 {
     if (ic_surface_get_kind(s) == IC_PARAMETRIC)
         return parametric_mesh(mesh, s, which, box, cells, err);

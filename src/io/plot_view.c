@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
-void plot_camera_init(plot_camera *cam, double azimuth, double elevation)
+void ic_plot_camera_init(plot_camera *cam, double azimuth, double elevation)
 {
     const double a = azimuth * IC_PI / 180, e = elevation * IC_PI / 180;
     /* toward the viewer; right is horizontal; up completes the frame */
@@ -24,8 +24,8 @@ static double dot(const double *a, const double *b)
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-void plot_camera_fit(plot_camera *cam, const double box[3][2], double x0, double y0, double w,
-                     double h)
+void ic_plot_camera_fit(plot_camera *cam, const double box[3][2], double x0, double y0, double w,
+                        double h)
 {
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (int c = 0; c < 8; c++) {
@@ -42,8 +42,8 @@ void plot_camera_fit(plot_camera *cam, const double box[3][2], double x0, double
     cam->oy = y0 + 0.5 * h;
 }
 
-void plot_camera_project(const plot_camera *cam, const double *p, double *sx, double *sy,
-                         double *depth)
+void ic_plot_camera_project(const plot_camera *cam, const double *p, double *sx, double *sy,
+                            double *depth)
 {
     *sx = cam->ox + cam->scale * (dot(p, cam->right) - cam->cx);
     *sy = cam->oy - cam->scale * (dot(p, cam->up) - cam->cy);
@@ -57,7 +57,7 @@ static const double VIRIDIS[9][3] = {
     {0.173, 0.449, 0.558}, {0.128, 0.567, 0.551}, {0.153, 0.683, 0.502},
     {0.369, 0.789, 0.383}, {0.678, 0.864, 0.190}, {0.993, 0.906, 0.144}};
 
-void plot_colormap(double t, double rgb[3])
+void ic_plot_colormap(double t, double rgb[3])
 {
     if (!(t >= 0))
         t = 0;
@@ -70,12 +70,12 @@ void plot_colormap(double t, double rgb[3])
         rgb[k] = VIRIDIS[i][k] + f * (VIRIDIS[i + 1][k] - VIRIDIS[i][k]);
 }
 
-const double PLOT_T[3] = {0.839, 0.153, 0.157}; /* red */
-const double PLOT_N[3] = {0.173, 0.627, 0.173}; /* green */
-const double PLOT_B[3] = {0.122, 0.467, 0.706}; /* blue */
-const double PLOT_SURFACE[2][3] = {{0.55, 0.70, 0.85}, {0.93, 0.72, 0.50}};
+const double ic_plot_rgb_t[3] = {0.839, 0.153, 0.157}; /* red */
+const double ic_plot_rgb_n[3] = {0.173, 0.627, 0.173}; /* green */
+const double ic_plot_rgb_b[3] = {0.122, 0.467, 0.706}; /* blue */
+const double ic_plot_rgb_surface[2][3] = {{0.55, 0.70, 0.85}, {0.93, 0.72, 0.50}};
 
-void plot_curve_color(int i, double rgb[3])
+void ic_plot_curve_color(int i, double rgb[3])
 {
     static const double PALETTE[6][3] = {{0.122, 0.467, 0.706}, {1.000, 0.498, 0.055},
                                          {0.173, 0.627, 0.173}, {0.839, 0.153, 0.157},
@@ -90,7 +90,7 @@ static void set_font(cairo_t *cr, double size, int bold)
     cairo_set_font_size(cr, size);
 }
 
-double plot_text_width(cairo_t *cr, double size, int bold, const char *text)
+double ic_plot_text_width(cairo_t *cr, double size, int bold, const char *text)
 {
     cairo_text_extents_t ext;
     set_font(cr, size, bold);
@@ -98,8 +98,8 @@ double plot_text_width(cairo_t *cr, double size, int bold, const char *text)
     return ext.x_advance;
 }
 
-void plot_text(cairo_t *cr, double x, double y, double size, int bold, const char *text,
-               double align_x, double align_y)
+void ic_plot_text(cairo_t *cr, double x, double y, double size, int bold, const char *text,
+                  double align_x, double align_y)
 {
     cairo_text_extents_t ext;
     set_font(cr, size, bold);
@@ -111,7 +111,7 @@ void plot_text(cairo_t *cr, double x, double y, double size, int bold, const cha
     cairo_new_path(cr); /* no current point left for the next path */
 }
 
-int plot_ticks(double lo, double hi, int n, double *first, double *step)
+int ic_plot_ticks(double lo, double hi, int n, double *first, double *step)
 {
     const double span = hi - lo;
     if (!(span > 0) || !isfinite(span)) {
@@ -125,7 +125,7 @@ int plot_ticks(double lo, double hi, int n, double *first, double *step)
     return (int)floor((hi - *first) / *step + 1e-9) + 1;
 }
 
-void plot_tick_label(char *buf, size_t size, double v, double step)
+void ic_plot_tick_label(char *buf, size_t size, double v, double step)
 {
     if (fabs(v) < 1e-9 * step)
         v = 0;

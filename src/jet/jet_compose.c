@@ -29,7 +29,9 @@ static void compose_level(const compose_ctx *cx, double *out, int level, int *al
     const ic_jet_space *sp = cx->sp;
     const int p = cx->sp_p->m;
     const int budget = cx->Kc - used;
-    if (level == p - 1) {
+    /* p <= IC_JET_MAX_VARS holds for every space; the second test states it
+     * here, so no level can index delta[] or alpha[] past their ends */
+    if (level == p - 1 || level == IC_JET_MAX_VARS - 1) {
         ic_jet_zero(out, sp);
         for (int a = 0; a <= budget; a++) {
             alpha[level] = a;

@@ -124,7 +124,7 @@ void ic_jet_space_free(ic_jet_space *sp)
     free(sp);
 }
 
-int ic_jet_space_nvars(const ic_jet_space *sp) { return sp->m; }
+int ic_jet_space_num_vars(const ic_jet_space *sp) { return sp->m; }
 int ic_jet_space_order(const ic_jet_space *sp) { return sp->K; }
 int ic_jet_space_len(const ic_jet_space *sp) { return sp->n; }
 

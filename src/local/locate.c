@@ -330,8 +330,10 @@ static ic_status sheet_normal(ic_pair *pair, const ic_local_point *pt, int which
     const int par = ic_surface_get_kind(s) == IC_PARAMETRIC;
     ic_surface_geometry g;
     ic_status st = ic_surface_normal_at(s, &g, par ? pt->params[which] : pt->xyz, err);
-    if (st != IC_OK)
+    if (st != IC_OK) {
+        N[0] = N[1] = N[2] = 0.0;
         return ic_sheet_singular(err, st, which);
+    }
     memcpy(N, g.normal, sizeof g.normal);
     return IC_OK;
 }

@@ -106,7 +106,7 @@ void ic_surface_free(ic_surface *s)
 }
 
 ic_surface_kind ic_surface_get_kind(const ic_surface *s) { return s->kind; }
-int ic_surface_num_inputs(const ic_surface *s) { return s->kind == IC_PARAMETRIC ? 2 : 3; }
+int ic_surface_num_vars(const ic_surface *s) { return s->kind == IC_PARAMETRIC ? 2 : 3; }
 int ic_surface_num_outputs(const ic_surface *s) { return s->kind == IC_PARAMETRIC ? 3 : 1; }
 
 /* relative: the two ends of a periodic parameter must give the same point
@@ -197,7 +197,7 @@ const ic_jet_space *ic_surface_space(ic_surface *s, int order, ic_error *err)
         return NULL;
     }
     if (!s->spaces[order] &&
-        ic_jet_space_new(&s->spaces[order], ic_surface_num_inputs(s), order, err) != IC_OK)
+        ic_jet_space_new(&s->spaces[order], ic_surface_num_vars(s), order, err) != IC_OK)
         return NULL;
     return s->spaces[order];
 }
@@ -223,7 +223,7 @@ static ic_status callback_taylor(ic_surface *s, double *out, const double *at,
 static ic_status formula_taylor(ic_surface *s, double *out, const double *at,
                                 const ic_jet_space *sp, ic_error *err)
 {
-    const int n = ic_jet_space_len(sp), nin = ic_surface_num_inputs(s);
+    const int n = ic_jet_space_len(sp), nin = ic_surface_num_vars(s);
     double *w =
         ic_surface_work(s, IC_WORK_EVAL, (size_t)nin * n + ic_expr_jet_work_len(s->expr, sp));
     if (!w)
@@ -239,11 +239,11 @@ static ic_status formula_taylor(ic_surface *s, double *out, const double *at,
 ic_status ic_surface_taylor(ic_surface *s, double *out, const double *at, const ic_jet_space *sp,
                             ic_error *err)
 {
-    if (ic_jet_space_nvars(sp) != ic_surface_num_inputs(s))
+    if (ic_jet_space_num_vars(sp) != ic_surface_num_vars(s))
         return ic_error_set(err, IC_ERR_INVALID, 0,
                             "ic_surface_taylor: the space has %d variables, the surface %d",
-                            ic_jet_space_nvars(sp), ic_surface_num_inputs(s));
-    for (int i = 0; i < ic_surface_num_inputs(s); i++)
+                            ic_jet_space_num_vars(sp), ic_surface_num_vars(s));
+    for (int i = 0; i < ic_surface_num_vars(s); i++)
         if (!isfinite(at[i]))
             return ic_error_set(err, IC_ERR_INVALID, 0, "non-finite coordinate %d", i + 1);
     switch (s->backend) {
@@ -260,7 +260,7 @@ ic_status ic_surface_taylor(ic_surface *s, double *out, const double *at, const 
 ic_status ic_surface_compose(ic_surface *s, double *out, const double *const *in,
                              const ic_jet_space *sp, ic_error *err)
 {
-    const int n = ic_jet_space_len(sp), nin = ic_surface_num_inputs(s);
+    const int n = ic_jet_space_len(sp), nin = ic_surface_num_vars(s);
     const int nout = ic_surface_num_outputs(s);
     if (s->backend == BACKEND_FORMULA) {
         double *w = ic_surface_work(s, IC_WORK_EVAL, ic_expr_jet_work_len(s->expr, sp));

@@ -461,6 +461,106 @@ static int angle_dips(const ic_tracer *tr, double h, double a1)
     return av >= 0 && av < tr->opt.local.tangential_angle;
 }
 
+/* The step closed the curve: the last point is the start point itself. */
+static ic_status close_at_start(ic_tracer *tr, double hs, ic_trace_event *event, ic_error *err)
+{
+    tr->s += hs;
+    memcpy(tr->cur.xyz, tr->start_xyz, sizeof tr->start_xyz);
+    ic_trace_point first = tr->pts[0];
+    first.s = tr->s;
+    const ic_status st = record(tr, err);
+    if (st != IC_OK)
+        return st;
+    tr->pts[tr->n - 1] = first;
+    tr->done = 1;
+    *event = IC_TRACE_CLOSED;
+    return IC_OK;
+}
+
+/* The step left the region across bd: the curve ends exactly on it (a
+ * tangential curve too: its edge point is a point of the tangential curve,
+ * oriented along the march), or at its last point where that fails. */
+static ic_status end_on_boundary(ic_tracer *tr, double h, boundary bd, ic_error *err)
+{
+    tr->done = 1;
+    ic_local_point edge;
+    ic_local_result res;
+    double hb;
+    int tangential;
+    if (land_on_boundary(tr, h, bd, &edge, &hb) != 0 ||
+        apparatus(tr, &res, &edge, &tangential, NULL) != IC_OK ||
+        (tangential &&
+         !(tr->tcurve && res.type == IC_POINT_TANGENTIAL_CURVE && res.nbranches >= 1)))
+        return IC_OK;
+    if (tr->tcurve) {
+        double t0[3], te[3];
+        march_t(tr, &tr->res, t0);
+        march_t(tr, &res, te);
+        if (ic_dot3(te, t0) < 0)
+            ic_branch_reverse(&res.branches[0]);
+    }
+    /* the arc as for any step: the corrector may slide the point along the
+     * curve (a tangential curve's does) */
+    double Xb[3], pb[2][2];
+    predict(tr, hb, Xb, pb);
+    const double ds = step_arc(tr, hb, Xb, edge.xyz);
+    tr->cur = edge;
+    tr->res = res;
+    tr->s += ds;
+    return record(tr, err);
+}
+
+/* The apparatus at the corrected point `next`, oriented along the march;
+ * 0 when the step is to be shortened: a tangential point ahead (or passed:
+ * t = N_A x N_B flips across a branch point), which sets *near_tangential,
+ * or no apparatus there. */
+static int regular_ahead(ic_tracer *tr, double h, const ic_local_point *next,
+                         const double t[3], ic_local_result *res, int *near_tangential)
+{
+    /* on a transversal curve the angle shortens the step without the
+     * (costly) classification */
+    const double angle = tr->tcurve ? -1 : normals_angle(tr, next);
+    if (angle >= 0 && (angle < tr->opt.local.tangential_angle || angle_dips(tr, h, angle))) {
+        *near_tangential = 1;
+        return 0;
+    }
+    int tangential;
+    if (apparatus(tr, res, next, &tangential, NULL) != IC_OK)
+        return 0;
+    double tn[3];
+    if (tr->tcurve) { /* stay on the tangential curve, oriented along it */
+        tangential = res->type != IC_POINT_TANGENTIAL_CURVE || res->nbranches < 1;
+        march_t(tr, res, tn);
+        if (!tangential && ic_dot3(tn, t) < 0)
+            ic_branch_reverse(&res->branches[0]);
+    }
+    march_t(tr, res, tn);
+    if (tangential || ic_dot3(tn, t) <= 0) {
+        *near_tangential = 1;
+        return 0;
+    }
+    return 1;
+}
+
+/* Every step failed: the curve ends at a tangential point ahead, on a
+ * bound it stands on, or with a failure. */
+static ic_status no_step(ic_tracer *tr, int near_tangential, ic_trace_event *event,
+                         ic_error *err)
+{
+    tr->done = 1;
+    if (near_tangential) {
+        *event = IC_TRACE_TANGENTIAL;
+        return IC_OK;
+    }
+    if (on_boundary_heading_out(tr, event))
+        return IC_OK;
+    *event = IC_TRACE_FAILED;
+    return ic_error_set(err, IC_ERR_UNABLE, 0,
+                        "the tracer could not make a step at s = %g, (%g, %g, %g): the corrector "
+                        "did not converge down to the minimum step %g",
+                        tr->s, tr->cur.xyz[0], tr->cur.xyz[1], tr->cur.xyz[2], tr->opt.min_step);
+}
+
 ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
 {
     *event = IC_TRACE_CONTINUE;
@@ -479,7 +579,6 @@ ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
             break;
         double X[3];
         ic_local_point next;
-        ic_status st;
         if (!corrected(tr, h, &next, X))
             continue;
         /* the corrector moves the point in the normal plane: accept small
@@ -491,98 +590,21 @@ ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
         if (ic_dot3(d, t) <= 0.5 * h || ic_norm3(c) > fmax(1e3 * tr->opt.tol, 1e-3 * h))
             continue;
         double hs;
-        if (closes(tr, next.xyz, h, &hs)) {
-            tr->s += hs;
-            tr->cur.xyz[0] = tr->start_xyz[0];
-            tr->cur.xyz[1] = tr->start_xyz[1];
-            tr->cur.xyz[2] = tr->start_xyz[2];
-            /* the closing point is the start point itself */
-            ic_trace_point first = tr->pts[0];
-            first.s = tr->s;
-            st = record(tr, err);
-            if (st != IC_OK)
-                return st;
-            tr->pts[tr->n - 1] = first;
-            tr->done = 1;
-            *event = IC_TRACE_CLOSED;
-            return IC_OK;
-        }
+        if (closes(tr, next.xyz, h, &hs))
+            return close_at_start(tr, hs, event, err);
         boundary bd;
-        if (outside(tr, &next, event, &bd)) {
-            tr->done = 1;
-            ic_local_point edge;
-            ic_local_result res;
-            double hb;
-            int tangential;
-            /* a tangential curve lands too: its edge point is a point of
-             * the tangential curve, oriented along the march */
-            if (land_on_boundary(tr, h, bd, &edge, &hb) == 0 &&
-                apparatus(tr, &res, &edge, &tangential, NULL) == IC_OK &&
-                (!tangential || (tr->tcurve && res.type == IC_POINT_TANGENTIAL_CURVE &&
-                                 res.nbranches >= 1))) {
-                if (tr->tcurve) {
-                    double t0[3], te[3];
-                    march_t(tr, &tr->res, t0);
-                    march_t(tr, &res, te);
-                    if (ic_dot3(te, t0) < 0)
-                        ic_branch_reverse(&res.branches[0]);
-                }
-                /* the arc as for any step: the corrector may slide the
-                 * point along the curve (a tangential curve's does) */
-                double Xb[3], pb[2][2];
-                predict(tr, hb, Xb, pb);
-                const double ds = step_arc(tr, hb, Xb, edge.xyz);
-                tr->cur = edge;
-                tr->res = res;
-                tr->s += ds;
-                return record(tr, err);
-            }
-            return IC_OK;
-        }
-        /* a tangential point ahead on a transversal curve: the step is
-         * shortened without the (costly) classification there */
-        const double angle = tr->tcurve ? -1 : normals_angle(tr, &next);
-        if (angle >= 0 && (angle < tr->opt.local.tangential_angle || angle_dips(tr, h, angle))) {
-            near_tangential = 1;
-            continue;
-        }
+        if (outside(tr, &next, event, &bd))
+            return end_on_boundary(tr, h, bd, err);
         ic_local_result res;
-        int tangential;
-        st = apparatus(tr, &res, &next, &tangential, NULL);
-        if (st != IC_OK)
+        if (!regular_ahead(tr, h, &next, t, &res, &near_tangential))
             continue;
-        double tn[3];
-        if (tr->tcurve) { /* stay on the tangential curve, oriented along it */
-            tangential = res.type != IC_POINT_TANGENTIAL_CURVE || res.nbranches < 1;
-            march_t(tr, &res, tn);
-            if (!tangential && ic_dot3(tn, t) < 0)
-                ic_branch_reverse(&res.branches[0]);
-        }
-        march_t(tr, &res, tn);
-        if (tangential || ic_dot3(tn, t) <= 0) {
-            /* a tangential point ahead (or passed: t = N_A x N_B flips across a
-             * branch point): shorten the step to end just before it */
-            near_tangential = 1;
-            continue;
-        }
         const double ds = step_arc(tr, h, X, next.xyz);
         tr->cur = next;
         tr->res = res;
         tr->s += ds;
         return record(tr, err);
     }
-    tr->done = 1;
-    if (near_tangential) {
-        *event = IC_TRACE_TANGENTIAL;
-        return IC_OK;
-    }
-    if (on_boundary_heading_out(tr, event))
-        return IC_OK;
-    *event = IC_TRACE_FAILED;
-    return ic_error_set(err, IC_ERR_UNABLE, 0,
-                        "the tracer could not make a step at s = %g, (%g, %g, %g): the corrector "
-                        "did not converge down to the minimum step %g",
-                        tr->s, tr->cur.xyz[0], tr->cur.xyz[1], tr->cur.xyz[2], tr->opt.min_step);
+    return no_step(tr, near_tangential, event, err);
 }
 
 void ic_tracer_set_deadline(ic_tracer *tr, double deadline) { tr->deadline = deadline; }

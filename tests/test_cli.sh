@@ -48,7 +48,12 @@ expect_error() { # file-or-args, expected exit, expected message parts...
 d="$src/tests/data"
 expect_error 1 "eval $d/bad-formula.json --at 1,2,3" "bad-formula.json" "surfaces[0].f" "column 7" "unknown identifier 'foo'" "^"
 expect_error 1 "eval $d/bad-paren.json --at 1,2" "surfaces[0].xyz[2]" "never closed"
-expect_error 1 "eval $d/one-surface.json --at 1,2,3" "surfaces" "exactly two surfaces"
+# one surface alone: a surface to evaluate (eval), no intersection (point)
+"$bin" eval "$d/one-surface.json" --at 1,2,3 >"$out" 2>"$errf"
+check "eval a file of one surface exits 0 ($(cat "$errf"))" $?
+grep -q '"value":.*3,' "$out"
+check "eval a file of one surface: f = z is 3 at (1, 2, 3)" $?
+expect_error 1 "point $d/one-surface.json --at 1,2,3" "surfaces" "exactly two surfaces"
 expect_error 1 "eval $d/bad-radius.json --at 1,2,3" "surfaces[0]" "radius must be positive"
 expect_error 1 "eval $d/unknown-key.json --at 1,2,3" "(root)" "unknown key \"boxx\""
 expect_error 1 "eval $d/bad-json.json --at 1,2,3" "invalid JSON near line 2"

@@ -1,5 +1,5 @@
 /* The intercurve command: dispatch to the subcommands. */
-#include "cli.h"
+#include "cli/cli.h"
 
 #include <string.h>
 

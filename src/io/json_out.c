@@ -1,0 +1,52 @@
+/* JSON documents built whole or not at all (json_out.h). */
+#include "io/json_out.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+cJSON *json_out_number(json_out *j, double x)
+{
+    cJSON *item = isfinite(x) ? cJSON_CreateNumber(x + 0.0) : cJSON_CreateNull(); /* -0 -> 0 */
+    if (!item)
+        j->failed = 1;
+    return item;
+}
+
+cJSON *json_out_vector(json_out *j, const double *v, int n)
+{
+    cJSON *a = cJSON_CreateArray();
+    if (!a)
+        j->failed = 1;
+    for (int i = 0; a && i < n; i++)
+        json_out_append(j, a, json_out_number(j, v[i]));
+    return a;
+}
+
+void json_out_add(json_out *j, cJSON *obj, const char *key, cJSON *item)
+{
+    if (!obj || !item || !cJSON_AddItemToObject(obj, key, item)) {
+        j->failed = 1;
+        cJSON_Delete(item);
+    }
+}
+
+void json_out_append(json_out *j, cJSON *array, cJSON *item)
+{
+    if (!array || !item || !cJSON_AddItemToArray(array, item)) {
+        j->failed = 1;
+        cJSON_Delete(item);
+    }
+}
+
+ic_status json_out_write(FILE *f, cJSON *doc, const json_out *j, const char *what, ic_error *err)
+{
+    char *text = doc && !j->failed ? cJSON_Print(doc) : NULL;
+    cJSON_Delete(doc);
+    if (!text)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory building the %s output", what);
+    const int written = fputs(text, f) >= 0 && fputc('\n', f) != EOF;
+    free(text);
+    if (!written || ferror(f))
+        return ic_error_set(err, IC_ERR_IO, 0, "writing the %s output failed", what);
+    return IC_OK;
+}

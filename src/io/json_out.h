@@ -14,7 +14,8 @@ typedef struct {
     int failed; /* an allocation failed: the document is not whole */
 } json_out;
 
-/* A number, or null where it is not finite; -0 becomes 0. */
+/* A number written so that it reads back to the same double (15 digits
+ * where they do, else 17), or null where it is not finite; -0 becomes 0. */
 cJSON *json_out_number(json_out *j, double x);
 /* An array of n numbers (json_out_number each). */
 cJSON *json_out_vector(json_out *j, const double *v, int n);

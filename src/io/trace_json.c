@@ -33,7 +33,7 @@ static cJSON *curve_json(json_out *j, const ic_trace_curve *c, const ic_trace_re
     json_out_add(j, o, "closed", cJSON_CreateBool(c->closed));
     json_out_add(j, o, "type", cJSON_CreateString(c->tangential ? "tangential" : "transversal"));
     json_out_add(j, o, "shape", cJSON_CreateString(ic_shape_name(c->shape)));
-    json_out_add(j, o, "shape_tolerance", cJSON_CreateNumber(c->shape_tol));
+    json_out_add(j, o, "shape_tolerance", json_out_number(j, c->shape_tol));
     json_out_add(j, o, "length", json_out_number(j, c->length));
     cJSON *ends = cJSON_CreateArray();
     for (int e = 0; e < 2; e++)
@@ -70,7 +70,7 @@ static cJSON *report_json(json_out *j, const ic_trace_report *rep)
                  cJSON_CreateString(rep->proven
                                         ? "start points inside the cells that were not excluded"
                                         : "everything: a surface has no interval evaluation"));
-    json_out_add(j, ro, "smallest_cell", cJSON_CreateNumber(rep->cell_size));
+    json_out_add(j, ro, "smallest_cell", json_out_number(j, rep->cell_size));
     json_out_add(j, ro, "start_candidates", cJSON_CreateNumber(rep->candidates));
     json_out_add(j, ro, "uncovered_cells", cJSON_CreateNumber(rep->uncovered_cells));
     json_out_add(j, ro, "unproven_cells", cJSON_CreateNumber(rep->unproven_cells));

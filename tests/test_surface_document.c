@@ -46,6 +46,17 @@ static const cJSON *derivative(const cJSON *list, const int *alpha, int n)
     return NULL;
 }
 
+/* A fundamental form {"E": .., "F": .., "G": ..} holds v under names[0..2]. */
+static int form_is(const cJSON *form, const char names[3], const double v[3])
+{
+    const char *const keys[4] = {(char[2]){names[0], 0}, (char[2]){names[1], 0},
+                                 (char[2]){names[2], 0}, NULL};
+    int ok = doc_keys_are(form, keys);
+    for (int i = 0; ok && i < 3; i++)
+        ok = doc_number_is(doc_get(form, keys[i]), v[i]);
+    return ok;
+}
+
 /* The sphere of viviani.json, a parametric surface, at (0.3, 0.4). */
 static void test_sphere(ic_surface *s)
 {
@@ -67,14 +78,20 @@ static void test_sphere(ic_surface *s)
     CHECK(doc_keys_are(doc, keys), "sphere: the documented keys in order");
     const cJSON *first = doc_get(doc, "first_fundamental_form");
     const cJSON *basis = doc_get(doc, "tangent_basis_Ru_Rv");
+    const cJSON *directions = doc_get(doc, "principal_directions");
     CHECK(doc_string_is(doc_get(doc, "surface"), "sphere") &&
               doc_string_is(doc_get(doc, "type"), "parametric") &&
               doc_vector_is(doc_get(doc, "at"), at, 2) &&
               doc_vector_is(doc_get(doc, "point"), g.point, 3) &&
               cJSON_IsNull(doc_get(doc, "degenerate")) &&
               doc_vector_is(doc_get(doc, "normal"), g.normal, 3) &&
+              doc_vector_is(cJSON_GetArrayItem(basis, 0), g.basis[0], 3) &&
               doc_vector_is(cJSON_GetArrayItem(basis, 1), g.basis[1], 3) &&
-              doc_number_is(doc_get(first, "G"), g.first[2]) &&
+              form_is(first, "EFG", g.first) &&
+              form_is(doc_get(doc, "second_fundamental_form"), "LMN", g.second) &&
+              doc_vector_is(cJSON_GetArrayItem(directions, 0), g.principal_directions[0], 3) &&
+              doc_vector_is(cJSON_GetArrayItem(directions, 1), g.principal_directions[1], 3) &&
+              doc_number_is(doc_get(doc, "gaussian_curvature"), g.gauss) &&
               doc_vector_is(doc_get(doc, "principal_curvatures"), g.principal_curvatures, 2) &&
               doc_number_is(doc_get(doc, "mean_curvature"), g.mean),
           "sphere: the geometry read back bit for bit");

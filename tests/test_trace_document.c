@@ -22,7 +22,7 @@ static ic_status write_json(FILE *f, void *user, ic_error *err)
 static ic_status write_text(FILE *f, void *user, ic_error *err)
 {
     const traced *t = user;
-    return ic_trace_write_text(f, t->res, ic_problem_title(t->problem), err);
+    return ic_trace_write_text(f, t->res, t->problem ? ic_problem_title(t->problem) : NULL, err);
 }
 
 static int point_matches(const cJSON *o, const ic_trace_point *p, const ic_trace_curve *c,
@@ -173,6 +173,40 @@ static void check_viviani(const traced *t)
     }
 }
 
+/* Two planes z = 0 and y = 0 in the box [-1, 1]^3: one line, kappa 0 at
+ * every point, so n, b and tau are null throughout. */
+static void check_line(void)
+{
+    traced t;
+    memset(&t, 0, sizeof t);
+    ic_surface *A = NULL, *B = NULL;
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    opt.has_box = 1;
+    for (int k = 0; k < 3; k++)
+        opt.box[k][0] = -1, opt.box[k][1] = 1;
+    ic_error err;
+    if (ic_surface_new_implicit(&A, "z", NULL, 0, &err) == IC_OK &&
+        ic_surface_new_implicit(&B, "y", NULL, 0, &err) == IC_OK &&
+        ic_pair_new(&t.pair, A, B, &err) == IC_OK &&
+        ic_trace(&t.res, t.pair, &opt, &err) == IC_OK) {
+        check_document(&t, "two planes");
+        cJSON *doc = doc_parse(write_json, &t, "two planes");
+        const cJSON *c = cJSON_GetArrayItem(doc_get(doc, "curves"), 0);
+        const cJSON *p = cJSON_GetArrayItem(doc_get(c, "points"), 1);
+        CHECK(doc_string_is(doc_get(c, "shape"), "line") && doc_number_is(doc_get(p, "kappa"), 0) &&
+                  cJSON_IsNull(doc_get(p, "n")) && cJSON_IsNull(doc_get(p, "tau")),
+              "two planes: a line, kappa 0, n and tau null");
+        cJSON_Delete(doc);
+    } else {
+        CHECK(0, "two planes traced: %s", err.message);
+    }
+    ic_trace_result_free(t.res);
+    ic_pair_free(t.pair);
+    ic_surface_free(A);
+    ic_surface_free(B);
+}
+
 int main(int argc, char **argv)
 {
     const char *dir = argc > 1 ? argv[1] : ".";
@@ -188,5 +222,6 @@ int main(int argc, char **argv)
         }
         release(&t);
     }
+    check_line();
     return harness_finish("test_trace_document");
 }

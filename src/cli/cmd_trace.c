@@ -26,8 +26,7 @@ static const ic_cli_option TRACE_OPTIONS[NOPTIONS] = {
     [OPT_TIME_LIMIT] = {.name = "--time-limit", .metavar = "SECONDS", .kind = IC_OPT_REAL,
                         .lo = 0, .hi = 1e6,
                         .help = "stop after this wall time with what was found (complete:\n"
-                                "false); default none (the search's own cell budget still\n"
-                                "bounds it)"},
+                                "false); without it the search's own cell budget bounds it"},
 };
 
 static const ic_cli_command TRACE = {

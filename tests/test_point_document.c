@@ -71,14 +71,14 @@ static int branch_matches(const cJSON *b, const ic_branch *br, const int paramet
     keys[n++] = "surfaces";
     keys[n] = NULL;
     const int fd = br->frame_defined;
-    int ok = doc_keys_are(b, keys) && doc_vector_is(doc_get(b, "t"), br->t, 3) &&
-             (fd ? doc_vector_is(doc_get(b, "n"), br->n, 3) : cJSON_IsNull(doc_get(b, "n"))) &&
-             (fd ? doc_vector_is(doc_get(b, "b"), br->b, 3) : cJSON_IsNull(doc_get(b, "b"))) &&
-             doc_number_is(doc_get(b, "kappa"), br->order >= 2 ? br->kappa : NAN) &&
-             doc_number_is(doc_get(b, "tau"), br->tau_defined ? br->tau : NAN) &&
-             doc_number_is(doc_get(b, "kappa_prime"),
-                           br->kappa_prime_defined ? br->kappa_prime : NAN) &&
-             doc_number_is(doc_get(b, "tau_prime"), br->tau_prime_defined ? br->tau_prime : NAN);
+    int ok =
+        doc_keys_are(b, keys) && doc_vector_is(doc_get(b, "t"), br->t, 3) &&
+        (fd ? doc_vector_is(doc_get(b, "n"), br->n, 3) : cJSON_IsNull(doc_get(b, "n"))) &&
+        (fd ? doc_vector_is(doc_get(b, "b"), br->b, 3) : cJSON_IsNull(doc_get(b, "b"))) &&
+        doc_number_is(doc_get(b, "kappa"), br->order >= 2 ? br->kappa : NAN) &&
+        doc_number_is(doc_get(b, "tau"), br->tau_defined ? br->tau : NAN) &&
+        doc_number_is(doc_get(b, "kappa_prime"), br->kappa_prime_defined ? br->kappa_prime : NAN) &&
+        doc_number_is(doc_get(b, "tau_prime"), br->tau_prime_defined ? br->tau_prime : NAN);
     const cJSON *d = doc_get(b, "derivatives");
     ok = ok && cJSON_GetArraySize(d) == br->order;
     for (int k = 0; ok && k < br->order; k++)
@@ -110,8 +110,8 @@ static void check_document(const cJSON *doc, const ic_local_result *res, const i
     int parametric[2];
     for (int s = 0; s < 2; s++)
         parametric[s] = ic_surface_get_kind(ic_pair_surface(pair, s)) == IC_PARAMETRIC;
-    const char *keys[16] = {"point", "residual", "params", "normals", "angle", "type",
-                            "discriminant"};
+    const char *keys[16] = {"point", "residual", "params",      "normals",
+                            "angle", "type",     "discriminant"};
     int n = 7;
     if (res->contact_order)
         keys[n++] = "contact_order";
@@ -146,8 +146,7 @@ static void check_document(const cJSON *doc, const ic_local_result *res, const i
         ok = ok && doc_number_is(doc_get(doc, "error_estimate"), res->error_estimate);
     CHECK(ok, "%s: the point's values read back bit for bit", what);
     const cJSON *branches = doc_get(doc, "branches");
-    CHECK(cJSON_GetArraySize(branches) == res->nbranches, "%s: %d branches", what,
-          res->nbranches);
+    CHECK(cJSON_GetArraySize(branches) == res->nbranches, "%s: %d branches", what, res->nbranches);
     for (int i = 0; i < res->nbranches && i < cJSON_GetArraySize(branches); i++)
         CHECK(branch_matches(cJSON_GetArrayItem(branches, i), &res->branches[i], parametric),
               "%s: branch %d read back bit for bit", what, i + 1);

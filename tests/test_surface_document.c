@@ -70,11 +70,22 @@ static void test_sphere(ic_surface *s)
     cJSON *doc = doc_parse(write_json, &d, "sphere");
     if (!doc)
         return;
-    static const char *const keys[] = {"surface", "type", "at", "point", "degenerate", "normal",
-                                       "tangent_basis_Ru_Rv", "first_fundamental_form",
-                                       "second_fundamental_form", "principal_curvatures",
-                                       "principal_directions", "gaussian_curvature",
-                                       "mean_curvature", "order", "derivatives", NULL};
+    static const char *const keys[] = {"surface",
+                                       "type",
+                                       "at",
+                                       "point",
+                                       "degenerate",
+                                       "normal",
+                                       "tangent_basis_Ru_Rv",
+                                       "first_fundamental_form",
+                                       "second_fundamental_form",
+                                       "principal_curvatures",
+                                       "principal_directions",
+                                       "gaussian_curvature",
+                                       "mean_curvature",
+                                       "order",
+                                       "derivatives",
+                                       NULL};
     CHECK(doc_keys_are(doc, keys), "sphere: the documented keys in order");
     const cJSON *first = doc_get(doc, "first_fundamental_form");
     const cJSON *basis = doc_get(doc, "tangent_basis_Ru_Rv");
@@ -98,8 +109,7 @@ static void test_sphere(ic_surface *s)
     const cJSON *k = doc_get(doc, "principal_curvatures");
     CHECK(harness_close(cJSON_GetArrayItem(k, 0)->valuedouble, SPHERE_K, GEOMETRY_TOL, 0) &&
               harness_close(cJSON_GetArrayItem(k, 1)->valuedouble, SPHERE_K, GEOMETRY_TOL, 0) &&
-              harness_close(doc_get(doc, "gaussian_curvature")->valuedouble, 0.25, GEOMETRY_TOL,
-                            0),
+              harness_close(doc_get(doc, "gaussian_curvature")->valuedouble, 0.25, GEOMETRY_TOL, 0),
           "sphere of radius 2: principal curvatures -1/2, Gaussian curvature 1/4");
     /* (K + 1)(K + 2)/2 partial derivatives of a function of two variables;
      * the one of order (0, 0) is the point, (0, 1) is R_v */
@@ -109,8 +119,7 @@ static void test_sphere(ic_surface *s)
     int ok = cJSON_GetArraySize(der) == 10 && x && rv;
     for (int j = 0; ok && j < 3; j++)
         ok = harness_close(cJSON_GetArrayItem(x, j)->valuedouble, g.point[j], GEOMETRY_TOL, 1) &&
-             harness_close(cJSON_GetArrayItem(rv, j)->valuedouble, g.basis[1][j], GEOMETRY_TOL,
-                           1);
+             harness_close(cJSON_GetArrayItem(rv, j)->valuedouble, g.basis[1][j], GEOMETRY_TOL, 1);
     CHECK(ok, "sphere: 10 derivatives up to order 3, the point and R_v among them");
     cJSON_Delete(doc);
 }
@@ -132,8 +141,8 @@ static void test_pole_and_order(ic_surface *s)
     ic_error err;
     ic_status st;
     char *text = doc_text(write_json, &d, &st, &err);
-    CHECK(st == IC_ERR_INVALID && text && text[0] == '\0', "order %d: IC_ERR_INVALID (%s)",
-          d.order, err.message);
+    CHECK(st == IC_ERR_INVALID && text && text[0] == '\0', "order %d: IC_ERR_INVALID (%s)", d.order,
+          err.message);
     free(text);
 }
 
@@ -150,8 +159,7 @@ static void test_one_surface(void)
     p = read_text(one, IC_PROBLEM_ONE_SURFACE, &st, &err);
     CHECK(st == IC_OK && p && ic_problem_num_surfaces(p) == 1 && !ic_problem_is_self(p) &&
               strcmp(ic_problem_surface_name(p, 0), "A") == 0 && !ic_problem_surface(p, 1),
-          "one surface with the flag: one surface named A, no self-intersection (%s)",
-          err.message);
+          "one surface with the flag: one surface named A, no self-intersection (%s)", err.message);
     if (p) {
         const double at[3] = {1.5, 2, 0.25};
         surface_doc d = {ic_problem_surface(p, 0), "A", at, 1};

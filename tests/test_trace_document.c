@@ -28,20 +28,19 @@ static ic_status write_text(FILE *f, void *user, ic_error *err)
 static int point_matches(const cJSON *o, const ic_trace_point *p, const ic_trace_curve *c,
                          const traced *t, const int parametric[2])
 {
-    static const char *const keys[] = {"s", "xyz", "params", "t", "n", "b",
-                                       "kappa", "tau", "angle", "type", NULL};
+    static const char *const keys[] = {"s",     "xyz", "params", "t",    "n", "b",
+                                       "kappa", "tau", "angle",  "type", NULL};
     const int fd = p->frame_defined;
     const cJSON *params = doc_get(o, "params");
-    int ok = doc_keys_are(o, keys) && doc_number_is(doc_get(o, "s"), p->s) &&
-             doc_vector_is(doc_get(o, "xyz"), p->xyz, 3) &&
-             doc_vector_is(doc_get(o, "t"), p->t, 3) &&
-             (fd ? doc_vector_is(doc_get(o, "n"), p->n, 3) : cJSON_IsNull(doc_get(o, "n"))) &&
-             (fd ? doc_vector_is(doc_get(o, "b"), p->b, 3) : cJSON_IsNull(doc_get(o, "b"))) &&
-             doc_number_is(doc_get(o, "kappa"), p->kappa) &&
-             doc_number_is(doc_get(o, "tau"), fd ? p->tau : NAN) &&
-             doc_number_is(doc_get(o, "angle"), p->angle) &&
-             doc_string_is(doc_get(o, "type"),
-                           ic_point_type_name(ic_trace_point_type(t->res, c, p)));
+    int ok =
+        doc_keys_are(o, keys) && doc_number_is(doc_get(o, "s"), p->s) &&
+        doc_vector_is(doc_get(o, "xyz"), p->xyz, 3) && doc_vector_is(doc_get(o, "t"), p->t, 3) &&
+        (fd ? doc_vector_is(doc_get(o, "n"), p->n, 3) : cJSON_IsNull(doc_get(o, "n"))) &&
+        (fd ? doc_vector_is(doc_get(o, "b"), p->b, 3) : cJSON_IsNull(doc_get(o, "b"))) &&
+        doc_number_is(doc_get(o, "kappa"), p->kappa) &&
+        doc_number_is(doc_get(o, "tau"), fd ? p->tau : NAN) &&
+        doc_number_is(doc_get(o, "angle"), p->angle) &&
+        doc_string_is(doc_get(o, "type"), ic_point_type_name(ic_trace_point_type(t->res, c, p)));
     for (int s = 0; ok && s < 2; s++)
         ok = parametric[s] ? doc_vector_is(cJSON_GetArrayItem(params, s), p->params[s], 2)
                            : cJSON_IsNull(cJSON_GetArrayItem(params, s));
@@ -50,8 +49,8 @@ static int point_matches(const cJSON *o, const ic_trace_point *p, const ic_trace
 
 static void check_curves(const cJSON *curves, const traced *t, const char *name)
 {
-    static const char *const keys[] = {"closed", "type", "shape", "shape_tolerance", "length",
-                                       "ends", "points", NULL};
+    static const char *const keys[] = {"closed", "type", "shape",  "shape_tolerance",
+                                       "length", "ends", "points", NULL};
     int parametric[2];
     for (int s = 0; s < 2; s++)
         parametric[s] = ic_surface_get_kind(ic_pair_surface(t->pair, s)) == IC_PARAMETRIC;
@@ -97,20 +96,44 @@ static void check_specials(const cJSON *points, const traced *t, const char *nam
 /* The report's keys in the order of docs/output-formats.md's table. */
 static void check_report(const cJSON *ro, const ic_trace_report *rep, const char *name)
 {
-    static const char *const keys[] = {"complete", "cells", "cells_excluded_by_intervals",
-                                       "cells_excluded_by_centred_forms", "exclusion_proven",
-                                       "sampled", "smallest_cell", "start_candidates",
-                                       "uncovered_cells", "unproven_cells", "loop_free_cells",
-                                       "loop_cells", "refined_cells", "undecided_loop_cells",
-                                       "coincident_cells", "failures", NULL};
-    const int counts[] = {rep->cells, rep->cells_excluded, rep->cells_excluded_centred,
-                          rep->candidates, rep->uncovered_cells, rep->unproven_cells,
-                          rep->loop_free_cells, rep->loop_cells, rep->refined_cells,
-                          rep->undecided_loop_cells, rep->coincident_cells};
-    const char *count_keys[] = {"cells", "cells_excluded_by_intervals",
-                                "cells_excluded_by_centred_forms", "start_candidates",
-                                "uncovered_cells", "unproven_cells", "loop_free_cells",
-                                "loop_cells", "refined_cells", "undecided_loop_cells",
+    static const char *const keys[] = {"complete",
+                                       "cells",
+                                       "cells_excluded_by_intervals",
+                                       "cells_excluded_by_centred_forms",
+                                       "exclusion_proven",
+                                       "sampled",
+                                       "smallest_cell",
+                                       "start_candidates",
+                                       "uncovered_cells",
+                                       "unproven_cells",
+                                       "loop_free_cells",
+                                       "loop_cells",
+                                       "refined_cells",
+                                       "undecided_loop_cells",
+                                       "coincident_cells",
+                                       "failures",
+                                       NULL};
+    const int counts[] = {rep->cells,
+                          rep->cells_excluded,
+                          rep->cells_excluded_centred,
+                          rep->candidates,
+                          rep->uncovered_cells,
+                          rep->unproven_cells,
+                          rep->loop_free_cells,
+                          rep->loop_cells,
+                          rep->refined_cells,
+                          rep->undecided_loop_cells,
+                          rep->coincident_cells};
+    const char *count_keys[] = {"cells",
+                                "cells_excluded_by_intervals",
+                                "cells_excluded_by_centred_forms",
+                                "start_candidates",
+                                "uncovered_cells",
+                                "unproven_cells",
+                                "loop_free_cells",
+                                "loop_cells",
+                                "refined_cells",
+                                "undecided_loop_cells",
                                 "coincident_cells"};
     int ok = doc_keys_are(ro, keys) && cJSON_IsTrue(doc_get(ro, "complete")) == !!rep->complete &&
              cJSON_IsTrue(doc_get(ro, "exclusion_proven")) == !!rep->proven &&
@@ -158,9 +181,9 @@ static void check_viviani(const traced *t)
     ic_error err;
     ic_status st;
     char *text = doc_text(write_text, (void *)t, &st, &err);
-    CHECK(st == IC_OK && text && strstr(text, "\ncurves: 1\n") &&
-              strstr(text, "15.2807911561") && strstr(text, "\nsingular points: 1\n") &&
-              strstr(text, "branch-point") && strstr(text, "\nresult: complete"),
+    CHECK(st == IC_OK && text && strstr(text, "\ncurves: 1\n") && strstr(text, "15.2807911561") &&
+              strstr(text, "\nsingular points: 1\n") && strstr(text, "branch-point") &&
+              strstr(text, "\nresult: complete"),
           "Viviani's text: one curve of its length, the branch point, complete");
     free(text);
     FILE *full = fopen("/dev/full", "w");

@@ -101,8 +101,10 @@ typedef ic_status (*ic_file_writer)(FILE *f, void *user, ic_error *err);
  * a directory is refused. On any failure the target is left as it was and
  * no temporary remains.
  * Returns the writer's status and message when it fails (nothing is
- * written), IC_ERR_NOMEM when memory runs out, IC_ERR_IO ("cannot write
- * PATH: reason", the system's reason) when the file cannot be written.
+ * written; an IC_ERR_IO of the writer, which writes to memory, means that
+ * memory ran out and is returned as IC_ERR_NOMEM), IC_ERR_NOMEM when
+ * memory runs out, IC_ERR_IO ("cannot write PATH: reason", the system's
+ * reason) when the file cannot be written. path and user are not kept.
  */
 IC_NODISCARD ic_status ic_write_file_atomic(const char *path, ic_file_writer writer, void *user,
                                             ic_error *err);

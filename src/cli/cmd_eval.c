@@ -4,26 +4,35 @@
 enum { OPT_SURFACE, OPT_AT, OPT_ORDER, NOPTIONS };
 
 static const ic_cli_option EVAL_OPTIONS[NOPTIONS] = {
-    [OPT_SURFACE] = {.name = "--surface", .metavar = "NAME", .kind = IC_OPT_TEXT,
+    [OPT_SURFACE] = {.name = "--surface",
+                     .metavar = "NAME",
+                     .kind = IC_OPT_TEXT,
                      .help = "the surface's \"name\" in the problem (default: the first)"},
-    [OPT_AT] = {.name = "--at", .metavar = "U,V|X,Y,Z", .kind = IC_OPT_LIST, .lo = 1, .hi = 3,
+    [OPT_AT] = {.name = "--at",
+                .metavar = "U,V|X,Y,Z",
+                .kind = IC_OPT_LIST,
+                .lo = 1,
+                .hi = 3,
                 .need = IC_OPT_REQUIRED,
                 .help = "parameters U,V of a parametric surface, or X,Y,Z of an\n"
                         "implicit one; each value may be a formula such as pi/4"},
-    [OPT_ORDER] = {.name = "--order", .metavar = "K", .kind = IC_OPT_INT, .lo = 0,
-                   .hi = IC_JET_MAX_ORDER, .fallback = "4",
+    [OPT_ORDER] = {.name = "--order",
+                   .metavar = "K",
+                   .kind = IC_OPT_INT,
+                   .lo = 0,
+                   .hi = IC_JET_MAX_ORDER,
+                   .fallback = "4",
                    .help = "highest order of the partial derivatives"},
 };
 
 static const ic_cli_command EVAL = {
     .name = "eval",
-    .summary =
-        "Evaluates one surface of the problem at a point and prints, as JSON: the point\n"
-        "(implicit: the value of f), the unit normal, the tangent basis, the first and\n"
-        "second fundamental forms in that basis, the principal curvatures k1 >= k2 and\n"
-        "directions, Gaussian and mean curvature, and every partial derivative up to\n"
-        "order K. The problem file may hold one surface alone (no \"self\"): the surface\n"
-        "to evaluate; point, trace and plot need two, or one with \"self\": true.",
+    .summary = "Evaluates one surface of the problem at a point and prints, as JSON: the point\n"
+               "(implicit: the value of f), the unit normal, the tangent basis, the first and\n"
+               "second fundamental forms in that basis, the principal curvatures k1 >= k2 and\n"
+               "directions, Gaussian and mean curvature, and every partial derivative up to\n"
+               "order K. The problem file may hold one surface alone (no \"self\"): the surface\n"
+               "to evaluate; point, trace and plot need two, or one with \"self\": true.",
     .options = EVAL_OPTIONS,
     .noptions = NOPTIONS,
     .notes = "At a degenerate point (zero normal, e.g. a sphere pole) the derivatives are\n"
@@ -78,9 +87,9 @@ int ic_cmd_eval(int argc, char **argv)
         goto cleanup;
     ic_error err;
     ic_error_clear(&err);
-    const ic_status st = ic_surface_write_json(stdout, ic_problem_surface(p, idx),
-                                               ic_problem_surface_name(p, idx), v[OPT_AT].list,
-                                               (int)v[OPT_ORDER].integer, &err);
+    const ic_status st =
+        ic_surface_write_json(stdout, ic_problem_surface(p, idx), ic_problem_surface_name(p, idx),
+                              v[OPT_AT].list, (int)v[OPT_ORDER].integer, &err);
     if (st == IC_OK && fflush(stdout) == 0) {
         rc = 0;
     } else if (st == IC_OK || st == IC_ERR_IO) {

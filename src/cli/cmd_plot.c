@@ -1,38 +1,78 @@
 /* intercurve plot: the picture of a problem (docs/plots.md). */
 #include "cli/cli.h"
 
-enum { OPT_OUTPUT, OPT_VIEW, OPT_FRAMES, OPT_SIZE, OPT_MESH, OPT_NO_CHART, OPT_TOL, OPT_DEPTH,
-       NOPTIONS };
+enum {
+    OPT_OUTPUT,
+    OPT_VIEW,
+    OPT_FRAMES,
+    OPT_SIZE,
+    OPT_MESH,
+    OPT_NO_CHART,
+    OPT_TOL,
+    OPT_DEPTH,
+    NOPTIONS
+};
 
 static const ic_cli_option PLOT_OPTIONS[NOPTIONS] = {
-    [OPT_OUTPUT] = {.name = "-o", .metavar = "FIGURE", .kind = IC_OPT_TEXT,
+    [OPT_OUTPUT] = {.name = "-o",
+                    .metavar = "FIGURE",
+                    .kind = IC_OPT_TEXT,
                     .need = IC_OPT_REQUIRED,
                     .help = "the picture to write, .svg, .png or .pdf (through a temporary\n"
                             "file and a rename)"},
-    [OPT_VIEW] = {.name = "--view", .metavar = "AZ,EL", .kind = IC_OPT_LIST, .lo = 2, .hi = 2,
-                  .fallback = "35,25", .help = "azimuth and elevation of the view in degrees"},
-    [OPT_FRAMES] = {.name = "--frames", .metavar = "N", .kind = IC_OPT_INT, .lo = 0, .hi = 200,
-                    .fallback = "8", .help = "Frenet frames drawn along the curves"},
-    [OPT_SIZE] = {.name = "--size", .metavar = "WxH", .kind = IC_OPT_SIZE, .lo = 200,
-                  .hi = 10000, .lo2 = 150, .fallback = "1400x800",
+    [OPT_VIEW] = {.name = "--view",
+                  .metavar = "AZ,EL",
+                  .kind = IC_OPT_LIST,
+                  .lo = 2,
+                  .hi = 2,
+                  .fallback = "35,25",
+                  .help = "azimuth and elevation of the view in degrees"},
+    [OPT_FRAMES] = {.name = "--frames",
+                    .metavar = "N",
+                    .kind = IC_OPT_INT,
+                    .lo = 0,
+                    .hi = 200,
+                    .fallback = "8",
+                    .help = "Frenet frames drawn along the curves"},
+    [OPT_SIZE] = {.name = "--size",
+                  .metavar = "WxH",
+                  .kind = IC_OPT_SIZE,
+                  .lo = 200,
+                  .hi = 10000,
+                  .lo2 = 150,
+                  .fallback = "1400x800",
                   .help = "width and height in pixels (PNG) or points (SVG, PDF)"},
-    [OPT_MESH] = {.name = "--mesh", .metavar = "N", .kind = IC_OPT_INT, .lo = 4, .hi = 200,
-                  .fallback = "36", .help = "mesh cells per parameter or box axis"},
+    [OPT_MESH] = {.name = "--mesh",
+                  .metavar = "N",
+                  .kind = IC_OPT_INT,
+                  .lo = 4,
+                  .hi = 200,
+                  .fallback = "36",
+                  .help = "mesh cells per parameter or box axis"},
     [OPT_NO_CHART] = {.name = "--no-chart", .kind = IC_OPT_FLAG, .help = "the 3D view only"},
-    [OPT_TOL] = {.name = "--tol", .metavar = "T", .kind = IC_OPT_REAL, .lo = 0, .hi = 1e-2,
-                 .fallback = "1e-11", .help = "as for 'intercurve trace'"},
-    [OPT_DEPTH] = {.name = "--depth", .metavar = "D", .kind = IC_OPT_INT, .lo = 1, .hi = 9,
-                   .fallback = "6", .help = "as for 'intercurve trace'"},
+    [OPT_TOL] = {.name = "--tol",
+                 .metavar = "T",
+                 .kind = IC_OPT_REAL,
+                 .lo = 0,
+                 .hi = 1e-2,
+                 .fallback = "1e-11",
+                 .help = "as for 'intercurve trace'"},
+    [OPT_DEPTH] = {.name = "--depth",
+                   .metavar = "D",
+                   .kind = IC_OPT_INT,
+                   .lo = 1,
+                   .hi = 9,
+                   .fallback = "6",
+                   .help = "as for 'intercurve trace'"},
 };
 
 static const ic_cli_command PLOT = {
     .name = "plot",
-    .summary =
-        "Traces the intersection (as 'intercurve trace') and draws it: both surfaces as\n"
-        "shaded, partly transparent meshes, the curves coloured by curvature with a colour\n"
-        "bar, Frenet frames (t red, n green, b blue) along them, the singular points\n"
-        "labelled by type, axes with ticks; and beside it a chart of curvature and torsion\n"
-        "against arc length. The format follows the extension of FIGURE.",
+    .summary = "Traces the intersection (as 'intercurve trace') and draws it: both surfaces as\n"
+               "shaded, partly transparent meshes, the curves coloured by curvature with a colour\n"
+               "bar, Frenet frames (t red, n green, b blue) along them, the singular points\n"
+               "labelled by type, axes with ticks; and beside it a chart of curvature and torsion\n"
+               "against arc length. The format follows the extension of FIGURE.",
     .options = PLOT_OPTIONS,
     .noptions = NOPTIONS,
     .notes = "example:\n"

@@ -20,17 +20,31 @@
 enum { OPT_AT, OPT_PARAMS, OPT_ORDER, OPT_METHOD, OPT_FORMAT, OPT_POINT_TOL, NOPTIONS };
 
 static const ic_cli_option POINT_OPTIONS[NOPTIONS] = {
-    [OPT_AT] = {.name = "--at", .metavar = "X,Y,Z", .kind = IC_OPT_LIST, .lo = 1, .hi = 3,
+    [OPT_AT] = {.name = "--at",
+                .metavar = "X,Y,Z",
+                .kind = IC_OPT_LIST,
+                .lo = 1,
+                .hi = 3,
                 .need = IC_OPT_ONE_OF,
                 .help = "the point by coordinates (values may be formulas: sqrt(2)/2)"},
-    [OPT_PARAMS] = {.name = "--params", .metavar = "U,V[,P,Q]", .kind = IC_OPT_LIST, .lo = 1,
-                    .hi = 4, .need = IC_OPT_ONE_OF,
+    [OPT_PARAMS] = {.name = "--params",
+                    .metavar = "U,V[,P,Q]",
+                    .kind = IC_OPT_LIST,
+                    .lo = 1,
+                    .hi = 4,
+                    .need = IC_OPT_ONE_OF,
                     .help = "the parameters of the parametric surfaces in problem order;\n"
                             "for a self-intersection both preimages U,V,P,Q"},
-    [OPT_ORDER] = {.name = "--order", .metavar = "K", .kind = IC_OPT_INT, .lo = 1,
-                   .hi = IC_LOCAL_MAX_ORDER, .fallback = "4",
+    [OPT_ORDER] = {.name = "--order",
+                   .metavar = "K",
+                   .kind = IC_OPT_INT,
+                   .lo = 1,
+                   .hi = IC_LOCAL_MAX_ORDER,
+                   .fallback = "4",
                    .help = "highest derivative c^(K) (closed-form: up to 3)"},
-    [OPT_METHOD] = {.name = "--method", .metavar = "M", .kind = IC_OPT_CHOICE,
+    [OPT_METHOD] = {.name = "--method",
+                    .metavar = "M",
+                    .kind = IC_OPT_CHOICE,
                     .choices = "auto|jet|closed-form|perturbation|height-difference",
                     .fallback = "auto",
                     .help = "jet (transversal points, any order), closed-form (the\n"
@@ -40,11 +54,18 @@ static const ic_cli_option POINT_OPTIONS[NOPTIONS] = {
                             "nearby transversal values, with an error estimate),\n"
                             "height-difference (tangential points, any order); auto: jet\n"
                             "at transversal points, height-difference at tangential ones"},
-    [OPT_FORMAT] = {.name = "--format", .metavar = "F", .kind = IC_OPT_CHOICE,
-                    .choices = "json|text", .fallback = "json",
+    [OPT_FORMAT] = {.name = "--format",
+                    .metavar = "F",
+                    .kind = IC_OPT_CHOICE,
+                    .choices = "json|text",
+                    .fallback = "json",
                     .help = "the document (docs/output-formats.md) or a text for people"},
-    [OPT_POINT_TOL] = {.name = "--point-tol", .metavar = "T", .kind = IC_OPT_REAL, .lo = 0,
-                       .hi = INFINITY, .fallback = "1e-6",
+    [OPT_POINT_TOL] = {.name = "--point-tol",
+                       .metavar = "T",
+                       .kind = IC_OPT_REAL,
+                       .lo = 0,
+                       .hi = INFINITY,
+                       .fallback = "1e-6",
                        .help = "how far from either surface the search for the point may\n"
                                "start (a length); farther is an error saying how far. It\n"
                                "widens the search only: the point found must pass the\n"
@@ -54,12 +75,11 @@ static const ic_cli_option POINT_OPTIONS[NOPTIONS] = {
 
 static const ic_cli_command POINT = {
     .name = "point",
-    .summary =
-        "Locates the point on the intersection of the problem's two surfaces (or the\n"
-        "self-intersection of its one surface), refines it onto both, and prints its type\n"
-        "and, on the branch through it, t, n, b, curvature, torsion, their derivatives,\n"
-        "the derivatives c', ..., c^(K) with respect to arc length, and the normal\n"
-        "curvature, geodesic curvature and geodesic torsion on each surface.",
+    .summary = "Locates the point on the intersection of the problem's two surfaces (or the\n"
+               "self-intersection of its one surface), refines it onto both, and prints its type\n"
+               "and, on the branch through it, t, n, b, curvature, torsion, their derivatives,\n"
+               "the derivatives c', ..., c^(K) with respect to arc length, and the normal\n"
+               "curvature, geodesic curvature and geodesic torsion on each surface.",
     .options = POINT_OPTIONS,
     .noptions = NOPTIONS,
     .notes =

@@ -9,22 +9,39 @@ enum { OPT_FORMAT, OPT_OUTPUT, OPT_TOL, OPT_DEPTH, OPT_TIME_LIMIT, NOPTIONS };
 typedef enum { FORMAT_JSON, FORMAT_CSV, FORMAT_VTK, FORMAT_OBJ, FORMAT_TEXT } out_format;
 
 static const ic_cli_option TRACE_OPTIONS[NOPTIONS] = {
-    [OPT_FORMAT] = {.name = "--format", .metavar = "F", .kind = IC_OPT_CHOICE,
-                    .choices = "json|csv|vtk|obj|text", .fallback = "json",
+    [OPT_FORMAT] = {.name = "--format",
+                    .metavar = "F",
+                    .kind = IC_OPT_CHOICE,
+                    .choices = "json|csv|vtk|obj|text",
+                    .fallback = "json",
                     .help = "json, csv (one row per point), vtk (legacy PolyData with\n"
                             "t, n, b, kappa, tau as point data, for ParaView), obj (polylines)\n"
                             "or text (a summary table of the curves and points);\n"
                             "docs/output-formats.md"},
-    [OPT_OUTPUT] = {.name = "-o", .metavar = "FILE", .kind = IC_OPT_TEXT,
+    [OPT_OUTPUT] = {.name = "-o",
+                    .metavar = "FILE",
+                    .kind = IC_OPT_TEXT,
                     .help = "write to FILE (through a temporary file and a rename)"},
-    [OPT_TOL] = {.name = "--tol", .metavar = "T", .kind = IC_OPT_REAL, .lo = 0, .hi = 1e-2,
+    [OPT_TOL] = {.name = "--tol",
+                 .metavar = "T",
+                 .kind = IC_OPT_REAL,
+                 .lo = 0,
+                 .hi = 1e-2,
                  .fallback = "1e-11",
                  .help = "truncation error allowed per step, a fraction of the problem's\n"
                          "size (the diagonal of the region searched)"},
-    [OPT_DEPTH] = {.name = "--depth", .metavar = "D", .kind = IC_OPT_INT, .lo = 1, .hi = 9,
-                   .fallback = "6", .help = "subdivision depth of the start-point search"},
-    [OPT_TIME_LIMIT] = {.name = "--time-limit", .metavar = "SECONDS", .kind = IC_OPT_REAL,
-                        .lo = 0, .hi = 1e6,
+    [OPT_DEPTH] = {.name = "--depth",
+                   .metavar = "D",
+                   .kind = IC_OPT_INT,
+                   .lo = 1,
+                   .hi = 9,
+                   .fallback = "6",
+                   .help = "subdivision depth of the start-point search"},
+    [OPT_TIME_LIMIT] = {.name = "--time-limit",
+                        .metavar = "SECONDS",
+                        .kind = IC_OPT_REAL,
+                        .lo = 0,
+                        .hi = 1e6,
                         .help = "stop after this wall time with what was found (complete:\n"
                                 "false); without it the search's own cell budget bounds it"},
 };
@@ -111,8 +128,7 @@ int ic_cmd_trace(int argc, char **argv)
     ic_cli_traced t;
     if ((rc = ic_cli_trace_file(file, &opt, &t)) != 0)
         return rc;
-    trace_output o = {(out_format)v[OPT_FORMAT].choice, t.res, t.pair,
-                      ic_problem_title(t.problem)};
+    trace_output o = {(out_format)v[OPT_FORMAT].choice, t.res, t.pair, ic_problem_title(t.problem)};
     rc = write_output(v[OPT_OUTPUT].text, &o);
     ic_cli_traced_free(&t);
     return rc;

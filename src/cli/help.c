@@ -92,8 +92,10 @@ static void range_line(char *out, size_t size, const ic_cli_option *opt, int col
         const size_t used = strlen(out);
         const int wraps = column + (int)(used + strlen(opt->fallback)) + 10 > USAGE_WIDTH;
         snprintf(out + used, size - used, "%s%*sdefault %s",
-                 !used ? "" : wraps ? "\n" : "; ", used && wraps ? column : 0, "",
-                 opt->fallback);
+                 !used   ? ""
+                 : wraps ? "\n"
+                         : "; ",
+                 used && wraps ? column : 0, "", opt->fallback);
     }
 }
 

@@ -3,10 +3,7 @@
 
 #include <errno.h>
 
-const char *ic_cli_file_name(const char *file)
-{
-    return strcmp(file, "-") == 0 ? "<stdin>" : file;
-}
+const char *ic_cli_file_name(const char *file) { return strcmp(file, "-") == 0 ? "<stdin>" : file; }
 
 int ic_cli_load_problem(ic_problem **p, const char *file, unsigned flags)
 {

@@ -98,8 +98,8 @@ static int read_real(const char *cmd, const ic_cli_option *opt, const char *text
             fprintf(stderr, "intercurve %s: %s expects %s > %s, got '%s'\n", cmd, opt->name,
                     opt->metavar, lo, text);
         else
-            fprintf(stderr, "intercurve %s: %s expects %s in (%s, %s], got '%s'\n", cmd,
-                    opt->name, opt->metavar, lo, hi, text);
+            fprintf(stderr, "intercurve %s: %s expects %s in (%s, %s], got '%s'\n", cmd, opt->name,
+                    opt->metavar, lo, hi, text);
         return -1;
     }
     v->real = x;
@@ -120,8 +120,7 @@ void ic_cli_choices_text(char *out, size_t size, const char *choices)
     out[k] = '\0';
 }
 
-static int read_choice(const char *cmd, const ic_cli_option *opt, const char *text,
-                       ic_cli_value *v)
+static int read_choice(const char *cmd, const ic_cli_option *opt, const char *text, ic_cli_value *v)
 {
     const size_t n = strlen(text);
     int index = 0;
@@ -161,8 +160,8 @@ static int read_size(const char *cmd, const ic_cli_option *opt, const char *text
 {
     int w, h;
     char tail;
-    if (sscanf(text, "%dx%d%c", &w, &h, &tail) != 2 || w < opt->lo || w > opt->hi ||
-        h < opt->lo2 || h > opt->hi) {
+    if (sscanf(text, "%dx%d%c", &w, &h, &tail) != 2 || w < opt->lo || w > opt->hi || h < opt->lo2 ||
+        h > opt->hi) {
         fprintf(stderr,
                 "intercurve %s: %s expects WxH, W in %.0f..%.0f and H in %.0f..%.0f (got '%s')\n",
                 cmd, opt->name, opt->lo, opt->hi, opt->lo2, opt->hi, text);
@@ -172,8 +171,7 @@ static int read_size(const char *cmd, const ic_cli_option *opt, const char *text
     return 0;
 }
 
-int ic_cli_read_value(const char *cmd, const ic_cli_option *opt, const char *text,
-                      ic_cli_value *v)
+int ic_cli_read_value(const char *cmd, const ic_cli_option *opt, const char *text, ic_cli_value *v)
 {
     v->text = text;
     switch (opt->kind) {

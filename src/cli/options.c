@@ -53,8 +53,7 @@ static int read_option(const ic_cli_command *cmd, int argc, char **argv, int *i,
     } else if (*i + 1 < argc) {
         text = argv[++*i];
     } else {
-        fprintf(stderr, "intercurve %s: %s needs a value %s\n", cmd->name, opt->name,
-                opt->metavar);
+        fprintf(stderr, "intercurve %s: %s needs a value %s\n", cmd->name, opt->name, opt->metavar);
         return input_error(cmd);
     }
     if (ic_cli_read_value(cmd->name, opt, text, &values[k]) < 0)
@@ -68,8 +67,8 @@ static int fill_defaults(const ic_cli_command *cmd, ic_cli_value *values)
 {
     for (int k = 0; k < cmd->noptions; k++)
         if (!values[k].given && cmd->options[k].fallback &&
-            ic_cli_read_value(cmd->name, &cmd->options[k], cmd->options[k].fallback,
-                              &values[k]) < 0)
+            ic_cli_read_value(cmd->name, &cmd->options[k], cmd->options[k].fallback, &values[k]) <
+                0)
             return EXIT_INPUT; /* a wrong table: the tests of --help catch it */
     return 0;
 }
@@ -86,7 +85,10 @@ static int one_of_text(char *out, size_t size, const ic_cli_command *cmd)
             continue;
         n++;
         used += (size_t)snprintf(out + used, size - used, "%s %s",
-                                 n == 1 ? "" : n == total ? " or" : ",", cmd->options[k].name);
+                                 n == 1       ? ""
+                                 : n == total ? " or"
+                                              : ",",
+                                 cmd->options[k].name);
     }
     return total;
 }

@@ -27,23 +27,23 @@ typedef enum {
 } ic_opt_need;
 
 typedef struct {
-    const char *name;      /* "--order", or "-o" */
-    const char *metavar;   /* the value's name in the help ("K"); NULL for a flag */
+    const char *name;    /* "--order", or "-o" */
+    const char *metavar; /* the value's name in the help ("K"); NULL for a flag */
     ic_opt_kind kind;
-    double lo, hi;         /* the range (see ic_opt_kind); hi may be INFINITY for REAL */
-    double lo2;            /* IC_OPT_SIZE: the least H */
-    const char *choices;   /* IC_OPT_CHOICE: "json|text" */
-    const char *fallback;  /* the default, read as if given; NULL: none */
+    double lo, hi;        /* the range (see ic_opt_kind); hi may be INFINITY for REAL */
+    double lo2;           /* IC_OPT_SIZE: the least H */
+    const char *choices;  /* IC_OPT_CHOICE: "json|text" */
+    const char *fallback; /* the default, read as if given; NULL: none */
     ic_opt_need need;
-    const char *help;      /* what it means; '\n' starts a new line of the help */
+    const char *help; /* what it means; '\n' starts a new line of the help */
 } ic_cli_option;
 
 typedef struct {
-    const char *name;     /* "trace" */
-    const char *summary;  /* what the command does, after the usage line */
+    const char *name;    /* "trace" */
+    const char *summary; /* what the command does, after the usage line */
     const ic_cli_option *options;
     int noptions;
-    const char *notes;    /* after the options: details and examples */
+    const char *notes; /* after the options: details and examples */
 } ic_cli_command;
 
 /* Longest list a IC_OPT_LIST option holds. */
@@ -51,14 +51,14 @@ typedef struct {
 
 /* An option's value after parsing: its default where it was not given. */
 typedef struct {
-    int given;   /* 1 when on the command line */
-    const char *text; /* the value as written (NULL for a flag or without one) */
-    long integer;     /* IC_OPT_INT, IC_OPT_FLAG (1 when given) */
-    double real;      /* IC_OPT_REAL */
+    int given;                    /* 1 when on the command line */
+    const char *text;             /* the value as written (NULL for a flag or without one) */
+    long integer;                 /* IC_OPT_INT, IC_OPT_FLAG (1 when given) */
+    double real;                  /* IC_OPT_REAL */
     double list[IC_CLI_MAX_LIST]; /* IC_OPT_LIST */
     int count;                    /* IC_OPT_LIST: values in list */
-    int choice;       /* IC_OPT_CHOICE: the index in choices */
-    int width, height; /* IC_OPT_SIZE */
+    int choice;                   /* IC_OPT_CHOICE: the index in choices */
+    int width, height;            /* IC_OPT_SIZE */
 } ic_cli_value;
 
 /* What ic_cli_parse returns besides 0 and the exit codes: --help was
@@ -79,8 +79,7 @@ void ic_cli_print_help(const ic_cli_command *cmd, FILE *f);
 
 /* Reads one option's value from text into *v; 0, or -1 after a message
  * "intercurve CMD: OPTION ..." on stderr. */
-int ic_cli_read_value(const char *cmd, const ic_cli_option *opt, const char *text,
-                      ic_cli_value *v);
+int ic_cli_read_value(const char *cmd, const ic_cli_option *opt, const char *text, ic_cli_value *v);
 
 /* A bound of a range as the help writes it: %g without exponent padding
  * ("0.01", "1e6", "1e-6"). */

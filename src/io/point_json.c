@@ -99,8 +99,9 @@ ic_status ic_local_write_json(FILE *f, const ic_local_result *res, const ic_pair
     json_out_add(&j, doc, "residual", json_out_number(&j, res->point.residual));
     cJSON *params = cJSON_CreateArray();
     for (int s = 0; s < 2; s++)
-        json_out_append(&j, params, parametric[s] ? json_out_vector(&j, res->point.params[s], 2)
-                                                  : cJSON_CreateNull());
+        json_out_append(&j, params,
+                        parametric[s] ? json_out_vector(&j, res->point.params[s], 2)
+                                      : cJSON_CreateNull());
     json_out_add(&j, doc, "params", params);
     cJSON *normals = cJSON_CreateArray();
     for (int s = 0; s < 2; s++)

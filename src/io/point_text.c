@@ -7,8 +7,7 @@
 static void text_vector(FILE *f, const char *name, const double *v, int defined)
 {
     if (defined)
-        fprintf(f, "  %-12s (% .15g, % .15g, % .15g)\n", name, v[0] + 0.0, v[1] + 0.0,
-                v[2] + 0.0);
+        fprintf(f, "  %-12s (% .15g, % .15g, % .15g)\n", name, v[0] + 0.0, v[1] + 0.0, v[2] + 0.0);
     else
         fprintf(f, "  %-12s undefined\n", name);
 }

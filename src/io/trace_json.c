@@ -96,8 +96,7 @@ ic_status ic_trace_write_json(FILE *f, const ic_trace_result *res, const ic_pair
     cJSON *doc = cJSON_CreateObject();
     cJSON *curves = cJSON_CreateArray();
     for (int i = 0; i < ic_trace_result_num_curves(res); i++)
-        json_out_append(&j, curves,
-                        curve_json(&j, ic_trace_result_curve(res, i), res, parametric));
+        json_out_append(&j, curves, curve_json(&j, ic_trace_result_curve(res, i), res, parametric));
     json_out_add(&j, doc, "curves", curves);
     cJSON *points = cJSON_CreateArray();
     for (int i = 0; i < ic_trace_result_num_specials(res); i++)

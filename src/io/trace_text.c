@@ -54,8 +54,7 @@ static void text_report(FILE *f, const ic_trace_report *rep)
         fprintf(f, "  %s\n", rep->failures[i]);
 }
 
-ic_status ic_trace_write_text(FILE *f, const ic_trace_result *res, const char *title,
-                              ic_error *err)
+ic_status ic_trace_write_text(FILE *f, const ic_trace_result *res, const char *title, ic_error *err)
 {
     if (title && *title)
         fprintf(f, "%s\n", title);

@@ -19,6 +19,9 @@
 
 enum { OPT_AT, OPT_PARAMS, OPT_ORDER, OPT_METHOD, OPT_FORMAT, OPT_POINT_TOL, NOPTIONS };
 
+/* The formats, in the order of --format's choices. */
+enum { FORMAT_JSON, FORMAT_TEXT };
+
 static const ic_cli_option POINT_OPTIONS[NOPTIONS] = {
     [OPT_AT] = {.name = "--at",
                 .metavar = "X,Y,Z",
@@ -195,8 +198,8 @@ static int print_point(const char *name, ic_pair *pair, const ic_local_point *pt
         ic_cli_print_error(name, &err);
         return st == IC_ERR_INVALID ? EXIT_INPUT : EXIT_COMPUTE;
     }
-    st = v[OPT_FORMAT].choice == 1 ? ic_local_write_text(stdout, &res, &err)
-                                   : ic_local_write_json(stdout, &res, pair, order, &err);
+    st = v[OPT_FORMAT].choice == FORMAT_TEXT ? ic_local_write_text(stdout, &res, &err)
+                                             : ic_local_write_json(stdout, &res, pair, order, &err);
     if (st == IC_OK && fflush(stdout) == 0)
         return 0;
     fprintf(stderr, "intercurve: cannot write the output (%s)\n",

@@ -22,6 +22,7 @@ static const bad_formula BAD[] = {
     {"atan2(x)", 1, "takes 2 arguments, got 1"},
     {"sin()", 1, "takes 1 argument, got 0"},
     {"(x + 1", 1, "never closed"},
+    {"2 * sin(x", 8, "never closed"},
     {"x + 1)", 6, "')' without a matching '('"},
     {"x y", 3, "expected an operator"},
     {"1e", 1, "exponent has no digits"},

@@ -34,7 +34,8 @@ off() { # description, expected residual text, later message or "", command args
     local rc=$?
     check "$what: exits 2 (got $rc)" $([ "$rc" -eq 2 ]; echo $?)
     head -1 "$errf" | grep -qF "not on the surfaces: residual $residual"
-    check "$what: first message 'not on the surfaces: residual $residual': $(head -c 400 "$errf")" $?
+    st=$?
+    check "$what: first message 'not on the surfaces: residual $residual': $(head -c 400 "$errf")" $st
     if [ -n "$later" ]; then
         tail -n +2 "$errf" | grep -qF -- "$later"
         check "$what: '$later' after the first message" $?
@@ -52,9 +53,11 @@ on() { # description, expected type, command args...
     local rc=$?
     check "$what: exits 0 (got $rc: $(head -c 300 "$errf"))" "$rc"
     awk '$1 == "point" { r = $NF } END { exit !(r != "" && r + 0 <= 4e-10) }' "$out"
-    check "$what: residual within 4e-10: $(head -1 "$out")" $?
+    st=$?
+    check "$what: residual within 4e-10: $(head -1 "$out")" $st
     grep -q "^type *$type" "$out"
-    check "$what: type $type: $(sed -n 2p "$out")" $?
+    st=$?
+    check "$what: type $type: $(sed -n 2p "$out")" $st
 }
 
 # the issue's case: the refinement stops 5.65 from the surfaces; --point-tol 10
@@ -92,7 +95,8 @@ on "1e-7 off Viviani's branch point" branch-point "$ex/viviani.json" --at 2.0000
 on "--point-tol 10 from (3, 0, 0) to the branch point" branch-point "$ex/viviani.json" \
     --at 3,0,0 --point-tol 10 --format text
 head -1 "$out" | grep -q '^point *(2, '
-check "the branch point found is (2, 0, 0): $(head -1 "$out")" $?
+st=$?
+check "the branch point found is (2, 0, 0): $(head -1 "$out")" $st
 on "1e-7 off the tangential circle" tangential-curve "$ex/torus-sphere.json" \
     --at 1.0000001,0,0 --format text
 on "the cusp, 1e-7 off the plane" cusp "$ex/cusp.json" --at 0,0,1e-7 --format text

@@ -17,8 +17,10 @@ trap 'rm -rf "$work"' EXIT
 # A: _end, __bss_start on some linkers), which name no code or data.
 nm -D --defined-only "$lib" | awk '$2 != "A" { print $3 }' | sort -u >"$work/exported"
 # Declared: the function names of the preprocessed headers (comments and
-# macros are gone there; a declaration is the only "ic_name(").
+# macros are gone there; a declaration is the only "ic_name(", once the
+# return types of function pointer types, "ic_status (*", are dropped).
 "$cc" -E -P -I"$src/include" "$src/include/intercurve.h" |
+    sed 's/\bic_[a-z0-9_]*[[:space:]]*([[:space:]]*\*//g' |
     grep -o '\bic_[a-z0-9_]*[[:space:]]*(' | tr -d ' \t(' | sort -u >"$work/declared"
 
 fail=0

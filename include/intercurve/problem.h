@@ -9,6 +9,8 @@
 #ifndef INTERCURVE_PROBLEM_H
 #define INTERCURVE_PROBLEM_H
 
+#include <stdio.h>
+
 #include "intercurve/common.h"
 #include "intercurve/surface.h"
 
@@ -26,6 +28,18 @@ IC_API IC_NODISCARD ic_status ic_problem_load(ic_problem **p, const char *filena
 /** The same from a JSON text in memory. */
 IC_API IC_NODISCARD ic_status ic_problem_parse(ic_problem **p, const char *json, size_t len,
                                                ic_error *err);
+/** Flags of ic_problem_read. IC_PROBLEM_ONE_SURFACE: a file whose
+ *  "surfaces" holds one surface without "self" is accepted too, a surface
+ *  to evaluate rather than an intersection (ic_problem_num_surfaces is 1,
+ *  ic_problem_is_self 0); without it such a file is IC_ERR_INVALID. */
+#define IC_PROBLEM_ONE_SURFACE 1u
+/** Reads and validates a problem from an open stream, to its end (the
+ *  stream is not closed); `name` stands for it in messages. IC_ERR_INVALID
+ *  when the stream cannot be read or holds more than IC_PROBLEM_MAX_FILE
+ *  bytes; otherwise as ic_problem_parse. ic_problem_load is fopen and this
+ *  without flags. */
+IC_API IC_NODISCARD ic_status ic_problem_read(ic_problem **p, FILE *f, const char *name, unsigned flags,
+                                       ic_error *err);
 /** Frees a problem and its surfaces; NULL is allowed. */
 IC_API void ic_problem_free(ic_problem *p);
 

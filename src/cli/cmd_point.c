@@ -1,9 +1,8 @@
 /* intercurve point: the intersection's Frenet apparatus at one point. */
-#include "cli.h"
+#include "cli/cli.h"
 #include "common/vec3.h"
 
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
 
 /* The surfaces' own residual test for a point the command reports: its
@@ -18,178 +17,89 @@
 #define STRINGIFY_(x) #x
 #define STRINGIFY(x) STRINGIFY_(x) /* the constant's value in the help text */
 
-static const char POINT_HELP[] =
-    "usage: intercurve point PROBLEM.json (--at X,Y,Z | --params U,V[,P,Q]) [--order K]\n"
-    "                        [--method auto|jet|closed-form] [--format json|text]\n"
-    "                        [--point-tol T]\n"
-    "\n"
-    "Locates the point on the intersection of the problem's two surfaces (or the\n"
-    "self-intersection of its one surface), refines it onto both, and prints its type\n"
-    "and, on the branch through it, t, n, b, curvature, torsion, their derivatives,\n"
-    "the derivatives c', ..., c^(K) with respect to arc length, and the normal\n"
-    "curvature, geodesic curvature and geodesic torsion on each surface.\n"
-    "\n"
-    "  --at X,Y,Z      the point by coordinates (values may be formulas: sqrt(2)/2)\n"
-    "  --params LIST   the parameters of the parametric surfaces in problem order;\n"
-    "                  for a self-intersection both preimages U,V,P,Q\n"
-    "  --order K       highest derivative (default 4; jet: up to 16, closed-form: 3)\n"
-    "  --method M      auto, jet (transversal, any order), closed-form (the papers'\n"
-    "                  formulas, order <= 3: at transversal points Hassan and Badr\n"
-    "                  (2016), Abdel-All et al. (2012), Bendrici and Boumedien-Zidani\n"
-    "                  (2022) with Patrikalakis and Maekawa (2002); at tangential\n"
-    "                  ones section 4 of the first two; docs/references.md),\n"
-    "                  height-difference (tangential points, any order), perturbation\n"
-    "                  (tangential points: t, n, kappa as limits of nearby transversal\n"
-    "                  values, with an error estimate)\n"
-    "  --format F      json (default) or text\n"
-    "  --point-tol T   how far from either surface the search for the point may\n"
-    "                  start (a length, default 1e-6); farther is an error saying how\n"
-    "                  far. It widens the search only: the point found must pass the\n"
-    "                  surfaces' residual test, at most " STRINGIFY(ON_SURFACE_REL) " (1 + |X|) from both\n"
-    "\n"
-    "The curve is oriented by t = N_A x N_B. At a tangential point (normals parallel)\n"
-    "the point is classified (branch-point, tangential-curve, isolated-contact, cusp,\n"
-    "tacnode, higher-order-contact) and every branch through it is given, with the\n"
-    "discriminant and the papers' coefficients. Undefined values (n, b, torsion where\n"
-    "the curvature is 0) are null. Exit status 2 when the point is not on the\n"
-    "intersection; the first message then says \"not on the surfaces: residual ...\".\n"
-    "\n"
-    "examples:\n"
-    "  intercurve point examples/viviani.json --at 1.5,0.8660254037844386,1 --order 3\n"
-    "  intercurve point examples/viviani.json --at 2,0,0 --format text   (a branch point)\n";
+enum { OPT_AT, OPT_PARAMS, OPT_ORDER, OPT_METHOD, OPT_FORMAT, OPT_POINT_TOL, NOPTIONS };
 
-static cJSON *branch_json(const ic_branch *br, const ic_pair *pair)
-{
-    cJSON *o = cJSON_CreateObject();
-    cJSON_AddItemToObject(o, "t", ic_json_vector(br->t, 3));
-    if (!br->regular)
-        cJSON_AddFalseToObject(o, "regular");
-    cJSON_AddItemToObject(o, "n",
-                          br->frame_defined ? ic_json_vector(br->n, 3) : cJSON_CreateNull());
-    cJSON_AddItemToObject(o, "b",
-                          br->frame_defined ? ic_json_vector(br->b, 3) : cJSON_CreateNull());
-    cJSON_AddItemToObject(o, "kappa",
-                          br->order >= 2 ? ic_json_number_or_null(br->kappa) : cJSON_CreateNull());
-    cJSON_AddItemToObject(o, "tau",
-                          br->tau_defined ? ic_json_number_or_null(br->tau) : cJSON_CreateNull());
-    cJSON_AddItemToObject(o, "kappa_prime",
-                          br->kappa_prime_defined ? ic_json_number_or_null(br->kappa_prime)
-                                                  : cJSON_CreateNull());
-    cJSON_AddItemToObject(o, "tau_prime",
-                          br->tau_prime_defined ? ic_json_number_or_null(br->tau_prime)
-                                                : cJSON_CreateNull());
-    if (!br->regular)
-        cJSON_AddStringToObject(o, "undefined",
-                                "a cusp: t, n, b are one-sided limits along "
-                                "this half-branch; the curvature is infinite");
-    else if (!br->frame_defined && br->order >= 2)
-        cJSON_AddStringToObject(o, "undefined",
-                                "the curvature is 0: n, b and the torsion are undefined");
-    cJSON *d = cJSON_CreateArray();
-    for (int k = 0; k < br->order; k++)
-        cJSON_AddItemToArray(d, ic_json_vector(br->derivs[k], 3));
-    cJSON_AddItemToObject(o, "derivatives", d);
-    cJSON *surfaces = cJSON_CreateArray();
-    for (int s = 0; s < 2; s++) {
-        cJSON *so = cJSON_CreateObject();
-        if (br->order >= 2) {
-            cJSON_AddItemToObject(so, "kappa_n", ic_json_number_or_null(br->surface[s].kappa_n));
-            cJSON_AddItemToObject(so, "kappa_g", ic_json_number_or_null(br->surface[s].kappa_g));
-            cJSON_AddItemToObject(so, "tau_g", ic_json_number_or_null(br->surface[s].tau_g));
-        }
-        if (ic_surface_get_kind(ic_pair_surface(pair, s)) == IC_PARAMETRIC) {
-            cJSON *pd = cJSON_CreateArray();
-            for (int k = 0; k < br->param_order && k < br->order; k++)
-                cJSON_AddItemToArray(pd, ic_json_vector(br->param_derivs[s][k], 2));
-            cJSON_AddItemToObject(so, "parameter_derivatives", pd);
-        }
-        cJSON_AddItemToArray(surfaces, so);
-    }
-    cJSON_AddItemToObject(o, "surfaces", surfaces);
-    return o;
-}
+/* The formats, in the order of --format's choices. */
+enum { FORMAT_JSON, FORMAT_TEXT };
 
-static cJSON *result_json(const ic_local_result *res, const ic_pair *pair, int order)
-{
-    cJSON *doc = cJSON_CreateObject();
-    cJSON_AddItemToObject(doc, "point", ic_json_vector(res->point.xyz, 3));
-    cJSON_AddItemToObject(doc, "residual", ic_json_number_or_null(res->point.residual));
-    cJSON *params = cJSON_CreateArray();
-    for (int s = 0; s < 2; s++)
-        cJSON_AddItemToArray(params, ic_surface_get_kind(ic_pair_surface(pair, s)) == IC_PARAMETRIC
-                                         ? ic_json_vector(res->point.params[s], 2)
-                                         : cJSON_CreateNull());
-    cJSON_AddItemToObject(doc, "params", params);
-    cJSON *normals = cJSON_CreateArray();
-    cJSON_AddItemToArray(normals, ic_json_vector(res->normals[0], 3));
-    cJSON_AddItemToArray(normals, ic_json_vector(res->normals[1], 3));
-    cJSON_AddItemToObject(doc, "normals", normals);
-    cJSON_AddItemToObject(doc, "angle", ic_json_number_or_null(res->angle));
-    cJSON_AddStringToObject(doc, "type", ic_point_type_name(res->type));
-    cJSON_AddItemToObject(doc, "discriminant", ic_json_number_or_null(res->discriminant));
-    if (res->contact_order)
-        cJSON_AddNumberToObject(doc, "contact_order", res->contact_order);
-    cJSON_AddStringToObject(doc, "method", ic_method_name(res->method));
-    if (res->npaper) {
-        cJSON *pc = cJSON_CreateObject();
-        for (int i = 0; i < res->npaper; i++)
-            cJSON_AddItemToObject(pc, res->paper_names[i],
-                                  ic_json_number_or_null(res->paper_values[i]));
-        cJSON_AddItemToObject(doc, "paper_coefficients", pc);
-    }
-    if (res->method == IC_METHOD_PERTURBATION)
-        cJSON_AddItemToObject(doc, "error_estimate", ic_json_number_or_null(res->error_estimate));
-    cJSON_AddNumberToObject(doc, "order", order);
-    cJSON *branches = cJSON_CreateArray();
-    for (int i = 0; i < res->nbranches; i++)
-        cJSON_AddItemToArray(branches, branch_json(&res->branches[i], pair));
-    cJSON_AddItemToObject(doc, "branches", branches);
-    return doc;
-}
+static const ic_cli_option POINT_OPTIONS[NOPTIONS] = {
+    [OPT_AT] = {.name = "--at",
+                .metavar = "X,Y,Z",
+                .kind = IC_OPT_LIST,
+                .lo = 1,
+                .hi = 3,
+                .need = IC_OPT_ONE_OF,
+                .help = "the point by coordinates (values may be formulas: sqrt(2)/2)"},
+    [OPT_PARAMS] = {.name = "--params",
+                    .metavar = "U,V[,P,Q]",
+                    .kind = IC_OPT_LIST,
+                    .lo = 1,
+                    .hi = 4,
+                    .need = IC_OPT_ONE_OF,
+                    .help = "the parameters of the parametric surfaces in problem order;\n"
+                            "for a self-intersection both preimages U,V,P,Q"},
+    [OPT_ORDER] = {.name = "--order",
+                   .metavar = "K",
+                   .kind = IC_OPT_INT,
+                   .lo = 1,
+                   .hi = IC_LOCAL_MAX_ORDER,
+                   .fallback = "4",
+                   .help = "highest derivative c^(K) (closed-form: up to 3)"},
+    [OPT_METHOD] = {.name = "--method",
+                    .metavar = "M",
+                    .kind = IC_OPT_CHOICE,
+                    .choices = "auto|jet|closed-form|perturbation|height-difference",
+                    .fallback = "auto",
+                    .help = "jet (transversal points, any order), closed-form (the\n"
+                            "papers' formulas, order <= 3: at transversal points Hassan\n"
+                            "and Badr (2016), Abdel-All et al. (2012), Bendrici and\n"
+                            "Boumedien-Zidani (2022) with Patrikalakis and Maekawa (2002);\n"
+                            "at tangential ones section 4 of the first two;\n"
+                            "docs/references.md),\n"
+                            "perturbation (tangential points: t, n, kappa as limits of\n"
+                            "nearby transversal values, with an error estimate),\n"
+                            "height-difference (tangential points, any order); auto: jet\n"
+                            "at transversal points, height-difference at tangential ones"},
+    [OPT_FORMAT] = {.name = "--format",
+                    .metavar = "F",
+                    .kind = IC_OPT_CHOICE,
+                    .choices = "json|text",
+                    .fallback = "json",
+                    .help = "the document (docs/output-formats.md) or a text for people"},
+    [OPT_POINT_TOL] = {.name = "--point-tol",
+                       .metavar = "T",
+                       .kind = IC_OPT_REAL,
+                       .lo = 0,
+                       .hi = INFINITY,
+                       .fallback = "1e-6",
+                       .help = "how far from either surface the search for the point may\n"
+                               "start (a length); farther is an error saying how far. It\n"
+                               "widens the search only: the point found must pass the\n"
+                               "surfaces' residual test, at most " STRINGIFY(
+                                   ON_SURFACE_REL) " (1 + |X|) from both"},
+};
 
-static void print_vec(const char *name, const double *v, int defined)
-{
-    if (defined)
-        printf("  %-12s (% .15g, % .15g, % .15g)\n", name, v[0] + 0.0, v[1] + 0.0, v[2] + 0.0);
-    else
-        printf("  %-12s undefined\n", name);
-}
-
-static void print_text(const ic_local_result *res)
-{
-    printf("point        (%.15g, %.15g, %.15g)  residual %.3g\n", res->point.xyz[0],
-           res->point.xyz[1], res->point.xyz[2], res->point.residual);
-    printf("type         %s (angle between the normals %.6g rad), method %s\n",
-           ic_point_type_name(res->type), res->angle, ic_method_name(res->method));
-    if (!isnan(res->discriminant))
-        printf("discriminant %.15g%s\n", res->discriminant,
-               res->nbranches ? "" : "  (no branch: an isolated point)");
-    for (int i = 0; i < res->nbranches; i++) {
-        const ic_branch *br = &res->branches[i];
-        printf("branch %d%s\n", i + 1, br->regular ? "" : " (cusp half-branch: one-sided limits)");
-        print_vec("t", br->t, 1);
-        print_vec("n", br->n, br->frame_defined);
-        print_vec("b", br->b, br->frame_defined);
-        if (br->order >= 2)
-            printf("  %-12s %.15g\n", "kappa", br->kappa);
-        else if (!br->regular)
-            printf("  %-12s infinite (a cusp)\n", "kappa");
-        if (br->tau_defined)
-            printf("  %-12s %.15g\n", "tau", br->tau + 0.0);
-        if (br->kappa_prime_defined)
-            printf("  %-12s %.15g\n", "kappa'", br->kappa_prime);
-        if (br->tau_prime_defined)
-            printf("  %-12s %.15g\n", "tau'", br->tau_prime);
-        for (int k = 0; k < br->order; k++) {
-            char name[16];
-            snprintf(name, sizeof name, "c^(%d)", k + 1);
-            print_vec(name, br->derivs[k], 1);
-        }
-        for (int s = 0; s < 2 && br->order >= 2; s++)
-            printf("  surface %c    kappa_n %.15g  kappa_g %.15g  tau_g %.15g\n", 'A' + s,
-                   br->surface[s].kappa_n, br->surface[s].kappa_g, br->surface[s].tau_g);
-    }
-}
+static const ic_cli_command POINT = {
+    .name = "point",
+    .summary = "Locates the point on the intersection of the problem's two surfaces (or the\n"
+               "self-intersection of its one surface), refines it onto both, and prints its type\n"
+               "and, on the branch through it, t, n, b, curvature, torsion, their derivatives,\n"
+               "the derivatives c', ..., c^(K) with respect to arc length, and the normal\n"
+               "curvature, geodesic curvature and geodesic torsion on each surface.",
+    .options = POINT_OPTIONS,
+    .noptions = NOPTIONS,
+    .notes =
+        "The curve is oriented by t = N_A x N_B. At a tangential point (normals parallel)\n"
+        "the point is classified (branch-point, tangential-curve, isolated-contact, cusp,\n"
+        "tacnode, higher-order-contact) and every branch through it is given, with the\n"
+        "discriminant and the papers' coefficients. Undefined values (n, b, torsion where\n"
+        "the curvature is 0) are null. Exit status 2 when the point is not on the\n"
+        "intersection; the first message then says \"not on the surfaces: residual ...\".\n"
+        "\n"
+        "examples:\n"
+        "  intercurve point examples/viviani.json --at 1.5,0.8660254037844386,1 --order 3\n"
+        "  intercurve point examples/viviani.json --at 2,0,0 --format text   (a branch point)\n",
+};
 
 /* The largest residual (a length) the command accepts at X. */
 static double accepted_residual(const double X[3])
@@ -276,108 +186,65 @@ static int locate_point(const char *file, ic_pair *pair, ic_local_point *pt, con
     return EXIT_COMPUTE;
 }
 
-int ic_cmd_point(int argc, char **argv)
+/* The point's apparatus, printed as the document or as text; 0 or the
+ * exit code after the message. */
+static int print_point(const char *name, ic_pair *pair, const ic_local_point *pt,
+                       const ic_cli_value *v, const ic_local_options *opt)
 {
-    const char *file = NULL, *at_text = NULL, *params_text = NULL, *format = "json";
-    int order = 4, method = IC_METHOD_AUTO;
-    ic_local_options opt;
-    ic_local_defaults(&opt);
-    for (int i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            fputs(POINT_HELP, stdout);
-            return 0;
-        }
-        const int has_value = i + 1 < argc;
-        if (strcmp(argv[i], "--at") == 0 && has_value)
-            at_text = argv[++i];
-        else if (strcmp(argv[i], "--params") == 0 && has_value)
-            params_text = argv[++i];
-        else if (strcmp(argv[i], "--order") == 0 && has_value) {
-            if (ic_cli_parse_int(&order, argv[++i], 1, IC_LOCAL_MAX_ORDER, "--order") < 0)
-                return EXIT_INPUT;
-        } else if (strcmp(argv[i], "--method") == 0 && has_value) {
-            method = ic_method_from_name(argv[++i]);
-            if (method < 0) {
-                fprintf(stderr,
-                        "intercurve point: --method expects auto, jet, closed-form or "
-                        "perturbation, got '%s'\n",
-                        argv[i]);
-                return EXIT_INPUT;
-            }
-        } else if (strcmp(argv[i], "--format") == 0 && has_value) {
-            format = argv[++i];
-            if (strcmp(format, "json") != 0 && strcmp(format, "text") != 0) {
-                fprintf(stderr, "intercurve point: --format expects json or text, got '%s'\n",
-                        format);
-                return EXIT_INPUT;
-            }
-        } else if (strcmp(argv[i], "--point-tol") == 0 && has_value) {
-            double v;
-            if (ic_cli_parse_list(&v, 1, argv[++i], "--point-tol") != 1 || !(v > 0)) {
-                fprintf(stderr, "intercurve point: --point-tol expects a positive length\n");
-                return EXIT_INPUT;
-            }
-            opt.point_tol = v;
-        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            fprintf(stderr,
-                    "intercurve point: unknown option or missing value: %s\n"
-                    "try 'intercurve point --help'\n",
-                    argv[i]);
-            return EXIT_INPUT;
-        } else if (!file)
-            file = argv[i];
-        else {
-            fprintf(stderr, "intercurve point: unexpected argument '%s'\n", argv[i]);
-            return EXIT_INPUT;
-        }
-    }
-    if (!file || (!at_text == !params_text)) {
-        fprintf(stderr, "intercurve point: needs PROBLEM.json and one of --at or --params\n%s",
-                POINT_HELP);
-        return EXIT_INPUT;
-    }
     ic_error err;
     ic_error_clear(&err);
-    ic_problem *p = NULL;
-    ic_pair *pair = NULL;
-    if (ic_problem_load(&p, file, &err) != IC_OK) {
-        ic_cli_print_error(file, &err);
+    const int order = (int)v[OPT_ORDER].integer;
+    ic_local_result res;
+    const ic_method method = (ic_method)ic_method_from_name(v[OPT_METHOD].text);
+    ic_status st = ic_local_apparatus(pair, &res, pt, order, method, opt, &err);
+    if (st != IC_OK) {
+        ic_cli_print_error(name, &err);
+        return st == IC_ERR_INVALID ? EXIT_INPUT : EXIT_COMPUTE;
+    }
+    st = v[OPT_FORMAT].choice == FORMAT_TEXT ? ic_local_write_text(stdout, &res, &err)
+                                             : ic_local_write_json(stdout, &res, pair, order, &err);
+    if (st == IC_OK && fflush(stdout) == 0)
+        return 0;
+    fprintf(stderr, "intercurve: cannot write the output (%s)\n",
+            st == IC_ERR_NOMEM ? "out of memory" : "a write error");
+    return EXIT_COMPUTE;
+}
+
+int ic_cmd_point(int argc, char **argv)
+{
+    const char *file;
+    ic_cli_value v[NOPTIONS];
+    int rc = ic_cli_parse(&POINT, argc, argv, &file, v);
+    if (rc != 0)
+        return rc == IC_CLI_HELP ? 0 : rc;
+    const int by_params = v[OPT_PARAMS].given;
+    if (!by_params && v[OPT_AT].count != 3) {
+        fprintf(stderr, "intercurve point: --at needs three coordinates X,Y,Z, got %d\n",
+                v[OPT_AT].count);
         return EXIT_INPUT;
     }
-    int rc = EXIT_INPUT;
-    double values[4];
-    const int count = ic_cli_parse_list(values, at_text ? 3 : 4, at_text ? at_text : params_text,
-                                        at_text ? "--at" : "--params");
-    if (count < 0)
-        goto cleanup;
-    if (at_text && count != 3) {
-        fprintf(stderr, "intercurve point: --at needs three coordinates X,Y,Z, got %d\n", count);
-        goto cleanup;
-    }
+    ic_local_options opt;
+    ic_local_defaults(&opt);
+    opt.point_tol = v[OPT_POINT_TOL].real;
+    ic_problem *p = NULL;
+    ic_pair *pair = NULL;
+    if ((rc = ic_cli_load_problem(&p, file, 0)) != 0)
+        return rc;
+    const char *name = ic_cli_file_name(file);
+    ic_error err;
+    ic_error_clear(&err);
     const int self = ic_problem_is_self(p);
     if (ic_pair_new(&pair, ic_problem_surface(p, 0), self ? NULL : ic_problem_surface(p, 1),
                     &err) != IC_OK) {
-        ic_cli_print_error(file, &err);
+        ic_cli_print_error(name, &err);
+        rc = EXIT_INPUT;
         goto cleanup;
     }
+    const ic_cli_value *where = &v[by_params ? OPT_PARAMS : OPT_AT];
     ic_local_point pt;
-    rc = locate_point(file, pair, &pt, values, count, !at_text, &opt);
-    if (rc != 0)
-        goto cleanup;
-    rc = EXIT_INPUT;
-    ic_local_result res;
-    ic_status st = ic_local_apparatus(pair, &res, &pt, order, (ic_method)method, &opt, &err);
-    if (st != IC_OK) {
-        ic_cli_print_error(file, &err);
-        rc = st == IC_ERR_INVALID ? EXIT_INPUT : EXIT_COMPUTE;
-        goto cleanup;
-    }
-    if (strcmp(format, "text") == 0) {
-        print_text(&res);
-        rc = fflush(stdout) == 0 ? 0 : EXIT_COMPUTE;
-    } else {
-        rc = ic_json_print(result_json(&res, pair, order)) == 0 ? 0 : EXIT_COMPUTE;
-    }
+    rc = locate_point(name, pair, &pt, where->list, where->count, by_params, &opt);
+    if (rc == 0)
+        rc = print_point(name, pair, &pt, v, &opt);
 cleanup:
     ic_pair_free(pair);
     ic_problem_free(p);

@@ -1,5 +1,5 @@
 /* The intercurve command: dispatch to the subcommands. */
-#include "cli.h"
+#include "cli/cli.h"
 
 #include <string.h>
 
@@ -22,7 +22,9 @@ static const char USAGE[] =
     "  intercurve eval examples/viviani.json --surface sphere --at 0.3,0.4\n"
     "  intercurve point examples/viviani.json --at 1.5,0.8660254037844386,1\n"
     "\n"
-    "'intercurve COMMAND --help' describes a command. Exit status: 0 success,\n"
+    "'intercurve COMMAND --help' describes a command and its options (docs/cli.md\n"
+    "lists them all). PROBLEM.json may be - for standard input; an option's value\n"
+    "follows it or an '=' (--order 3, --order=3). Exit status: 0 success,\n"
     "1 wrong input (the message says what and where), 2 the computation cannot be done.\n";
 
 int main(int argc, char **argv)

@@ -1,6 +1,6 @@
 /* Loading a problem file and tracing it, for the commands that need the
  * whole intersection (trace, plot). */
-#include "cli.h"
+#include "cli/cli.h"
 
 #include <stdio.h>
 #include <unistd.h>
@@ -16,12 +16,12 @@ static void show_progress(void *user, const char *stage, long done, long total)
 int ic_cli_trace_file(const char *file, ic_trace_options *opt, ic_cli_traced *t)
 {
     memset(t, 0, sizeof *t);
+    const int rc = ic_cli_load_problem(&t->problem, file, 0);
+    if (rc != 0)
+        return rc;
     ic_error err;
     ic_error_clear(&err);
-    if (ic_problem_load(&t->problem, file, &err) != IC_OK) {
-        ic_cli_print_error(file, &err);
-        return EXIT_INPUT;
-    }
+    file = ic_cli_file_name(file);
     opt->has_box = ic_problem_box(t->problem, opt->box);
     const int self = ic_problem_is_self(t->problem);
     if (ic_pair_new(&t->pair, ic_problem_surface(t->problem, 0),

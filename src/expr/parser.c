@@ -95,6 +95,7 @@ static int parse_sum(parser *p);
 static int parse_call(parser *p, const function_info *f, int name_col)
 {
     int args[2], nargs = 0;
+    const int open_col = column(p);
     if (advance(p) < 0) /* past '(' */
         return -1;
     if (p->tok.kind != TOK_RPAREN) {
@@ -111,6 +112,10 @@ static int parse_call(parser *p, const function_info *f, int name_col)
                 return -1;
         }
     }
+    if (p->tok.kind == TOK_END) /* as for a parenthesis of parse_primary */
+        return ic_error_set(p->err, IC_ERR_PARSE, open_col,
+                            "unbalanced parentheses: this '(' is never closed"),
+               -1;
     if (p->tok.kind != TOK_RPAREN)
         return fail(p, "expected ',' or ')' in the arguments of a function");
     if (nargs != f->nargs)

@@ -387,7 +387,33 @@ static ic_status read_surface(ic_problem *p, int i, const cJSON *js, ic_error *e
                    "\"cylinder\", \"cone\", \"torus\" or \"ellipsoid\"");
 }
 
-static ic_status read_problem(ic_problem *p, const cJSON *root, ic_error *err)
+/* The "surfaces" array: two, or one for a self-intersection, or one
+ * alone where the flags allow it (a surface to evaluate). */
+static ic_status read_surfaces(ic_problem *p, const cJSON *js, unsigned flags, ic_error *err)
+{
+    const int n = cJSON_IsArray(js) ? cJSON_GetArraySize(js) : 0;
+    const int one_alone = (flags & IC_PROBLEM_ONE_SURFACE) && !p->self && n == 1;
+    const int want = p->self || one_alone ? 1 : 2;
+    if (!cJSON_IsArray(js) || n != want)
+        return invalid(err, "surfaces",
+                       p->self ? "a self-intersection problem (\"self\": true) has exactly one "
+                                 "surface"
+                       : (flags & IC_PROBLEM_ONE_SURFACE)
+                           ? "expected an array of one or two surfaces"
+                           : "expected an array of exactly two surfaces (or one with "
+                             "\"self\": true)");
+    for (int i = 0; i < want; i++) {
+        const ic_status st = read_surface(p, i, cJSON_GetArrayItem(js, i), err);
+        if (st != IC_OK)
+            return st;
+        p->nsurfaces++;
+    }
+    if (p->self && ic_surface_get_kind(p->surfaces[0]) != IC_PARAMETRIC)
+        return invalid(err, "surfaces[0]", "a self-intersection needs a parametric surface");
+    return IC_OK;
+}
+
+static ic_status read_problem(ic_problem *p, const cJSON *root, unsigned flags, ic_error *err)
 {
     static const char *const keys[] = {"title", "constants", "surfaces", "self", "box", NULL};
     if (!cJSON_IsObject(root))
@@ -410,20 +436,8 @@ static ic_status read_problem(ic_problem *p, const cJSON *root, ic_error *err)
     const cJSON *js = need(root, "surfaces", "(root)", err);
     if (!js)
         return IC_ERR_INVALID;
-    const int want = p->self ? 1 : 2;
-    if (!cJSON_IsArray(js) || cJSON_GetArraySize(js) != want)
-        return invalid(err, "surfaces",
-                       p->self ? "a self-intersection problem (\"self\": true) has exactly one "
-                                 "surface"
-                               : "expected an array of exactly two surfaces (or one with "
-                                 "\"self\": true)");
-    for (int i = 0; i < want; i++) {
-        if ((st = read_surface(p, i, cJSON_GetArrayItem(js, i), err)) != IC_OK)
-            return st;
-        p->nsurfaces++;
-    }
-    if (p->self && ic_surface_get_kind(p->surfaces[0]) != IC_PARAMETRIC)
-        return invalid(err, "surfaces[0]", "a self-intersection needs a parametric surface");
+    if ((st = read_surfaces(p, js, flags, err)) != IC_OK)
+        return st;
     const cJSON *jb = cJSON_GetObjectItemCaseSensitive(root, "box");
     if (jb) {
         if (!cJSON_IsArray(jb) || cJSON_GetArraySize(jb) != 3)
@@ -484,7 +498,9 @@ static ic_status parse_document(cJSON **root, const char *json, size_t len, ic_e
     return st;
 }
 
-ic_status ic_problem_parse(ic_problem **out, const char *json, size_t len, ic_error *err)
+/* ic_problem_parse with flags. */
+static ic_status parse_problem(ic_problem **out, const char *json, size_t len, unsigned flags,
+                               ic_error *err)
 {
     *out = NULL;
     ic_error_clear(err);
@@ -497,7 +513,7 @@ ic_status ic_problem_parse(ic_problem **out, const char *json, size_t len, ic_er
         cJSON_Delete(root);
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory reading a problem");
     }
-    st = read_problem(p, root, err);
+    st = read_problem(p, root, flags, err);
     cJSON_Delete(root);
     if (st != IC_OK) {
         ic_problem_free(p);
@@ -505,6 +521,33 @@ ic_status ic_problem_parse(ic_problem **out, const char *json, size_t len, ic_er
     }
     *out = p;
     return IC_OK;
+}
+
+ic_status ic_problem_parse(ic_problem **out, const char *json, size_t len, ic_error *err)
+{
+    return parse_problem(out, json, len, 0, err);
+}
+
+ic_status ic_problem_read(ic_problem **out, FILE *f, const char *name, unsigned flags,
+                          ic_error *err)
+{
+    *out = NULL;
+    ic_error_clear(err);
+    char *buf = malloc(IC_PROBLEM_MAX_FILE + 1);
+    if (!buf)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory reading %s", name);
+    /* one byte more than allowed tells a file that is too large */
+    size_t len = fread(buf, 1, IC_PROBLEM_MAX_FILE + 1, f);
+    ic_status st;
+    if (ferror(f))
+        st = ic_error_set(err, IC_ERR_INVALID, 0, "cannot read %s", name);
+    else if (len > IC_PROBLEM_MAX_FILE)
+        st = ic_error_set(err, IC_ERR_INVALID, 0, "%s is larger than %d bytes", name,
+                          IC_PROBLEM_MAX_FILE);
+    else
+        st = parse_problem(out, buf, len, flags, err);
+    free(buf);
+    return st;
 }
 
 ic_status ic_problem_load(ic_problem **out, const char *filename, ic_error *err)
@@ -515,23 +558,8 @@ ic_status ic_problem_load(ic_problem **out, const char *filename, ic_error *err)
     if (!f)
         return ic_error_set(err, IC_ERR_INVALID, 0, "cannot open %s: %s", filename,
                             strerror(errno));
-    char *buf = malloc(IC_PROBLEM_MAX_FILE + 1);
-    if (!buf) {
-        fclose(f);
-        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory reading %s", filename);
-    }
-    size_t len = fread(buf, 1, IC_PROBLEM_MAX_FILE + 1, f);
-    const int failed = ferror(f);
+    const ic_status st = ic_problem_read(out, f, filename, 0, err);
     fclose(f);
-    ic_status st;
-    if (failed)
-        st = ic_error_set(err, IC_ERR_INVALID, 0, "cannot read %s", filename);
-    else if (len > IC_PROBLEM_MAX_FILE)
-        st = ic_error_set(err, IC_ERR_INVALID, 0, "%s is larger than %d bytes", filename,
-                          IC_PROBLEM_MAX_FILE);
-    else
-        st = ic_problem_parse(out, buf, len, err);
-    free(buf);
     return st;
 }
 

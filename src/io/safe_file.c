@@ -5,6 +5,8 @@
 
 #include "io/safe_file.h"
 
+#include "intercurve/writers.h"
+
 #include <errno.h>
 #include <fcntl.h>
 #include <stdint.h>
@@ -252,7 +254,7 @@ void ic_safe_abort(ic_safe_file *sf)
         release(sf);
 }
 
-ic_status ic_safe_write_stream(const char *path, int (*fill)(FILE *f, void *ctx), void *ctx,
+ic_status ic_write_file_atomic(const char *path, ic_file_writer writer, void *user,
                                ic_error *err)
 {
     char *text = NULL;
@@ -260,14 +262,18 @@ ic_status ic_safe_write_stream(const char *path, int (*fill)(FILE *f, void *ctx)
     FILE *mem = open_memstream(&text, &len);
     if (!mem)
         return nomem(err, path);
+    ic_status st = writer(mem, user, err);
     /* a memory stream fails only for want of memory */
-    const int filled = fill(mem, ctx) == 0 && !ferror(mem);
-    if (fclose(mem) != 0 || !filled) {
+    if (st == IC_ERR_IO || (st == IC_OK && ferror(mem)))
+        st = nomem(err, path);
+    if (fclose(mem) != 0 && st == IC_OK)
+        st = nomem(err, path);
+    if (st != IC_OK) { /* the writer's own reason; the target is left as it was */
         free(text);
-        return nomem(err, path);
+        return st;
     }
     ic_safe_file *sf;
-    ic_status st = ic_safe_open(&sf, path, err);
+    st = ic_safe_open(&sf, path, err);
     if (st == IC_OK)
         st = ic_safe_write(sf, text, len, err);
     if (st == IC_OK)

@@ -35,10 +35,7 @@ ic_status ic_safe_commit(ic_safe_file *sf, ic_error *err);
 /* Gives up and frees sf: closes it and removes the temporary (NULL: nothing). */
 void ic_safe_abort(ic_safe_file *sf);
 
-/* Writes what fill(stream, ctx) prints into `path`. The text is gathered in
- * memory first, so that a write error is seen where it happens, with its
- * reason; fill returns 0 on success. */
-ic_status ic_safe_write_stream(const char *path, int (*fill)(FILE *f, void *ctx), void *ctx,
-                               ic_error *err);
+/* ic_write_file_atomic (intercurve/writers.h) writes whole documents the
+ * same way, gathered in memory first. */
 
 #endif

@@ -12,6 +12,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#define LEGEND_FONT 11.0 /* px */
+#define LEGEND_MORE "\xe2\x80\xa6 and %d more"
+
 static int cmp_qsort(const void *a, const void *b)
 {
     const double x = *(const double *)a, y = *(const double *)b;
@@ -160,6 +163,59 @@ static void panel(cairo_t *cr, const ic_trace_result *tr, int which, double x, d
               0, 1);
 }
 
+/* One legend entry: a swatch and "curve k"; its width with the space after. */
+static double legend_entry(cairo_t *cr, int c, double x, double y, int draw)
+{
+    char buf[32];
+    snprintf(buf, sizeof buf, "curve %d", c + 1);
+    if (draw) {
+        double rgb[3];
+        plot_curve_color(c, rgb);
+        cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
+        cairo_set_line_width(cr, 3);
+        cairo_move_to(cr, x, y);
+        cairo_line_to(cr, x + 16, y);
+        cairo_stroke(cr);
+        cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+        plot_text(cr, x + 20, y, LEGEND_FONT, 0, buf, 0, 0.5);
+    }
+    return 30 + plot_text_width(cr, LEGEND_FONT, 0, buf);
+}
+
+int plot_legend_entries(cairo_t *cr, int ncurves, double width)
+{
+    int shown = ncurves < PLOT_CURVE_COLORS ? ncurves : PLOT_CURVE_COLORS;
+    for (; shown > 0; shown--) {
+        double used = 0;
+        for (int c = 0; c < shown; c++)
+            used += legend_entry(cr, c, 0, 0, 0);
+        if (shown < ncurves) {
+            char buf[48];
+            snprintf(buf, sizeof buf, LEGEND_MORE, ncurves - shown);
+            used += plot_text_width(cr, LEGEND_FONT, 0, buf);
+        }
+        if (used <= width)
+            break;
+    }
+    return shown;
+}
+
+/* The curve legend from (x, y), at most `width` long: the first curves
+ * while they fit, then how many more there are (or only how many). */
+static void draw_curve_legend(cairo_t *cr, int nc, double x, double y, double width)
+{
+    const int shown = plot_legend_entries(cr, nc, width);
+    for (int c = 0; c < shown; c++)
+        x += legend_entry(cr, c, x, y, 1);
+    if (shown == nc)
+        return;
+    char buf[48];
+    snprintf(buf, sizeof buf, shown ? LEGEND_MORE : "%d curves", shown ? nc - shown : nc);
+    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+    if (plot_text_width(cr, LEGEND_FONT, 0, buf) <= width)
+        plot_text(cr, x, y, LEGEND_FONT, 0, buf, 0, 0.5);
+}
+
 void plot_draw_chart(cairo_t *cr, const ic_trace_result *tr, double x, double y, double w, double h)
 {
     double smax = 0;
@@ -185,20 +241,5 @@ void plot_draw_chart(cairo_t *cr, const ic_trace_result *tr, double x, double y,
     panel(cr, tr, 1, x + left, y + 30 + ph + 50, w - left - 15, ph, smax, kscale);
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
     plot_text(cr, x + left + 0.5 * (w - left - 15), y + h - 28, 12, 0, "arc length s", 0.5, 0.5);
-    /* the curve legend */
-    double lx = x + left;
-    for (int c = 0; c < nc && c < 8; c++) {
-        double rgb[3];
-        char buf[32];
-        plot_curve_color(c, rgb);
-        cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
-        cairo_set_line_width(cr, 3);
-        cairo_move_to(cr, lx, y + h - 5);
-        cairo_line_to(cr, lx + 16, y + h - 5);
-        cairo_stroke(cr);
-        snprintf(buf, sizeof buf, "curve %d", c + 1);
-        cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-        plot_text(cr, lx + 20, y + h - 5, 11, 0, buf, 0, 0.5);
-        lx += 30 + plot_text_width(cr, 11, 0, buf);
-    }
+    draw_curve_legend(cr, nc, x + left, y + h - 5, w - left - 15);
 }

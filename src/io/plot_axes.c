@@ -24,6 +24,7 @@
 #define PARALLEL_SIN                                                                               \
     0.35              /* sine of the angle below which ticks along the box would run               \
                          along the axis on the screen: they go perpendicular instead */
+#define LEVEL_PX 1e-6 /* px, edges closer than this on the screen are level */
 #define NAME_PUSH 6.0 /* px, the step that moves a name off another */
 #define FIT_ROUNDS 6
 #define MIN_FIT_PX 20.0 /* px, the smallest rectangle the box is fitted into */
@@ -42,22 +43,24 @@ static void project(const plot_camera *cam, const double *p, double *x, double *
 }
 
 /* x and y: the bottom edge lowest on the screen; z: the vertical edge
- * farthest left. */
+ * farthest left; of edges level with each other (seen edge-on), the one
+ * nearest the viewer, so that x and y meet at the near corner and their
+ * labels do not pile up along one line. */
 static void pick_edge(const plot_camera *cam, const double box[3][2], int ax, double corner[3])
 {
     const int o1 = (ax + 1) % 3, o2 = (ax + 2) % 3;
-    double best = -INFINITY;
+    double best = -INFINITY, best_depth = INFINITY;
     for (int e = 0; e < 4; e++) {
-        double p[3], sx, sy;
+        double p[3], sx, sy, depth;
         p[ax] = 0.5 * (box[ax][0] + box[ax][1]);
         p[o1] = box[o1][e & 1];
         p[o2] = box[o2][(e >> 1) & 1];
         if (ax < 2 && p[2] != box[2][0])
             continue;
-        project(cam, p, &sx, &sy);
+        plot_camera_project(cam, p, &sx, &sy, &depth);
         const double score = ax < 2 ? sy : -sx;
-        if (score > best)
-            best = score, memcpy(corner, p, sizeof p);
+        if (score > best + LEVEL_PX || (score > best - LEVEL_PX && depth < best_depth))
+            best = score, best_depth = depth, memcpy(corner, p, sizeof p);
     }
 }
 
@@ -204,7 +207,12 @@ static double place_ticks(plot_axes *a, cairo_t *cr, const plot_camera *cam, con
         p[ax] = t[i].value;
         project(cam, p, &t[i].x0, &t[i].y0);
         t[i].x1 = t[i].x0 + TICK_PX * e->dx, t[i].y1 = t[i].y0 + TICK_PX * e->dy;
-        const double w = t[i].width, off = LABEL_GAP + support(w, TICK_FONT, e->dx, e->dy);
+        /* beyond the tick's end, and clear of the axis' line on the screen
+         * (the labels go off at a slant where d is not perpendicular) */
+        const double w = t[i].width, slant = fabs(e->dx * -e->ay + e->dy * e->ax);
+        const double off =
+            fmax(LABEL_GAP + support(w, TICK_FONT, e->dx, e->dy),
+                 (LABEL_GAP + support(w, TICK_FONT, -e->ay, e->ax)) / slant - TICK_PX);
         t[i].label = centred(t[i].x1 + off * e->dx, t[i].y1 + off * e->dy, w, TICK_FONT);
         t[i].shown = 1;
         reach = fmax(reach, TICK_PX + off + support(w, TICK_FONT, e->dx, e->dy));

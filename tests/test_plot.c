@@ -183,6 +183,97 @@ static void test_no_intersection(const char *tmpdir)
     ic_surface_free(B);
 }
 
+/* No ink within MARGIN_PX of the PNG's left and right edges: nothing was
+ * drawn across them (a label or legend clipped by the picture's edge). */
+enum { MARGIN_PX = 4 };
+static void check_margins(const char *path, const char *name)
+{
+    cairo_surface_t *s = cairo_image_surface_create_from_png(path);
+    if (cairo_surface_status(s) != CAIRO_STATUS_SUCCESS) {
+        CHECK(0, "%s: the PNG does not load", name);
+        cairo_surface_destroy(s);
+        return;
+    }
+    cairo_surface_flush(s);
+    const int w = cairo_image_surface_get_width(s), h = cairo_image_surface_get_height(s);
+    const unsigned char *data = cairo_image_surface_get_data(s);
+    const int stride = cairo_image_surface_get_stride(s);
+    int left = 0, right = 0;
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < MARGIN_PX; x++) {
+            const unsigned char *p = data + (size_t)y * stride + 4 * (size_t)x;
+            const unsigned char *q = data + (size_t)y * stride + 4 * (size_t)(w - 1 - x);
+            left += p[0] < 235 || p[1] < 235 || p[2] < 235;
+            right += q[0] < 235 || q[1] < 235 || q[2] < 235;
+        }
+    CHECK(left == 0 && right == 0, "%s: %d pixels drawn in the left margin, %d in the right", name,
+          left, right);
+    cairo_surface_destroy(s);
+}
+
+/* Two implicit surfaces in a box, both called surface_name, traced and
+ * drawn from the view az, el into tmpdir/name.png at the default size; the
+ * margins checked. */
+static void plot_margins(const char *tmpdir, const char *name, const char *fa, const char *fb,
+                         const double box[3][2], double az, double el, const char *surface_name)
+{
+    ic_surface *A = NULL, *B = NULL;
+    ic_pair *pair = NULL;
+    ic_trace_result *res = NULL;
+    ic_trace_options to;
+    ic_trace_defaults(&to);
+    to.has_box = 1;
+    memcpy(to.box, box, sizeof to.box);
+    ic_error err;
+    if (ic_surface_new_implicit(&A, fa, NULL, 0, &err) != IC_OK ||
+        ic_surface_new_implicit(&B, fb, NULL, 0, &err) != IC_OK ||
+        ic_pair_new(&pair, A, B, &err) != IC_OK || ic_trace(&res, pair, &to, &err) != IC_OK) {
+        CHECK(0, "%s: trace: %s", name, err.message);
+    } else {
+        ic_plot_scene scene;
+        memset(&scene, 0, sizeof scene);
+        scene.title = name;
+        scene.has_box = 1;
+        memcpy(scene.box, box, sizeof scene.box);
+        scene.nsurfaces = 2;
+        scene.surfaces[0] = A, scene.surfaces[1] = B;
+        scene.names[0] = scene.names[1] = surface_name;
+        scene.trace = res;
+        ic_plot_options opt;
+        ic_plot_defaults(&opt);
+        opt.azimuth = az, opt.elevation = el; /* the default size, 1400 x 800 */
+        char path[512];
+        snprintf(path, sizeof path, "%s/%s.png", tmpdir, name);
+        CHECK(ic_plot_write(path, &scene, &opt, &err) == IC_OK, "%s: plot: %s", name, err.message);
+        check_margins(path, name);
+    }
+    ic_trace_result_free(res);
+    ic_pair_free(pair);
+    ic_surface_free(A);
+    ic_surface_free(B);
+}
+
+/* Pictures whose labels or legend ran across the picture's edge (issue 11):
+ * the torus and sphere seen from 20, 40 (z labels at the left edge), thin
+ * boxes (their labels at the left edge), eighteen curves (the chart's
+ * legend across the right edge) on surfaces with long names (the 3D
+ * legend). */
+static void test_margins(const char *tmpdir)
+{
+    const double torus_box[3][2] = {{-3.5, 3.5}, {-3.5, 3.5}, {-1.5, 1.5}};
+    plot_margins(tmpdir, "torus-sphere-20-40", "(x^2 + y^2 + z^2 + 3)^2 - 16*(x^2 + y^2)",
+                 "x^2 + y^2 + z^2 - 1", torus_box, 20, 40, "torus");
+    const double thin_z[3][2] = {{-1.5, 1.5}, {-1.5, 1.5}, {-0.01, 0.01}};
+    plot_margins(tmpdir, "thin-z", "x^2 + y^2 + z^2 - 1", "z - 0.001", thin_z, 35, 25, "sphere");
+    const double thin_x[3][2] = {{-0.01, 0.01}, {-1.5, 1.5}, {-1.5, 1.5}};
+    plot_margins(tmpdir, "thin-x", "x^2 + y^2 + z^2 - 1", "x - 0.001", thin_x, 35, 25, "sphere");
+    const double egg_box[3][2] = {{-4, 4}, {-4, 4}, {-1, 1}};
+    /* and names that make the 3D legend longer than the picture is wide */
+    plot_margins(tmpdir, "eighteen-loops", "z", "z - sin(2*x)*sin(2*y) + 0.5", egg_box, 35, 25,
+                 "a surface whose name is long enough that the legend with two of it and "
+                 "the frame colours would run wider than the picture, 1400 pixels");
+}
+
 /* Bad requests: an unknown extension, a size out of range, a directory
  * that does not exist (IC_ERR_IO, and no file left behind). */
 static void test_errors(const char *tmpdir)
@@ -223,6 +314,7 @@ int main(int argc, char **argv)
     for (size_t i = 0; i < sizeof EXAMPLES / sizeof EXAMPLES[0]; i++)
         plot_example(dir, tmpdir, EXAMPLES[i]);
     test_no_intersection(tmpdir);
+    test_margins(tmpdir);
     test_errors(tmpdir);
     xmlCleanupParser();
     return harness_finish("test_plot");

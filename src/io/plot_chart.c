@@ -12,6 +12,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#define LEGEND_FONT 11.0 /* px */
+#define LEGEND_MORE "\xe2\x80\xa6 and %d more"
+
 static int cmp_qsort(const void *a, const void *b)
 {
     const double x = *(const double *)a, y = *(const double *)b;
@@ -153,15 +156,67 @@ static void panel(cairo_t *cr, const ic_trace_result *tr, int which, double x, d
     cairo_rectangle(cr, x, y, w, h);
     cairo_stroke(cr);
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-    ic_plot_text(
-        cr, x, y - 8, 13, 1,
-        which ? (clipped ? "torsion \xcf\x84 (clipped to the 2-98% range)" : "torsion \xcf\x84")
-              : (clipped ? "curvature \xce\xba (clipped)" : "curvature \xce\xba"),
-        0, 1);
+    ic_plot_text(cr, x, y - 8, 13, 1,
+              which
+                  ? (clipped ? "torsion \xcf\x84 (clipped to the 2-98% range)" : "torsion \xcf\x84")
+                  : (clipped ? "curvature \xce\xba (clipped)" : "curvature \xce\xba"),
+              0, 1);
 }
 
-void ic_plot_draw_chart(cairo_t *cr, const ic_trace_result *tr, double x, double y, double w,
-                        double h)
+/* One legend entry: a swatch and "curve k"; its width with the space after. */
+static double legend_entry(cairo_t *cr, int c, double x, double y, int draw)
+{
+    char buf[32];
+    snprintf(buf, sizeof buf, "curve %d", c + 1);
+    if (draw) {
+        double rgb[3];
+        ic_plot_curve_color(c, rgb);
+        cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
+        cairo_set_line_width(cr, 3);
+        cairo_move_to(cr, x, y);
+        cairo_line_to(cr, x + 16, y);
+        cairo_stroke(cr);
+        cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+        ic_plot_text(cr, x + 20, y, LEGEND_FONT, 0, buf, 0, 0.5);
+    }
+    return 30 + ic_plot_text_width(cr, LEGEND_FONT, 0, buf);
+}
+
+int ic_plot_legend_entries(cairo_t *cr, int ncurves, double width)
+{
+    int shown = ncurves < PLOT_CURVE_COLORS ? ncurves : PLOT_CURVE_COLORS;
+    for (; shown > 0; shown--) {
+        double used = 0;
+        for (int c = 0; c < shown; c++)
+            used += legend_entry(cr, c, 0, 0, 0);
+        if (shown < ncurves) {
+            char buf[48];
+            snprintf(buf, sizeof buf, LEGEND_MORE, ncurves - shown);
+            used += ic_plot_text_width(cr, LEGEND_FONT, 0, buf);
+        }
+        if (used <= width)
+            break;
+    }
+    return shown;
+}
+
+/* The curve legend from (x, y), at most `width` long: the first curves
+ * while they fit, then how many more there are (or only how many). */
+static void draw_curve_legend(cairo_t *cr, int nc, double x, double y, double width)
+{
+    const int shown = ic_plot_legend_entries(cr, nc, width);
+    for (int c = 0; c < shown; c++)
+        x += legend_entry(cr, c, x, y, 1);
+    if (shown == nc)
+        return;
+    char buf[48];
+    snprintf(buf, sizeof buf, shown ? LEGEND_MORE : "%d curves", shown ? nc - shown : nc);
+    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+    if (ic_plot_text_width(cr, LEGEND_FONT, 0, buf) <= width)
+        ic_plot_text(cr, x, y, LEGEND_FONT, 0, buf, 0, 0.5);
+}
+
+void ic_plot_draw_chart(cairo_t *cr, const ic_trace_result *tr, double x, double y, double w, double h)
 {
     double smax = 0;
     const int nc = tr ? ic_trace_result_num_curves(tr) : 0;
@@ -169,8 +224,7 @@ void ic_plot_draw_chart(cairo_t *cr, const ic_trace_result *tr, double x, double
         smax = fmax(smax, ic_trace_result_curve(tr, c)->length);
     if (nc == 0 || !(smax > 0)) {
         cairo_set_source_rgb(cr, 0.4, 0.4, 0.4);
-        ic_plot_text(cr, x + 0.5 * w, y + 0.5 * h, 13, 0, "no curve: no curvature to chart", 0.5,
-                     0.5);
+        ic_plot_text(cr, x + 0.5 * w, y + 0.5 * h, 13, 0, "no curve: no curvature to chart", 0.5, 0.5);
         return;
     }
     /* two panels, each with its s ticks below it; the axis title and the
@@ -187,20 +241,5 @@ void ic_plot_draw_chart(cairo_t *cr, const ic_trace_result *tr, double x, double
     panel(cr, tr, 1, x + left, y + 30 + ph + 50, w - left - 15, ph, smax, kscale);
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
     ic_plot_text(cr, x + left + 0.5 * (w - left - 15), y + h - 28, 12, 0, "arc length s", 0.5, 0.5);
-    /* the curve legend */
-    double lx = x + left;
-    for (int c = 0; c < nc && c < 8; c++) {
-        double rgb[3];
-        char buf[32];
-        ic_plot_curve_color(c, rgb);
-        cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
-        cairo_set_line_width(cr, 3);
-        cairo_move_to(cr, lx, y + h - 5);
-        cairo_line_to(cr, lx + 16, y + h - 5);
-        cairo_stroke(cr);
-        snprintf(buf, sizeof buf, "curve %d", c + 1);
-        cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-        ic_plot_text(cr, lx + 20, y + h - 5, 11, 0, buf, 0, 0.5);
-        lx += 30 + ic_plot_text_width(cr, 11, 0, buf);
-    }
+    draw_curve_legend(cr, nc, x + left, y + h - 5, w - left - 15);
 }

@@ -26,7 +26,7 @@ typedef struct {
     plot_mesh mesh;
     double box[3][2];
     double kmin, kmax; /* the colour range of the curvature */
-    double arrow;      /* arrow length in space */
+    double *arrow;     /* per curve: the arrows' length in space */
     double light[3];
 } ctx3d;
 
@@ -103,7 +103,7 @@ static void draw_arrow(ctx3d *c, int curve, int k, int which)
     const double *col = which == 0 ? ic_plot_rgb_t : which == 1 ? ic_plot_rgb_n : ic_plot_rgb_b;
     double tip[3], x0, y0, x1, y1;
     for (int i = 0; i < 3; i++)
-        tip[i] = p->xyz[i] + c->arrow * v[i];
+        tip[i] = p->xyz[i] + c->arrow[curve] * v[i];
     ic_plot_camera_project(&c->cam, p->xyz, &x0, &y0, NULL);
     ic_plot_camera_project(&c->cam, tip, &x1, &y1, NULL);
     cairo_set_source_rgb(c->cr, col[0], col[1], col[2]);
@@ -121,126 +121,6 @@ static void draw_arrow(ctx3d *c, int curve, int k, int which)
     cairo_line_to(c->cr, x1 - hl * ux + hw * uy, y1 - hl * uy - hw * ux);
     cairo_close_path(c->cr);
     cairo_fill(c->cr);
-}
-
-/* The box's edges, and ticks along the three edges from its lowest corner. */
-static void draw_axes(ctx3d *c)
-{
-    cairo_t *cr = c->cr;
-    cairo_set_source_rgb(cr, 0.75, 0.75, 0.75);
-    cairo_set_line_width(cr, 0.8);
-    for (int e = 0; e < 12; e++) { /* edges: axis e / 4, the other two bits e % 4 */
-        const int ax = e / 4, o1 = (ax + 1) % 3, o2 = (ax + 2) % 3;
-        double a[3], b[3], x0, y0, x1, y1;
-        a[ax] = c->box[ax][0], b[ax] = c->box[ax][1];
-        a[o1] = b[o1] = c->box[o1][e & 1];
-        a[o2] = b[o2] = c->box[o2][(e >> 1) & 1];
-        ic_plot_camera_project(&c->cam, a, &x0, &y0, NULL);
-        ic_plot_camera_project(&c->cam, b, &x1, &y1, NULL);
-        cairo_move_to(cr, x0, y0);
-        cairo_line_to(cr, x1, y1);
-        cairo_stroke(cr);
-    }
-    static const char *const NAMES[3] = {"x", "y", "z"};
-    double size = 0;
-    for (int k = 0; k < 3; k++)
-        size = fmax(size, c->box[k][1] - c->box[k][0]);
-    for (int ax = 0; ax < 3; ax++) {
-        /* the edge to label: x and y along the bottom, the one lowest on the
-         * screen; z the vertical edge farthest left. Ticks point away from
-         * the box along the coordinate `off`. */
-        const int o1 = (ax + 1) % 3, o2 = (ax + 2) % 3;
-        double best = -INFINITY, corner[3] = {0, 0, 0};
-        int off = o1;
-        double sign = -1;
-        for (int e = 0; e < 4; e++) {
-            double p[3];
-            p[ax] = 0.5 * (c->box[ax][0] + c->box[ax][1]);
-            p[o1] = c->box[o1][e & 1];
-            p[o2] = c->box[o2][(e >> 1) & 1];
-            if (ax < 2 && p[2] != c->box[2][0])
-                continue;
-            double sx, sy;
-            ic_plot_camera_project(&c->cam, p, &sx, &sy, NULL);
-            const double score = ax < 2 ? sy : -sx;
-            if (score > best) {
-                best = score;
-                memcpy(corner, p, sizeof p);
-                /* x, y: away along the other horizontal axis; z: along x or
-                 * y, whichever moves left on the screen */
-                const int o = ax < 2 ? (ax == 0 ? 1 : 0) : 0;
-                off = o;
-                sign = p[o] == c->box[o][0] ? -1 : 1;
-                if (ax == 2) {
-                    const int o3 = 1;
-                    double q[3], r[3], x0, y0, x1, y1, x2, y2;
-                    memcpy(q, p, sizeof p);
-                    memcpy(r, p, sizeof p);
-                    q[0] += (p[0] == c->box[0][0] ? -1 : 1) * size;
-                    r[o3] += (p[o3] == c->box[o3][0] ? -1 : 1) * size;
-                    ic_plot_camera_project(&c->cam, p, &x0, &y0, NULL);
-                    ic_plot_camera_project(&c->cam, q, &x1, &y1, NULL);
-                    ic_plot_camera_project(&c->cam, r, &x2, &y2, NULL);
-                    if (x2 < x1) {
-                        off = o3;
-                        sign = p[o3] == c->box[o3][0] ? -1 : 1;
-                    }
-                }
-            }
-        }
-        double first, step;
-        /* about one tick per 70 px of the axis on the screen (2 to 5), so
-         * that the labels of a foreshortened axis do not run together */
-        double e0[3], e1[3], sx0, sy0, sx1, sy1;
-        memcpy(e0, corner, sizeof e0);
-        memcpy(e1, corner, sizeof e1);
-        e0[ax] = c->box[ax][0], e1[ax] = c->box[ax][1];
-        ic_plot_camera_project(&c->cam, e0, &sx0, &sy0, NULL);
-        ic_plot_camera_project(&c->cam, e1, &sx1, &sy1, NULL);
-        const double px = hypot(sx1 - sx0, sy1 - sy0);
-        const int want = px < 140 ? 2 : px > 350 ? 5 : (int)(px / 70);
-        const int n = ic_plot_ticks(c->box[ax][0], c->box[ax][1], want, &first, &step);
-        cairo_set_source_rgb(cr, 0.25, 0.25, 0.25);
-        cairo_set_line_width(cr, 1.0);
-        for (int i = 0; i < n; i++) {
-            const double v = first + i * step;
-            double a[3], b[3], l[3];
-            memcpy(a, corner, sizeof a);
-            a[ax] = v;
-            memcpy(b, a, sizeof a);
-            memcpy(l, a, sizeof a);
-            b[off] += sign * 0.02 * size;
-            l[off] += sign * 0.07 * size;
-            double x0, y0, x1, y1, xl, yl;
-            ic_plot_camera_project(&c->cam, a, &x0, &y0, NULL);
-            ic_plot_camera_project(&c->cam, b, &x1, &y1, NULL);
-            ic_plot_camera_project(&c->cam, l, &xl, &yl, NULL);
-            cairo_move_to(cr, x0, y0);
-            cairo_line_to(cr, x1, y1);
-            cairo_stroke(cr);
-            char buf[32];
-            ic_plot_tick_label(buf, sizeof buf, v, step);
-            ic_plot_text(cr, xl, yl, 11, 0, buf, 0.5, 0.5);
-        }
-        /* the axis name beyond the tick labels of the axis' middle, 26 px
-         * further along the screen direction from the axis to the labels */
-        double a[3], l[3], xa, ya, xl, yl;
-        memcpy(a, corner, sizeof a);
-        a[ax] = 0.5 * (c->box[ax][0] + c->box[ax][1]);
-        memcpy(l, a, sizeof a);
-        l[off] += sign * 0.07 * size;
-        ic_plot_camera_project(&c->cam, a, &xa, &ya, NULL);
-        ic_plot_camera_project(&c->cam, l, &xl, &yl, NULL);
-        const double dx = xl - xa, dy = yl - ya, dl = hypot(dx, dy);
-        if (dl > 1e-9)
-            xl += 26 * dx / dl, yl += 26 * dy / dl;
-        if (ax == 2) { /* z: above the top of its edge */
-            a[2] = c->box[2][1];
-            ic_plot_camera_project(&c->cam, a, &xl, &yl, NULL);
-            yl -= 18;
-        }
-        ic_plot_text(cr, xl, yl, 14, 1, NAMES[ax], 0.5, 0.5);
-    }
 }
 
 /* The vertical colour bar of the curvature at (x, y), height h. */
@@ -274,19 +154,46 @@ static void draw_colorbar(ctx3d *c, double x, double y, double h)
     ic_plot_text(cr, x + 8, y - 12, 12, 1, "curvature \xce\xba", 0.5, 1);
 }
 
-static void draw_legend(ctx3d *c, const ic_plot_scene *scene, double x, double y, int frames)
+/* The legend's label of surface s: "A: name", the name cut to at most
+ * `keep` bytes (at a character boundary) and "..." when it is cut. */
+static void surface_label(char *buf, size_t size, const ic_plot_scene *scene, int s, size_t keep)
+{
+    const char *name = scene->names[s] ? scene->names[s] : "";
+    size_t n = strlen(name);
+    if (n <= keep) {
+        snprintf(buf, size, "%c: %s", 'A' + s, name);
+        return;
+    }
+    while (keep > 0 && ((unsigned char)name[keep] & 0xC0) == 0x80)
+        keep--; /* not inside a UTF-8 sequence */
+    snprintf(buf, size, "%c: %.*s\xe2\x80\xa6", 'A' + s, (int)keep, name);
+}
+
+/* The surfaces' names (cut until the legend fits in `width`) and the frame
+ * colours, from (x, y). */
+static void draw_legend(ctx3d *c, const ic_plot_scene *scene, double x, double y, double width,
+                        int frames)
 {
     cairo_t *cr = c->cr;
+    const double frame_part = frames ? 3 * 40 : 0;
+    char buf[2][160];
+    for (size_t keep = sizeof buf[0];; keep = keep * 3 / 4) {
+        double used = frame_part;
+        for (int s = 0; s < scene->nsurfaces; s++) {
+            surface_label(buf[s], sizeof buf[s], scene, s, keep);
+            used += 30 + ic_plot_text_width(cr, 12, 0, buf[s]);
+        }
+        if (used <= width || keep == 0)
+            break;
+    }
     for (int s = 0; s < scene->nsurfaces; s++) {
         const double *col = ic_plot_rgb_surface[s];
         cairo_set_source_rgba(cr, col[0], col[1], col[2], 0.8);
         cairo_rectangle(cr, x, y - 6, 14, 12);
         cairo_fill(cr);
         cairo_set_source_rgb(cr, 0.15, 0.15, 0.15);
-        char buf[160];
-        snprintf(buf, sizeof buf, "%c: %s", 'A' + s, scene->names[s] ? scene->names[s] : "");
-        ic_plot_text(cr, x + 20, y, 12, 0, buf, 0, 0.5);
-        x += 30 + ic_plot_text_width(cr, 12, 0, buf);
+        ic_plot_text(cr, x + 20, y, 12, 0, buf[s], 0, 0.5);
+        x += 30 + ic_plot_text_width(cr, 12, 0, buf[s]);
     }
     static const char *const FRAME[3] = {"t", "n", "b"};
     const double *cols[3] = {ic_plot_rgb_t, ic_plot_rgb_n, ic_plot_rgb_b};
@@ -302,12 +209,8 @@ static void draw_legend(ctx3d *c, const ic_plot_scene *scene, double x, double y
     }
 }
 
-/* Label boxes placed so far, so that labels do not overlap. */
-typedef struct {
-    double x0, y0, x1, y1;
-} rect;
-
-static int overlaps(const rect *a, const rect *r, int n)
+/* Whether a overlaps one of the n label boxes placed so far. */
+static int overlaps(const plot_rect *a, const plot_rect *r, int n)
 {
     for (int i = 0; i < n; i++)
         if (a->x0 < r[i].x1 && r[i].x0 < a->x1 && a->y0 < r[i].y1 && r[i].y0 < a->y1)
@@ -318,7 +221,7 @@ static int overlaps(const rect *a, const rect *r, int n)
 static void draw_specials(ctx3d *c)
 {
     const int n = ic_trace_result_num_specials(c->trace);
-    rect *placed = calloc((size_t)n + 1, sizeof *placed);
+    plot_rect *placed = calloc((size_t)n + 1, sizeof *placed);
     if (!placed)
         return;
     int np = 0;
@@ -340,11 +243,11 @@ static void draw_specials(ctx3d *c)
         /* the first of eight places around the marker that is free */
         static const double DX[8] = {10, 10, -10, -10, 10, -10, 0, 0};
         static const double DY[8] = {-10, 10, -10, 10, 0, 0, -16, 16};
-        rect r = {0, 0, 0, 0};
+        plot_rect r = {0, 0, 0, 0};
         for (int k = 0; k < 8; k++) {
             const double lx = DX[k] >= 0 ? x + DX[k] : x + DX[k] - w;
             const double ly = DY[k] > 0 ? y + DY[k] : DY[k] < 0 ? y + DY[k] - h : y - h / 2;
-            r = (rect){lx - 2, ly - 2, lx + w + 2, ly + h + 2};
+            r = (plot_rect){lx - 2, ly - 2, lx + w + 2, ly + h + 2};
             if (!overlaps(&r, placed, np))
                 break;
         }
@@ -356,35 +259,6 @@ static void draw_specials(ctx3d *c)
         ic_plot_text(c->cr, r.x0 + 2, r.y0 + 2, 12, 0, label, 0, 0);
     }
     free(placed);
-}
-
-/* The box of the picture: the scene's, else around the parametric meshes
- * and the curves (an implicit surface is then meshed inside it). */
-static void picture_box(ctx3d *c, const ic_plot_scene *scene)
-{
-    if (scene->has_box) {
-        memcpy(c->box, scene->box, sizeof c->box);
-        return;
-    }
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (int i = 0; i < c->mesh.n; i++)
-        for (int v = 0; v < 3; v++)
-            for (int k = 0; k < 3; k++)
-                lo[k] = fmin(lo[k], c->mesh.t[i].v[v][k]),
-                hi[k] = fmax(hi[k], c->mesh.t[i].v[v][k]);
-    for (int ci = 0; c->trace && ci < ic_trace_result_num_curves(c->trace); ci++) {
-        const ic_trace_curve *cv = ic_trace_result_curve(c->trace, ci);
-        for (int p = 0; p < cv->npoints; p++)
-            for (int k = 0; k < 3; k++)
-                lo[k] = fmin(lo[k], cv->points[p].xyz[k]),
-                hi[k] = fmax(hi[k], cv->points[p].xyz[k]);
-    }
-    for (int k = 0; k < 3; k++) {
-        if (!(hi[k] >= lo[k]))
-            lo[k] = -1, hi[k] = 1;
-        const double m = 0.05 * fmax(hi[k] - lo[k], 1e-3);
-        c->box[k][0] = lo[k] - m, c->box[k][1] = hi[k] + m;
-    }
 }
 
 /* The points of the frames: n positions equally spaced in arc length over
@@ -419,118 +293,177 @@ static int frame_points(const ic_trace_result *tr, int n, int (*at)[2])
     return count;
 }
 
+/* The meshes: the parametric surfaces first (cut to the scene's box, or
+ * whole), then the region drawn, then the implicit surfaces inside it. */
+static ic_status make_meshes(ctx3d *c, const ic_plot_scene *scene, const ic_plot_options *opt,
+                             ic_error *err)
+{
+    const int implicit_cells = opt->mesh / 2;
+    ic_status st = IC_OK;
+    for (int s = 0; s < scene->nsurfaces && st == IC_OK; s++)
+        if (ic_surface_get_kind(scene->surfaces[s]) == IC_PARAMETRIC)
+            st = ic_plot_mesh_surface(&c->mesh, scene->surfaces[s], s,
+                                   scene->has_box ? scene->box : NULL, opt->mesh, err);
+    if (st == IC_OK)
+        st = ic_plot_region(c->box, scene, &c->mesh, implicit_cells > 4 ? implicit_cells : 4, err);
+    for (int s = 0; s < scene->nsurfaces && st == IC_OK; s++)
+        if (ic_surface_get_kind(scene->surfaces[s]) != IC_PARAMETRIC)
+            st = ic_plot_mesh_surface(&c->mesh, scene->surfaces[s], s, (const double(*)[2])c->box,
+                                   implicit_cells, err);
+    return st;
+}
+
+/* The colour range of the curvature over every curve point. */
+static void curvature_range(ctx3d *c, int nc)
+{
+    c->kmin = INFINITY, c->kmax = -INFINITY;
+    for (int i = 0; i < nc; i++) {
+        const ic_trace_curve *cv = ic_trace_result_curve(c->trace, i);
+        for (int k = 0; k < cv->npoints; k++)
+            if (isfinite(cv->points[k].kappa)) {
+                c->kmin = fmin(c->kmin, cv->points[k].kappa);
+                c->kmax = fmax(c->kmax, cv->points[k].kappa);
+            }
+    }
+    if (!(c->kmax >= c->kmin))
+        c->kmin = c->kmax = 0;
+    if (c->kmax - c->kmin <= 1e-9 * fmax(fabs(c->kmax), 1e-300))
+        c->kmax = c->kmin; /* constant: one colour */
+}
+
+/* The tips of the frame arrows, which the camera's fit keeps in the panel;
+ * their number. */
+static int arrow_tips(const ctx3d *c, const int (*frames)[2], int nf, double (*tips)[3])
+{
+    int n = 0;
+    for (int f = 0; f < nf; f++) {
+        const ic_trace_point *p = curve_point(c, frames[f][0], frames[f][1]);
+        for (int v = 0; v < (p->frame_defined ? 3 : 1); v++, n++) {
+            const double *dir = v == 0 ? p->t : v == 1 ? p->n : p->b;
+            for (int k = 0; k < 3; k++)
+                tips[n][k] = p->xyz[k] + c->arrow[frames[f][0]] * dir[k];
+        }
+    }
+    return n;
+}
+
+/* Triangles, curve segments and arrows with their depths; their number.
+ * The curves lie on the surfaces: drawn after the triangles at their own
+ * depth less `bias`, so a surface hides them only where it passes in front. */
+static int collect_prims(const ctx3d *c, int nc, const int (*frames)[2], int nf, double bias,
+                         prim *pr)
+{
+    int np = 0;
+    for (int i = 0; i < c->mesh.n; i++)
+        pr[np++] = (prim){PRIM_TRI, i, 0, 0, mean_depth(c, (const double(*)[3])c->mesh.t[i].v, 3)};
+    for (int i = 0; i < nc; i++) {
+        const ic_trace_curve *cv = ic_trace_result_curve(c->trace, i);
+        for (int k = 0; k + 1 < cv->npoints; k++) {
+            double p[2][3];
+            memcpy(p[0], cv->points[k].xyz, sizeof p[0]);
+            memcpy(p[1], cv->points[k + 1].xyz, sizeof p[1]);
+            pr[np++] = (prim){PRIM_SEG, i, k, 0, mean_depth(c, (const double(*)[3])p, 2) - bias};
+        }
+    }
+    for (int f = 0; f < nf; f++) {
+        const ic_trace_point *p = curve_point(c, frames[f][0], frames[f][1]);
+        for (int v = 0; v < (p->frame_defined ? 3 : 1); v++)
+            pr[np++] = (prim){PRIM_ARROW, frames[f][0], frames[f][1], v,
+                              mean_depth(c, (const double(*)[3])p->xyz, 1) - bias};
+    }
+    qsort(pr, (size_t)np, sizeof *pr, by_depth);
+    return np;
+}
+
+/* "no intersection" only where the search proved it; else what was not
+ * proven. */
+static void draw_no_intersection(cairo_t *cr, const ic_trace_result *trace, double x, double y)
+{
+    const ic_trace_report *rep = ic_trace_result_report(trace);
+    cairo_set_source_rgb(cr, 0.6, 0.1, 0.1);
+    ic_plot_text(cr, x, y, 28, 1, "no intersection", 0.5, 0.5);
+    if (!rep->proven || rep->uncovered_cells > 0 || rep->unproven_cells > 0) {
+        char buf[160];
+        snprintf(buf, sizeof buf, "found: not proven (%s%d cells uncovered, %d unproven)",
+                 rep->proven ? "" : "sampled only, ", rep->uncovered_cells, rep->unproven_cells);
+        ic_plot_text(cr, x, y + 28, 14, 0, buf, 0.5, 0.5);
+    }
+}
+
+/* The depth-sorted scene, the axes, the singular points, colour bar and
+ * legend, once the meshes and the box are made. */
+static ic_status draw_scene(ctx3d *c, const ic_plot_scene *scene, const ic_plot_options *opt,
+                            const plot_rect *panel, ic_error *err)
+{
+    const double x = panel->x0, y = panel->y0, w = panel->x1 - x, h = panel->y1 - y;
+    const int nc = c->trace ? ic_trace_result_num_curves(c->trace) : 0;
+    double diag = 0;
+    for (int k = 0; k < 3; k++)
+        diag += (c->box[k][1] - c->box[k][0]) * (c->box[k][1] - c->box[k][0]);
+    diag = sqrt(diag);
+    int nseg = 0;
+    for (int i = 0; i < nc; i++)
+        nseg += ic_trace_result_curve(c->trace, i)->npoints - 1;
+    int(*frames)[2] = malloc(((size_t)opt->frames + 1) * sizeof *frames);
+    double(*tips)[3] = malloc((3 * (size_t)opt->frames + 1) * sizeof *tips);
+    prim *pr =
+        malloc(((size_t)c->mesh.n + (size_t)nseg + 3 * (size_t)opt->frames + 1) * sizeof *pr);
+    plot_axes *axes = malloc(sizeof *axes);
+    c->arrow = malloc(((size_t)nc + 1) * sizeof *c->arrow);
+    ic_status st = IC_OK;
+    if (!frames || !tips || !pr || !axes || !c->arrow) {
+        st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory drawing");
+    } else {
+        for (int i = 0; i < nc; i++)
+            c->arrow[i] = ic_plot_arrow_length(ic_trace_result_curve(c->trace, i), diag);
+        curvature_range(c, nc);
+        const int nf = frame_points(c->trace, opt->frames, frames);
+        /* the box with its labels left of the colour bar and above the legend */
+        const plot_rect area = {x + 8, y + 8, x + w - 110, y + h - 36};
+        ic_plot_camera_init(&c->cam, opt->azimuth, opt->elevation);
+        ic_plot_axes_fit(axes, c->cr, &c->cam, (const double(*)[2])c->box, area,
+                      (const double(*)[3])tips, arrow_tips(c, (const int(*)[2])frames, nf, tips));
+        /* light from the viewer, raised and to the left */
+        for (int k = 0; k < 3; k++)
+            c->light[k] = 0.8 * c->cam.toward[k] + 0.45 * c->cam.up[k] - 0.3 * c->cam.right[k];
+        const int np = collect_prims(c, nc, (const int(*)[2])frames, nf, 0.01 * diag, pr);
+        ic_plot_axes_draw(c->cr, &c->cam, (const double(*)[2])c->box, axes);
+        for (int i = 0; i < np; i++) {
+            if (pr[i].kind == PRIM_TRI)
+                draw_tri(c, &c->mesh.t[pr[i].a]);
+            else if (pr[i].kind == PRIM_SEG)
+                draw_seg(c, pr[i].a, pr[i].b);
+            else
+                draw_arrow(c, pr[i].a, pr[i].b, pr[i].c);
+        }
+        if (c->trace)
+            draw_specials(c);
+        if (nc > 0)
+            draw_colorbar(c, x + w - 95, y + 60, fmin(260, h - 160));
+        draw_legend(c, scene, x + 20, y + h - 18, w - 30, nf);
+        if (c->trace && nc == 0 && ic_trace_result_num_specials(c->trace) == 0)
+            draw_no_intersection(c->cr, c->trace, x + 0.5 * w, y + 0.5 * h);
+    }
+    free(frames);
+    free(tips);
+    free(pr);
+    free(axes);
+    free(c->arrow);
+    return st;
+}
+
 ic_status ic_plot_draw_3d(cairo_t *cr, const ic_plot_scene *scene, const ic_plot_options *opt,
-                          double x, double y, double w, double h, ic_error *err)
+                       double x, double y, double w, double h, ic_error *err)
 {
     ctx3d c;
     memset(&c, 0, sizeof c);
     c.cr = cr;
     c.trace = scene->trace;
-    ic_status st = IC_OK;
-    /* parametric surfaces first: without a box they set the picture's */
-    for (int pass = 0; pass < 2 && st == IC_OK; pass++) {
-        if (pass == 1)
-            picture_box(&c, scene);
-        for (int s = 0; s < scene->nsurfaces && st == IC_OK; s++) {
-            const int par = ic_surface_get_kind(scene->surfaces[s]) == IC_PARAMETRIC;
-            if (par == (pass == 0))
-                st = ic_plot_mesh_surface(&c.mesh, scene->surfaces[s], s,
-                                          pass == 0 ? (scene->has_box ? scene->box : NULL) : c.box,
-                                          par ? opt->mesh : opt->mesh / 2, err);
-        }
+    ic_status st = make_meshes(&c, scene, opt, err);
+    if (st == IC_OK) {
+        const plot_rect panel = {x, y, x + w, y + h};
+        st = draw_scene(&c, scene, opt, &panel, err);
     }
-    if (st != IC_OK) {
-        free(c.mesh.t);
-        return st;
-    }
-    ic_plot_camera_init(&c.cam, opt->azimuth, opt->elevation);
-    ic_plot_camera_fit(&c.cam, c.box, x + 40, y + 30, w - 150, h - 90);
-    /* light from the viewer, raised and to the left */
-    for (int k = 0; k < 3; k++)
-        c.light[k] = 0.8 * c.cam.toward[k] + 0.45 * c.cam.up[k] - 0.3 * c.cam.right[k];
-    double diag = 0;
-    for (int k = 0; k < 3; k++)
-        diag += (c.box[k][1] - c.box[k][0]) * (c.box[k][1] - c.box[k][0]);
-    c.arrow = 0.08 * sqrt(diag);
-    /* the curves lie on the surfaces: drawn after the triangles at their own
-     * depth (1% of the diagonal nearer), so a surface hides them only where
-     * it passes in front */
-    const double bias = 0.01 * sqrt(diag);
-    /* the curvature range over every curve point */
-    const int nc = c.trace ? ic_trace_result_num_curves(c.trace) : 0;
-    c.kmin = INFINITY, c.kmax = -INFINITY;
-    int nseg = 0;
-    for (int i = 0; i < nc; i++) {
-        const ic_trace_curve *cv = ic_trace_result_curve(c.trace, i);
-        nseg += cv->npoints - 1;
-        for (int k = 0; k < cv->npoints; k++)
-            if (isfinite(cv->points[k].kappa)) {
-                c.kmin = fmin(c.kmin, cv->points[k].kappa);
-                c.kmax = fmax(c.kmax, cv->points[k].kappa);
-            }
-    }
-    if (!(c.kmax >= c.kmin))
-        c.kmin = c.kmax = 0;
-    if (c.kmax - c.kmin <= 1e-9 * fmax(fabs(c.kmax), 1e-300))
-        c.kmax = c.kmin; /* constant: one colour */
-    int(*frames)[2] = malloc(((size_t)opt->frames + 1) * sizeof *frames);
-    const int nf = frames ? frame_points(c.trace, opt->frames, frames) : 0;
-    prim *pr = malloc(((size_t)c.mesh.n + (size_t)nseg + 3 * (size_t)nf + 1) * sizeof *pr);
-    if (!pr || !frames) {
-        free(pr);
-        free(frames);
-        free(c.mesh.t);
-        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory drawing");
-    }
-    int np = 0;
-    for (int i = 0; i < c.mesh.n; i++)
-        pr[np++] = (prim){PRIM_TRI, i, 0, 0, mean_depth(&c, (const double(*)[3])c.mesh.t[i].v, 3)};
-    for (int i = 0; i < nc; i++) {
-        const ic_trace_curve *cv = ic_trace_result_curve(c.trace, i);
-        for (int k = 0; k + 1 < cv->npoints; k++) {
-            const double p[2][3] = {
-                {cv->points[k].xyz[0], cv->points[k].xyz[1], cv->points[k].xyz[2]},
-                {cv->points[k + 1].xyz[0], cv->points[k + 1].xyz[1], cv->points[k + 1].xyz[2]}};
-            pr[np++] = (prim){PRIM_SEG, i, k, 0, mean_depth(&c, p, 2) - bias};
-        }
-    }
-    for (int f = 0; f < nf; f++) {
-        const ic_trace_point *p = curve_point(&c, frames[f][0], frames[f][1]);
-        for (int v = 0; v < (p->frame_defined ? 3 : 1); v++)
-            pr[np++] = (prim){PRIM_ARROW, frames[f][0], frames[f][1], v,
-                              mean_depth(&c, (const double(*)[3])p->xyz, 1) - bias};
-    }
-    qsort(pr, (size_t)np, sizeof *pr, by_depth);
-    draw_axes(&c);
-    for (int i = 0; i < np; i++) {
-        if (pr[i].kind == PRIM_TRI)
-            draw_tri(&c, &c.mesh.t[pr[i].a]);
-        else if (pr[i].kind == PRIM_SEG)
-            draw_seg(&c, pr[i].a, pr[i].b);
-        else
-            draw_arrow(&c, pr[i].a, pr[i].b, pr[i].c);
-    }
-    if (c.trace)
-        draw_specials(&c);
-    if (nc > 0)
-        draw_colorbar(&c, x + w - 95, y + 60, fmin(260, h - 160));
-    draw_legend(&c, scene, x + 20, y + h - 18, nf);
-    if (c.trace && nc == 0 && ic_trace_result_num_specials(c.trace) == 0) {
-        /* "no intersection" only where the search proved it; else what was
-         * not proven */
-        const ic_trace_report *rep = ic_trace_result_report(c.trace);
-        cairo_set_source_rgb(cr, 0.6, 0.1, 0.1);
-        ic_plot_text(cr, x + 0.5 * w, y + 0.5 * h, 28, 1, "no intersection", 0.5, 0.5);
-        if (!rep->proven || rep->uncovered_cells > 0 || rep->unproven_cells > 0) {
-            char buf[160];
-            snprintf(buf, sizeof buf, "found: not proven (%s%d cells uncovered, %d unproven)",
-                     rep->proven ? "" : "sampled only, ", rep->uncovered_cells,
-                     rep->unproven_cells);
-            ic_plot_text(cr, x + 0.5 * w, y + 0.5 * h + 28, 14, 0, buf, 0.5, 0.5);
-        }
-    }
-    free(pr);
-    free(frames);
     free(c.mesh.t);
-    return IC_OK;
+    return st;
 }

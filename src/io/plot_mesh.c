@@ -161,8 +161,25 @@ static ic_status implicit_mesh(plot_mesh *mesh, ic_surface *s, int which, const 
     return st;
 }
 
+ic_status ic_plot_mesh_extent(ic_surface *s, const double box[3][2], int cells, double ext[3][2],
+                           int *found, ic_error *err)
+{
+    plot_mesh coarse = {NULL, 0, 0};
+    const ic_status st = implicit_mesh(&coarse, s, 0, box, cells, err);
+    *found = st == IC_OK && coarse.n > 0;
+    for (int k = 0; k < 3 && *found; k++) {
+        ext[k][0] = INFINITY, ext[k][1] = -INFINITY;
+        for (int i = 0; i < coarse.n; i++)
+            for (int v = 0; v < 3; v++)
+                ext[k][0] = fmin(ext[k][0], coarse.t[i].v[v][k]),
+                ext[k][1] = fmax(ext[k][1], coarse.t[i].v[v][k]);
+    }
+    free(coarse.t);
+    return st;
+}
+
 ic_status ic_plot_mesh_surface(plot_mesh *mesh, ic_surface *s, int which, const double box[3][2],
-                               int cells, ic_error *err)
+                            int cells, ic_error *err)
 {
     if (ic_surface_get_kind(s) == IC_PARAMETRIC)
         return parametric_mesh(mesh, s, which, box, cells, err);
@@ -172,22 +189,15 @@ ic_status ic_plot_mesh_surface(plot_mesh *mesh, ic_surface *s, int which, const 
     /* a coarse pass finds where the surface is in the box; the mesh is made
      * there (a small sphere in a large box gets all the cells) */
     const int coarse_cells = cells / 2 > 4 ? cells / 2 : 4;
-    plot_mesh coarse = {NULL, 0, 0};
-    ic_status st = implicit_mesh(&coarse, s, which, box, coarse_cells, err);
-    if (st != IC_OK || coarse.n == 0) {
-        free(coarse.t);
+    double ext[3][2], sub[3][2];
+    int found;
+    const ic_status st = ic_plot_mesh_extent(s, box, coarse_cells, ext, &found, err);
+    if (st != IC_OK || !found)
         return st;
-    }
-    double sub[3][2];
     for (int k = 0; k < 3; k++) {
-        double lo = INFINITY, hi = -INFINITY;
-        for (int i = 0; i < coarse.n; i++)
-            for (int v = 0; v < 3; v++)
-                lo = fmin(lo, coarse.t[i].v[v][k]), hi = fmax(hi, coarse.t[i].v[v][k]);
         const double cell = (box[k][1] - box[k][0]) / coarse_cells;
-        sub[k][0] = fmax(box[k][0], lo - cell);
-        sub[k][1] = fmin(box[k][1], hi + cell);
+        sub[k][0] = fmax(box[k][0], ext[k][0] - cell);
+        sub[k][1] = fmin(box[k][1], ext[k][1] + cell);
     }
-    free(coarse.t);
     return implicit_mesh(mesh, s, which, (const double(*)[2])sub, cells, err);
 }

@@ -77,10 +77,10 @@ const double ic_plot_rgb_surface[2][3] = {{0.55, 0.70, 0.85}, {0.93, 0.72, 0.50}
 
 void ic_plot_curve_color(int i, double rgb[3])
 {
-    static const double PALETTE[6][3] = {{0.122, 0.467, 0.706}, {1.000, 0.498, 0.055},
-                                         {0.173, 0.627, 0.173}, {0.839, 0.153, 0.157},
-                                         {0.580, 0.404, 0.741}, {0.549, 0.337, 0.294}};
-    memcpy(rgb, PALETTE[i % 6], 3 * sizeof *rgb);
+    static const double PALETTE[PLOT_CURVE_COLORS][3] = {
+        {0.122, 0.467, 0.706}, {1.000, 0.498, 0.055}, {0.173, 0.627, 0.173},
+        {0.839, 0.153, 0.157}, {0.580, 0.404, 0.741}, {0.549, 0.337, 0.294}};
+    memcpy(rgb, PALETTE[i % PLOT_CURVE_COLORS], 3 * sizeof *rgb);
 }
 
 static void set_font(cairo_t *cr, double size, int bold)

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The shared library exports exactly the documented API: every dynamic symbol
 # it defines is a function declared in the public headers (so carries the ic_
-# prefix), and every declared function is exported (none lacks IC_API).
+# prefix), and every declared function is exported (none lacks IC_API); and
+# every global name of the static library beside it (libintercurve.a, whose
+# internal functions a program linking it also sees) carries the ic_ prefix.
 # usage: test_symbols.sh LIBRARY.so C_COMPILER SOURCE_DIR
 set -u
 lib="$1"
@@ -47,6 +49,19 @@ if [ -n "$missing" ]; then
     echo "FAIL: declared in include/ but not exported (IC_API missing?):"
     echo "$missing" | sed 's/^/  /'
     fail=1
+fi
+static="$(dirname "$lib")/libintercurve.a"
+if [ ! -f "$static" ]; then
+    echo "FAIL: no static library at $static"
+    fail=1
+else
+    loose=$(nm -g --defined-only "$static" 2>/dev/null | awk 'NF == 3 { print $3 }' |
+        grep -v '^ic_' | sort -u)
+    if [ -n "$loose" ]; then
+        echo "FAIL: global names of the static library without the ic_ prefix:"
+        echo "$loose" | sed 's/^/  /'
+        fail=1
+    fi
 fi
 echo "symbols: $n_exp exported, $n_dec declared"
 exit $fail

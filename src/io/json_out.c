@@ -18,7 +18,7 @@ static void exact_digits(char out[32], double x)
         snprintf(out, 32, "%.17g", x);
 }
 
-cJSON *json_out_number(json_out *j, double x)
+cJSON *ic_json_out_number(json_out *j, double x)
 {
     cJSON *item = NULL;
     if (isfinite(x)) {
@@ -33,17 +33,17 @@ cJSON *json_out_number(json_out *j, double x)
     return item;
 }
 
-cJSON *json_out_vector(json_out *j, const double *v, int n)
+cJSON *ic_json_out_vector(json_out *j, const double *v, int n)
 {
     cJSON *a = cJSON_CreateArray();
     if (!a)
         j->failed = 1;
     for (int i = 0; a && i < n; i++)
-        json_out_append(j, a, json_out_number(j, v[i]));
+        ic_json_out_append(j, a, ic_json_out_number(j, v[i]));
     return a;
 }
 
-void json_out_add(json_out *j, cJSON *obj, const char *key, cJSON *item)
+void ic_json_out_add(json_out *j, cJSON *obj, const char *key, cJSON *item)
 {
     if (!obj || !item || !cJSON_AddItemToObject(obj, key, item)) {
         j->failed = 1;
@@ -51,7 +51,7 @@ void json_out_add(json_out *j, cJSON *obj, const char *key, cJSON *item)
     }
 }
 
-void json_out_append(json_out *j, cJSON *array, cJSON *item)
+void ic_json_out_append(json_out *j, cJSON *array, cJSON *item)
 {
     if (!array || !item || !cJSON_AddItemToArray(array, item)) {
         j->failed = 1;
@@ -59,7 +59,7 @@ void json_out_append(json_out *j, cJSON *array, cJSON *item)
     }
 }
 
-ic_status json_out_write(FILE *f, cJSON *doc, const json_out *j, const char *what, ic_error *err)
+ic_status ic_json_out_write(FILE *f, cJSON *doc, const json_out *j, const char *what, ic_error *err)
 {
     char *text = doc && !j->failed ? cJSON_Print(doc) : NULL;
     cJSON_Delete(doc);

@@ -6,12 +6,12 @@
 
 static cJSON *value_or_null(json_out *j, int defined, double x)
 {
-    return defined ? json_out_number(j, x) : cJSON_CreateNull();
+    return defined ? ic_json_out_number(j, x) : cJSON_CreateNull();
 }
 
 static cJSON *vector_or_null(json_out *j, int defined, const double *v)
 {
-    return defined ? json_out_vector(j, v, 3) : cJSON_CreateNull();
+    return defined ? ic_json_out_vector(j, v, 3) : cJSON_CreateNull();
 }
 
 /* One entry of "surfaces" of a branch: the Darboux quantities (from order
@@ -20,15 +20,15 @@ static cJSON *branch_surface(json_out *j, const ic_branch *br, int s, int parame
 {
     cJSON *so = cJSON_CreateObject();
     if (br->order >= 2) {
-        json_out_add(j, so, "kappa_n", json_out_number(j, br->surface[s].kappa_n));
-        json_out_add(j, so, "kappa_g", json_out_number(j, br->surface[s].kappa_g));
-        json_out_add(j, so, "tau_g", json_out_number(j, br->surface[s].tau_g));
+        ic_json_out_add(j, so, "kappa_n", ic_json_out_number(j, br->surface[s].kappa_n));
+        ic_json_out_add(j, so, "kappa_g", ic_json_out_number(j, br->surface[s].kappa_g));
+        ic_json_out_add(j, so, "tau_g", ic_json_out_number(j, br->surface[s].tau_g));
     }
     if (parametric) {
         cJSON *pd = cJSON_CreateArray();
         for (int k = 0; k < br->param_order && k < br->order; k++)
-            json_out_append(j, pd, json_out_vector(j, br->param_derivs[s][k], 2));
-        json_out_add(j, so, "parameter_derivatives", pd);
+            ic_json_out_append(j, pd, ic_json_out_vector(j, br->param_derivs[s][k], 2));
+        ic_json_out_add(j, so, "parameter_derivatives", pd);
     }
     return so;
 }
@@ -47,26 +47,26 @@ static const char *undefined_reason(const ic_branch *br)
 static cJSON *branch_json(json_out *j, const ic_branch *br, const int parametric[2])
 {
     cJSON *o = cJSON_CreateObject();
-    json_out_add(j, o, "t", json_out_vector(j, br->t, 3));
+    ic_json_out_add(j, o, "t", ic_json_out_vector(j, br->t, 3));
     if (!br->regular)
-        json_out_add(j, o, "regular", cJSON_CreateFalse());
-    json_out_add(j, o, "n", vector_or_null(j, br->frame_defined, br->n));
-    json_out_add(j, o, "b", vector_or_null(j, br->frame_defined, br->b));
-    json_out_add(j, o, "kappa", value_or_null(j, br->order >= 2, br->kappa));
-    json_out_add(j, o, "tau", value_or_null(j, br->tau_defined, br->tau));
-    json_out_add(j, o, "kappa_prime", value_or_null(j, br->kappa_prime_defined, br->kappa_prime));
-    json_out_add(j, o, "tau_prime", value_or_null(j, br->tau_prime_defined, br->tau_prime));
+        ic_json_out_add(j, o, "regular", cJSON_CreateFalse());
+    ic_json_out_add(j, o, "n", vector_or_null(j, br->frame_defined, br->n));
+    ic_json_out_add(j, o, "b", vector_or_null(j, br->frame_defined, br->b));
+    ic_json_out_add(j, o, "kappa", value_or_null(j, br->order >= 2, br->kappa));
+    ic_json_out_add(j, o, "tau", value_or_null(j, br->tau_defined, br->tau));
+    ic_json_out_add(j, o, "kappa_prime", value_or_null(j, br->kappa_prime_defined, br->kappa_prime));
+    ic_json_out_add(j, o, "tau_prime", value_or_null(j, br->tau_prime_defined, br->tau_prime));
     const char *why = undefined_reason(br);
     if (why)
-        json_out_add(j, o, "undefined", cJSON_CreateString(why));
+        ic_json_out_add(j, o, "undefined", cJSON_CreateString(why));
     cJSON *d = cJSON_CreateArray();
     for (int k = 0; k < br->order; k++)
-        json_out_append(j, d, json_out_vector(j, br->derivs[k], 3));
-    json_out_add(j, o, "derivatives", d);
+        ic_json_out_append(j, d, ic_json_out_vector(j, br->derivs[k], 3));
+    ic_json_out_add(j, o, "derivatives", d);
     cJSON *surfaces = cJSON_CreateArray();
     for (int s = 0; s < 2; s++)
-        json_out_append(j, surfaces, branch_surface(j, br, s, parametric[s]));
-    json_out_add(j, o, "surfaces", surfaces);
+        ic_json_out_append(j, surfaces, branch_surface(j, br, s, parametric[s]));
+    ic_json_out_add(j, o, "surfaces", surfaces);
     return o;
 }
 
@@ -75,16 +75,16 @@ static cJSON *branch_json(json_out *j, const ic_branch *br, const int parametric
 static void add_optional(json_out *j, cJSON *doc, const ic_local_result *res)
 {
     if (res->contact_order)
-        json_out_add(j, doc, "contact_order", cJSON_CreateNumber(res->contact_order));
-    json_out_add(j, doc, "method", cJSON_CreateString(ic_method_name(res->method)));
+        ic_json_out_add(j, doc, "contact_order", cJSON_CreateNumber(res->contact_order));
+    ic_json_out_add(j, doc, "method", cJSON_CreateString(ic_method_name(res->method)));
     if (res->npaper) {
         cJSON *pc = cJSON_CreateObject();
         for (int i = 0; i < res->npaper; i++)
-            json_out_add(j, pc, res->paper_names[i], json_out_number(j, res->paper_values[i]));
-        json_out_add(j, doc, "paper_coefficients", pc);
+            ic_json_out_add(j, pc, res->paper_names[i], ic_json_out_number(j, res->paper_values[i]));
+        ic_json_out_add(j, doc, "paper_coefficients", pc);
     }
     if (res->method == IC_METHOD_PERTURBATION)
-        json_out_add(j, doc, "error_estimate", json_out_number(j, res->error_estimate));
+        ic_json_out_add(j, doc, "error_estimate", ic_json_out_number(j, res->error_estimate));
 }
 
 ic_status ic_local_write_json(FILE *f, const ic_local_result *res, const ic_pair *pair, int order,
@@ -95,26 +95,26 @@ ic_status ic_local_write_json(FILE *f, const ic_local_result *res, const ic_pair
     for (int s = 0; s < 2; s++)
         parametric[s] = ic_surface_get_kind(ic_pair_surface(pair, s)) == IC_PARAMETRIC;
     cJSON *doc = cJSON_CreateObject();
-    json_out_add(&j, doc, "point", json_out_vector(&j, res->point.xyz, 3));
-    json_out_add(&j, doc, "residual", json_out_number(&j, res->point.residual));
+    ic_json_out_add(&j, doc, "point", ic_json_out_vector(&j, res->point.xyz, 3));
+    ic_json_out_add(&j, doc, "residual", ic_json_out_number(&j, res->point.residual));
     cJSON *params = cJSON_CreateArray();
     for (int s = 0; s < 2; s++)
-        json_out_append(&j, params,
-                        parametric[s] ? json_out_vector(&j, res->point.params[s], 2)
+        ic_json_out_append(&j, params,
+                        parametric[s] ? ic_json_out_vector(&j, res->point.params[s], 2)
                                       : cJSON_CreateNull());
-    json_out_add(&j, doc, "params", params);
+    ic_json_out_add(&j, doc, "params", params);
     cJSON *normals = cJSON_CreateArray();
     for (int s = 0; s < 2; s++)
-        json_out_append(&j, normals, json_out_vector(&j, res->normals[s], 3));
-    json_out_add(&j, doc, "normals", normals);
-    json_out_add(&j, doc, "angle", json_out_number(&j, res->angle));
-    json_out_add(&j, doc, "type", cJSON_CreateString(ic_point_type_name(res->type)));
-    json_out_add(&j, doc, "discriminant", json_out_number(&j, res->discriminant));
+        ic_json_out_append(&j, normals, ic_json_out_vector(&j, res->normals[s], 3));
+    ic_json_out_add(&j, doc, "normals", normals);
+    ic_json_out_add(&j, doc, "angle", ic_json_out_number(&j, res->angle));
+    ic_json_out_add(&j, doc, "type", cJSON_CreateString(ic_point_type_name(res->type)));
+    ic_json_out_add(&j, doc, "discriminant", ic_json_out_number(&j, res->discriminant));
     add_optional(&j, doc, res);
-    json_out_add(&j, doc, "order", cJSON_CreateNumber(order));
+    ic_json_out_add(&j, doc, "order", cJSON_CreateNumber(order));
     cJSON *branches = cJSON_CreateArray();
     for (int i = 0; i < res->nbranches; i++)
-        json_out_append(&j, branches, branch_json(&j, &res->branches[i], parametric));
-    json_out_add(&j, doc, "branches", branches);
-    return json_out_write(f, doc, &j, "point JSON", err);
+        ic_json_out_append(&j, branches, branch_json(&j, &res->branches[i], parametric));
+    ic_json_out_add(&j, doc, "branches", branches);
+    return ic_json_out_write(f, doc, &j, "point JSON", err);
 }

@@ -32,15 +32,15 @@ static ic_status derivative_tensor(cJSON **list, json_out *j, ic_surface *s, con
         ic_jet_exponents(sp, i, alpha);
         const double factorial = ic_jet_factorial(sp, i);
         cJSON *item = cJSON_CreateObject();
-        json_out_add(j, item, "order", cJSON_CreateIntArray(alpha, ic_surface_num_inputs(s)));
+        ic_json_out_add(j, item, "order", cJSON_CreateIntArray(alpha, ic_surface_num_inputs(s)));
         if (nout == 1) {
-            json_out_add(j, item, "value", json_out_number(j, taylor[i] * factorial));
+            ic_json_out_add(j, item, "value", ic_json_out_number(j, taylor[i] * factorial));
         } else {
             const double v[3] = {taylor[i] * factorial, taylor[n + i] * factorial,
                                  taylor[2 * n + i] * factorial};
-            json_out_add(j, item, "value", json_out_vector(j, v, 3));
+            ic_json_out_add(j, item, "value", ic_json_out_vector(j, v, 3));
         }
-        json_out_append(j, *list, item);
+        ic_json_out_append(j, *list, item);
     }
 cleanup:
     free(taylor);
@@ -51,8 +51,8 @@ cleanup:
 static cJSON *pair_of_vectors(json_out *j, const double a[3], const double b[3])
 {
     cJSON *pair = cJSON_CreateArray();
-    json_out_append(j, pair, json_out_vector(j, a, 3));
-    json_out_append(j, pair, json_out_vector(j, b, 3));
+    ic_json_out_append(j, pair, ic_json_out_vector(j, a, 3));
+    ic_json_out_append(j, pair, ic_json_out_vector(j, b, 3));
     return pair;
 }
 
@@ -60,23 +60,23 @@ static cJSON *form_json(json_out *j, const char *const names[3], const double v[
 {
     cJSON *form = cJSON_CreateObject();
     for (int i = 0; i < 3; i++)
-        json_out_add(j, form, names[i], json_out_number(j, v[i]));
+        ic_json_out_add(j, form, names[i], ic_json_out_number(j, v[i]));
     return form;
 }
 
 static void add_geometry(json_out *j, cJSON *doc, const ic_surface_geometry *g, int parametric)
 {
     static const char *const first[3] = {"E", "F", "G"}, *const second[3] = {"L", "M", "N"};
-    json_out_add(j, doc, "normal", json_out_vector(j, g->normal, 3));
-    json_out_add(j, doc, parametric ? "tangent_basis_Ru_Rv" : "tangent_basis_orthonormal",
+    ic_json_out_add(j, doc, "normal", ic_json_out_vector(j, g->normal, 3));
+    ic_json_out_add(j, doc, parametric ? "tangent_basis_Ru_Rv" : "tangent_basis_orthonormal",
                  pair_of_vectors(j, g->basis[0], g->basis[1]));
-    json_out_add(j, doc, "first_fundamental_form", form_json(j, first, g->first));
-    json_out_add(j, doc, "second_fundamental_form", form_json(j, second, g->second));
-    json_out_add(j, doc, "principal_curvatures", json_out_vector(j, g->principal_curvatures, 2));
-    json_out_add(j, doc, "principal_directions",
+    ic_json_out_add(j, doc, "first_fundamental_form", form_json(j, first, g->first));
+    ic_json_out_add(j, doc, "second_fundamental_form", form_json(j, second, g->second));
+    ic_json_out_add(j, doc, "principal_curvatures", ic_json_out_vector(j, g->principal_curvatures, 2));
+    ic_json_out_add(j, doc, "principal_directions",
                  pair_of_vectors(j, g->principal_directions[0], g->principal_directions[1]));
-    json_out_add(j, doc, "gaussian_curvature", json_out_number(j, g->gauss));
-    json_out_add(j, doc, "mean_curvature", json_out_number(j, g->mean));
+    ic_json_out_add(j, doc, "gaussian_curvature", ic_json_out_number(j, g->gauss));
+    ic_json_out_add(j, doc, "mean_curvature", ic_json_out_number(j, g->mean));
 }
 
 /* At a degenerate point: the quantities that need the normal are null. */
@@ -90,7 +90,7 @@ static void add_nulls(json_out *j, cJSON *doc)
                                        "gaussian_curvature",
                                        "mean_curvature"};
     for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++)
-        json_out_add(j, doc, keys[i], cJSON_CreateNull());
+        ic_json_out_add(j, doc, keys[i], cJSON_CreateNull());
 }
 
 ic_status ic_surface_write_json(FILE *f, ic_surface *s, const char *name, const double *at,
@@ -114,21 +114,21 @@ ic_status ic_surface_write_json(FILE *f, ic_surface *s, const char *name, const 
         return ic_error_set(err, st, why.column, "%s", why.message);
     }
     cJSON *doc = cJSON_CreateObject();
-    json_out_add(&j, doc, "surface", cJSON_CreateString(name));
-    json_out_add(&j, doc, "type", cJSON_CreateString(parametric ? "parametric" : "implicit"));
-    json_out_add(&j, doc, "at", json_out_vector(&j, at, ic_surface_num_inputs(s)));
+    ic_json_out_add(&j, doc, "surface", cJSON_CreateString(name));
+    ic_json_out_add(&j, doc, "type", cJSON_CreateString(parametric ? "parametric" : "implicit"));
+    ic_json_out_add(&j, doc, "at", ic_json_out_vector(&j, at, ic_surface_num_inputs(s)));
     if (parametric)
-        json_out_add(&j, doc, "point", json_out_vector(&j, g.point, 3));
+        ic_json_out_add(&j, doc, "point", ic_json_out_vector(&j, g.point, 3));
     else
-        json_out_add(&j, doc, "value", json_out_number(&j, g.value));
+        ic_json_out_add(&j, doc, "value", ic_json_out_number(&j, g.value));
     if (st == IC_OK) {
-        json_out_add(&j, doc, "degenerate", cJSON_CreateNull());
+        ic_json_out_add(&j, doc, "degenerate", cJSON_CreateNull());
         add_geometry(&j, doc, &g, parametric);
     } else {
-        json_out_add(&j, doc, "degenerate", cJSON_CreateString(why.message));
+        ic_json_out_add(&j, doc, "degenerate", cJSON_CreateString(why.message));
         add_nulls(&j, doc);
     }
-    json_out_add(&j, doc, "order", cJSON_CreateNumber(order));
-    json_out_add(&j, doc, "derivatives", tensor);
-    return json_out_write(f, doc, &j, "surface JSON", err);
+    ic_json_out_add(&j, doc, "order", cJSON_CreateNumber(order));
+    ic_json_out_add(&j, doc, "derivatives", tensor);
+    return ic_json_out_write(f, doc, &j, "surface JSON", err);
 }

@@ -8,20 +8,20 @@ static cJSON *point_json(json_out *j, const ic_trace_point *p, const ic_trace_cu
                          const ic_trace_result *res, const int parametric[2])
 {
     cJSON *o = cJSON_CreateObject();
-    json_out_add(j, o, "s", json_out_number(j, p->s));
-    json_out_add(j, o, "xyz", json_out_vector(j, p->xyz, 3));
+    ic_json_out_add(j, o, "s", ic_json_out_number(j, p->s));
+    ic_json_out_add(j, o, "xyz", ic_json_out_vector(j, p->xyz, 3));
     cJSON *params = cJSON_CreateArray();
     for (int s = 0; s < 2; s++)
-        json_out_append(j, params,
-                        parametric[s] ? json_out_vector(j, p->params[s], 2) : cJSON_CreateNull());
-    json_out_add(j, o, "params", params);
-    json_out_add(j, o, "t", json_out_vector(j, p->t, 3));
-    json_out_add(j, o, "n", p->frame_defined ? json_out_vector(j, p->n, 3) : cJSON_CreateNull());
-    json_out_add(j, o, "b", p->frame_defined ? json_out_vector(j, p->b, 3) : cJSON_CreateNull());
-    json_out_add(j, o, "kappa", json_out_number(j, p->kappa));
-    json_out_add(j, o, "tau", p->frame_defined ? json_out_number(j, p->tau) : cJSON_CreateNull());
-    json_out_add(j, o, "angle", json_out_number(j, p->angle));
-    json_out_add(j, o, "type",
+        ic_json_out_append(j, params,
+                        parametric[s] ? ic_json_out_vector(j, p->params[s], 2) : cJSON_CreateNull());
+    ic_json_out_add(j, o, "params", params);
+    ic_json_out_add(j, o, "t", ic_json_out_vector(j, p->t, 3));
+    ic_json_out_add(j, o, "n", p->frame_defined ? ic_json_out_vector(j, p->n, 3) : cJSON_CreateNull());
+    ic_json_out_add(j, o, "b", p->frame_defined ? ic_json_out_vector(j, p->b, 3) : cJSON_CreateNull());
+    ic_json_out_add(j, o, "kappa", ic_json_out_number(j, p->kappa));
+    ic_json_out_add(j, o, "tau", p->frame_defined ? ic_json_out_number(j, p->tau) : cJSON_CreateNull());
+    ic_json_out_add(j, o, "angle", ic_json_out_number(j, p->angle));
+    ic_json_out_add(j, o, "type",
                  cJSON_CreateString(ic_point_type_name(ic_trace_point_type(res, c, p))));
     return o;
 }
@@ -30,29 +30,29 @@ static cJSON *curve_json(json_out *j, const ic_trace_curve *c, const ic_trace_re
                          const int parametric[2])
 {
     cJSON *o = cJSON_CreateObject();
-    json_out_add(j, o, "closed", cJSON_CreateBool(c->closed));
-    json_out_add(j, o, "type", cJSON_CreateString(c->tangential ? "tangential" : "transversal"));
-    json_out_add(j, o, "shape", cJSON_CreateString(ic_shape_name(c->shape)));
-    json_out_add(j, o, "shape_tolerance", json_out_number(j, c->shape_tol));
-    json_out_add(j, o, "length", json_out_number(j, c->length));
+    ic_json_out_add(j, o, "closed", cJSON_CreateBool(c->closed));
+    ic_json_out_add(j, o, "type", cJSON_CreateString(c->tangential ? "tangential" : "transversal"));
+    ic_json_out_add(j, o, "shape", cJSON_CreateString(ic_shape_name(c->shape)));
+    ic_json_out_add(j, o, "shape_tolerance", ic_json_out_number(j, c->shape_tol));
+    ic_json_out_add(j, o, "length", ic_json_out_number(j, c->length));
     cJSON *ends = cJSON_CreateArray();
     for (int e = 0; e < 2; e++)
-        json_out_append(j, ends, cJSON_CreateString(ic_trace_event_name(c->ends[e])));
-    json_out_add(j, o, "ends", ends);
+        ic_json_out_append(j, ends, cJSON_CreateString(ic_trace_event_name(c->ends[e])));
+    ic_json_out_add(j, o, "ends", ends);
     cJSON *pts = cJSON_CreateArray();
     for (int k = 0; k < c->npoints; k++)
-        json_out_append(j, pts, point_json(j, &c->points[k], c, res, parametric));
-    json_out_add(j, o, "points", pts);
+        ic_json_out_append(j, pts, point_json(j, &c->points[k], c, res, parametric));
+    ic_json_out_add(j, o, "points", pts);
     return o;
 }
 
 static cJSON *special_json(json_out *j, const ic_trace_special *sp)
 {
     cJSON *o = cJSON_CreateObject();
-    json_out_add(j, o, "xyz", json_out_vector(j, sp->xyz, 3));
-    json_out_add(j, o, "type", cJSON_CreateString(ic_point_type_name(sp->type)));
-    json_out_add(j, o, "branches", cJSON_CreateNumber(sp->nbranches));
-    json_out_add(j, o, "approximate", cJSON_CreateBool(sp->approximate));
+    ic_json_out_add(j, o, "xyz", ic_json_out_vector(j, sp->xyz, 3));
+    ic_json_out_add(j, o, "type", cJSON_CreateString(ic_point_type_name(sp->type)));
+    ic_json_out_add(j, o, "branches", cJSON_CreateNumber(sp->nbranches));
+    ic_json_out_add(j, o, "approximate", cJSON_CreateBool(sp->approximate));
     return o;
 }
 
@@ -60,29 +60,29 @@ static cJSON *special_json(json_out *j, const ic_trace_special *sp)
 static cJSON *report_json(json_out *j, const ic_trace_report *rep)
 {
     cJSON *ro = cJSON_CreateObject();
-    json_out_add(j, ro, "complete", cJSON_CreateBool(rep->complete));
-    json_out_add(j, ro, "cells", cJSON_CreateNumber(rep->cells));
-    json_out_add(j, ro, "cells_excluded_by_intervals", cJSON_CreateNumber(rep->cells_excluded));
-    json_out_add(j, ro, "cells_excluded_by_centred_forms",
+    ic_json_out_add(j, ro, "complete", cJSON_CreateBool(rep->complete));
+    ic_json_out_add(j, ro, "cells", cJSON_CreateNumber(rep->cells));
+    ic_json_out_add(j, ro, "cells_excluded_by_intervals", cJSON_CreateNumber(rep->cells_excluded));
+    ic_json_out_add(j, ro, "cells_excluded_by_centred_forms",
                  cJSON_CreateNumber(rep->cells_excluded_centred));
-    json_out_add(j, ro, "exclusion_proven", cJSON_CreateBool(rep->proven));
-    json_out_add(j, ro, "sampled",
+    ic_json_out_add(j, ro, "exclusion_proven", cJSON_CreateBool(rep->proven));
+    ic_json_out_add(j, ro, "sampled",
                  cJSON_CreateString(rep->proven
                                         ? "start points inside the cells that were not excluded"
                                         : "everything: a surface has no interval evaluation"));
-    json_out_add(j, ro, "smallest_cell", json_out_number(j, rep->cell_size));
-    json_out_add(j, ro, "start_candidates", cJSON_CreateNumber(rep->candidates));
-    json_out_add(j, ro, "uncovered_cells", cJSON_CreateNumber(rep->uncovered_cells));
-    json_out_add(j, ro, "unproven_cells", cJSON_CreateNumber(rep->unproven_cells));
-    json_out_add(j, ro, "loop_free_cells", cJSON_CreateNumber(rep->loop_free_cells));
-    json_out_add(j, ro, "loop_cells", cJSON_CreateNumber(rep->loop_cells));
-    json_out_add(j, ro, "refined_cells", cJSON_CreateNumber(rep->refined_cells));
-    json_out_add(j, ro, "undecided_loop_cells", cJSON_CreateNumber(rep->undecided_loop_cells));
-    json_out_add(j, ro, "coincident_cells", cJSON_CreateNumber(rep->coincident_cells));
+    ic_json_out_add(j, ro, "smallest_cell", ic_json_out_number(j, rep->cell_size));
+    ic_json_out_add(j, ro, "start_candidates", cJSON_CreateNumber(rep->candidates));
+    ic_json_out_add(j, ro, "uncovered_cells", cJSON_CreateNumber(rep->uncovered_cells));
+    ic_json_out_add(j, ro, "unproven_cells", cJSON_CreateNumber(rep->unproven_cells));
+    ic_json_out_add(j, ro, "loop_free_cells", cJSON_CreateNumber(rep->loop_free_cells));
+    ic_json_out_add(j, ro, "loop_cells", cJSON_CreateNumber(rep->loop_cells));
+    ic_json_out_add(j, ro, "refined_cells", cJSON_CreateNumber(rep->refined_cells));
+    ic_json_out_add(j, ro, "undecided_loop_cells", cJSON_CreateNumber(rep->undecided_loop_cells));
+    ic_json_out_add(j, ro, "coincident_cells", cJSON_CreateNumber(rep->coincident_cells));
     cJSON *failures = cJSON_CreateArray();
     for (int i = 0; i < rep->nfailures; i++)
-        json_out_append(j, failures, cJSON_CreateString(rep->failures[i]));
-    json_out_add(j, ro, "failures", failures);
+        ic_json_out_append(j, failures, cJSON_CreateString(rep->failures[i]));
+    ic_json_out_add(j, ro, "failures", failures);
     return ro;
 }
 
@@ -96,12 +96,12 @@ ic_status ic_trace_write_json(FILE *f, const ic_trace_result *res, const ic_pair
     cJSON *doc = cJSON_CreateObject();
     cJSON *curves = cJSON_CreateArray();
     for (int i = 0; i < ic_trace_result_num_curves(res); i++)
-        json_out_append(&j, curves, curve_json(&j, ic_trace_result_curve(res, i), res, parametric));
-    json_out_add(&j, doc, "curves", curves);
+        ic_json_out_append(&j, curves, curve_json(&j, ic_trace_result_curve(res, i), res, parametric));
+    ic_json_out_add(&j, doc, "curves", curves);
     cJSON *points = cJSON_CreateArray();
     for (int i = 0; i < ic_trace_result_num_specials(res); i++)
-        json_out_append(&j, points, special_json(&j, ic_trace_result_special(res, i)));
-    json_out_add(&j, doc, "points", points);
-    json_out_add(&j, doc, "report", report_json(&j, ic_trace_result_report(res)));
-    return json_out_write(f, doc, &j, "trace JSON", err);
+        ic_json_out_append(&j, points, special_json(&j, ic_trace_result_special(res, i)));
+    ic_json_out_add(&j, doc, "points", points);
+    ic_json_out_add(&j, doc, "report", report_json(&j, ic_trace_result_report(res)));
+    return ic_json_out_write(f, doc, &j, "trace JSON", err);
 }

@@ -22,9 +22,15 @@ EXTRA_DEB_PACKAGES ?=
 all: configure
 	cmake --build $(BUILD) -j2
 
-# Debian packages the build needs, installed only when missing.
+# Debian packages the build needs, installed only when missing. Elsewhere
+# (no dpkg-query, no apt-get) nothing is installed: the list is printed and
+# CMake says what it cannot find.
 deps:
-	@missing=""; for p in $(DEB_PACKAGES) $(EXTRA_DEB_PACKAGES); do \
+	@if ! command -v dpkg-query >/dev/null 2>&1 || ! command -v apt-get >/dev/null 2>&1; then \
+	  echo "not a Debian system: the build needs $(DEB_PACKAGES) $(EXTRA_DEB_PACKAGES) (or your system's equivalents)"; \
+	  exit 0; \
+	fi; \
+	missing=""; for p in $(DEB_PACKAGES) $(EXTRA_DEB_PACKAGES); do \
 	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
 	done; \
 	if [ -n "$$missing" ]; then \

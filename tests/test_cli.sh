@@ -88,6 +88,19 @@ check "point: derivatives, Darboux quantities and parameter derivatives" $?
 check "point --method closed-form exits 0" $?
 grep -q '"method":.*"closed-form"' "$out"
 check "point: closed-form named in the output" $?
+# without --order the closed forms give what they have: order 3 (was an
+# error about order 4, which the user never asked for)
+"$bin" point "$src/examples/viviani.json" --at 1.5,0.8660254037844386,1 --method closed-form >"$out" 2>"$errf"
+st=$?
+grep -q '"order":[[:space:]]*3' "$out"
+found=$?
+check "point --method closed-form without --order: order 3, exit 0 (exit $st; $(head -c 200 "$errf"))" $((st || found))
+# an empty -o names no file: said so (was "Is a directory")
+"$bin" trace "$src/examples/viviani.json" -o '' >"$out" 2>"$errf"
+st=$?
+grep -q "without a name" "$errf"
+found=$?
+check "trace -o '': refused, saying the file has no name (exit $st)" $((!st || found))
 "$bin" point "$src/examples/enneper-self.json" --params 'sqrt(2),3,sqrt(2),-3' --order 3 --format text >"$out" 2>"$errf"
 st=$?
 check "point: Enneper self-intersection by parameters ($(cat "$errf"))" $st

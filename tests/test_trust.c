@@ -501,6 +501,45 @@ static void test_tangential_arc_domain(void)
     }
 }
 
+/* Options ic_trace must refuse with IC_ERR_INVALID (before: depth 0 wrote
+ * past the search's stack, depth 40 shifted an int by 40, a NaN or reversed
+ * box returned an empty "incomplete" answer). */
+static void test_bad_options(void)
+{
+    ic_surface *A = NULL, *B = NULL;
+    ic_pair *pair = NULL;
+    if (ic_surface_new_implicit(&A, "x^2 + y^2 + z^2 - 4", NULL, 0, NULL) != IC_OK ||
+        ic_surface_new_implicit(&B, "(x - 1)^2 + y^2 - 1", NULL, 0, NULL) != IC_OK ||
+        ic_pair_new(&pair, A, B, NULL) != IC_OK) {
+        CHECK(0, "bad options: the pair");
+    } else {
+        for (int k = 0; k < 7; k++) {
+            ic_trace_options opt = box_options(-2.5, 2.5);
+            const char *what[7] = {"depth 0", "depth -1", "depth 40", "NaN box", "reversed box",
+                                   "tol 0", "negative time limit"};
+            if (k == 0) opt.depth = 0;
+            if (k == 1) opt.depth = -1;
+            if (k == 2) opt.depth = 40;
+            if (k == 3) opt.box[1][0] = NAN;
+            if (k == 4) opt.box[2][0] = 5, opt.box[2][1] = -5;
+            if (k == 5) opt.tol = 0;
+            if (k == 6) opt.time_limit = -1;
+            ic_trace_result *res = NULL;
+            ic_error err;
+            const ic_status st = ic_trace(&res, pair, &opt, &err);
+            CHECK(st == IC_ERR_INVALID && !res, "%s: status %d", what[k], (int)st);
+            ic_trace_result_free(res);
+        }
+        ic_trace_result *res = NULL;
+        CHECK(ic_trace(&res, pair, NULL, NULL) == IC_ERR_INVALID && !res, "NULL options");
+        const ic_trace_options opt = box_options(-2.5, 2.5);
+        CHECK(ic_trace(&res, NULL, &opt, NULL) == IC_ERR_INVALID && !res, "NULL pair");
+    }
+    ic_pair_free(pair);
+    ic_surface_free(A);
+    ic_surface_free(B);
+}
+
 static void timed(const char *name, void (*fn)(void))
 {
     struct timespec t0, t1;
@@ -531,5 +570,6 @@ int main(void)
     timed("Whitney arc length", test_whitney_arc_length);
     timed("cone apex", test_cone_apex);
     timed("tangential arc cut by the domain", test_tangential_arc_domain);
+    timed("bad options", test_bad_options);
     return harness_finish("trust");
 }

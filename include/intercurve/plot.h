@@ -52,7 +52,7 @@ IC_API void ic_plot_scene_of_problem(ic_plot_scene *scene, const ic_problem *pro
  * Draws the scene into `path`; the format comes from its extension (.svg,
  * .png or .pdf, IC_ERR_INVALID otherwise). Written through a temporary file
  * and a rename (IC_ERR_IO when that fails). Where the trace has no curve and
- * no point, the figure says "no intersection".
+ * no point, the figure says "no intersection". opt NULL: ic_plot_defaults.
  */
 IC_API IC_NODISCARD ic_status ic_plot_write(const char *path, const ic_plot_scene *scene,
                                             const ic_plot_options *opt, ic_error *err);

@@ -26,6 +26,9 @@
 extern "C" {
 #endif
 
+/** The deepest start-point search ic_trace accepts: 2^9 cells per axis. */
+#define IC_TRACE_MAX_DEPTH 9
+
 typedef struct {
     /* The four lengths below are fractions of the problem's size L: the
      * diagonal of the box for two implicit surfaces, else of the bounding
@@ -40,7 +43,7 @@ typedef struct {
     int max_points;  /**< point budget of one curve (default 100000) */
     int has_box;     /**< 1: stop when the curve leaves box */
     double box[3][2];
-    int depth;        /**< subdivision depth of the start-point search (default 6:
+    int depth;        /**< subdivision depth of the start-point search, 1..IC_TRACE_MAX_DEPTH (default 6:
                        *   64 cells per axis) */
     double shape_tol; /**< relative tolerance of the shape tests (default 1e-6) */
     double time_limit; /**< seconds of wall time for the whole trace; 0: none (default).

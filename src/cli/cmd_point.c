@@ -44,7 +44,8 @@ static const ic_cli_option POINT_OPTIONS[NOPTIONS] = {
                    .lo = 1,
                    .hi = IC_LOCAL_MAX_ORDER,
                    .fallback = "4",
-                   .help = "highest derivative c^(K) (closed-form: up to 3)"},
+                   .help = "highest derivative c^(K) (closed-form: up to 3, and 3 when not\n"
+                           "given)"},
     [OPT_METHOD] = {.name = "--method",
                     .metavar = "M",
                     .kind = IC_OPT_CHOICE,
@@ -193,9 +194,12 @@ static int print_point(const char *name, ic_pair *pair, const ic_local_point *pt
 {
     ic_error err;
     ic_error_clear(&err);
-    const int order = (int)v[OPT_ORDER].integer;
-    ic_local_result res;
     const ic_method method = (ic_method)ic_method_from_name(v[OPT_METHOD].text);
+    /* the closed forms stop at the third derivative: their default order */
+    const int order = method == IC_METHOD_CLOSED_FORM && !v[OPT_ORDER].given
+                          ? IC_CLOSED_FORM_MAX_ORDER
+                          : (int)v[OPT_ORDER].integer;
+    ic_local_result res;
     ic_status st = ic_local_apparatus(pair, &res, pt, order, method, opt, &err);
     if (st != IC_OK) {
         ic_cli_print_error(name, &err);

@@ -137,6 +137,13 @@ static ic_status render(plot_sink *sink, plot_format fmt, const char *path,
 ic_status ic_plot_write(const char *path, const ic_plot_scene *scene, const ic_plot_options *opt,
                         ic_error *err)
 {
+    if (!path || !scene)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "ic_plot_write needs a path and a scene");
+    ic_plot_options defaults;
+    if (!opt) { /* NULL: the defaults */
+        ic_plot_defaults(&defaults);
+        opt = &defaults;
+    }
     const plot_format fmt = format_of(path);
     if (fmt == FMT_NONE)
         return ic_error_set(err, IC_ERR_INVALID, 0,

@@ -193,6 +193,11 @@ static ic_status open_by_kind(ic_safe_file *sf, ic_error *err)
 ic_status ic_safe_open(ic_safe_file **out, const char *path, ic_error *err)
 {
     *out = NULL;
+    if (!path || !path[0])
+        return ic_error_set(err, IC_ERR_INVALID, 0, "cannot write a file without a name");
+    const size_t len = strlen(path);
+    if (path[len - 1] == '/')
+        return ic_error_set(err, IC_ERR_INVALID, 0, "cannot write %s: it names a directory", path);
     ic_safe_file *sf = calloc(1, sizeof *sf);
     if (!sf)
         return nomem(err, path);

@@ -710,10 +710,42 @@ static void set_complete(ic_trace_result *r)
                          rep->undecided_loop_cells == 0 && rep->coincident_cells == 0;
 }
 
+/* The options ic_trace accepts: IC_OK, or IC_ERR_INVALID saying which. */
+static ic_status check_options(const ic_trace_options *o, ic_error *err)
+{
+    if (o->depth < 1 || o->depth > IC_TRACE_MAX_DEPTH)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "trace: depth %d is not in 1..%d", o->depth,
+                            IC_TRACE_MAX_DEPTH);
+    if (o->order < 3 || o->order > 12 || o->max_points < 2)
+        return ic_error_set(err, IC_ERR_INVALID, 0,
+                            "trace: order %d is not in 3..12, or max_points %d below 2", o->order,
+                            o->max_points);
+    const double rel[4] = {o->tol, o->chord, o->max_step, o->min_step};
+    for (int k = 0; k < 4; k++)
+        if (!(rel[k] > 0) || !isfinite(rel[k]))
+            return ic_error_set(err, IC_ERR_INVALID, 0,
+                                "trace: tol, chord, max_step and min_step must be positive and "
+                                "finite");
+    if (!(o->time_limit >= 0) || !(o->shape_tol > 0))
+        return ic_error_set(err, IC_ERR_INVALID, 0,
+                            "trace: time_limit must be 0 or positive, shape_tol positive");
+    for (int k = 0; o->has_box && k < 3; k++)
+        if (!isfinite(o->box[k][0]) || !isfinite(o->box[k][1]) || !(o->box[k][1] > o->box[k][0]))
+            return ic_error_set(err, IC_ERR_INVALID, 0,
+                                "trace: box[%d] = [%g, %g] is not a finite, increasing interval",
+                                k, o->box[k][0], o->box[k][1]);
+    return IC_OK;
+}
+
 ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options *user_opt,
                    ic_error *err)
 {
+    if (!out || !pair || !user_opt)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "ic_trace needs a result, a pair and options");
     *out = NULL;
+    ic_status valid = check_options(user_opt, err);
+    if (valid != IC_OK)
+        return valid;
     ic_trace_result *r = calloc(1, sizeof *r);
     if (!r)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory tracing");

@@ -37,7 +37,8 @@ static void sample_jet(double *a, double a0, const ic_jet_space *sp, harness_rng
 static void test_space_layout(void)
 {
     ic_jet_space *sp = NULL;
-    CHECK(ic_jet_space_new(&sp, 3, 6, NULL) == IC_OK, "space 3 vars order 6");
+    if (!REQUIRE(ic_jet_space_new(&sp, 3, 6, NULL) == IC_OK, "space 3 vars order 6"))
+        return;
     CHECK(ic_jet_space_len(sp) == 84, "C(9,3) = 84 coefficients, got %d", ic_jet_space_len(sp));
     for (int i = 0; i < ic_jet_space_len(sp); i++) {
         int alpha[3];
@@ -68,13 +69,20 @@ static void test_space_layout(void)
 static void test_identities(int m, int K, harness_rng *rng)
 {
     ic_jet_space *sp = NULL;
-    if (ic_jet_space_new(&sp, m, K, NULL) != IC_OK)
+    if (!REQUIRE(ic_jet_space_new(&sp, m, K, NULL) == IC_OK, "jet space of %d variables, order %d",
+                 m, K))
         return;
     const int n = ic_jet_space_len(sp);
     double *a = calloc((size_t)n, sizeof *a), *s = calloc((size_t)n, sizeof *s);
     double *c = calloc((size_t)n, sizeof *c), *t = calloc((size_t)n, sizeof *t);
     double *u = calloc((size_t)n, sizeof *u), *one = calloc((size_t)n, sizeof *one);
     double *scratch = malloc(ic_jet_scratch_len(sp) * sizeof *scratch);
+    if (!REQUIRE(a && s && c && t && u && one && scratch, "no memory for jets of %d coefficients",
+                 n)) {
+        free(a), free(s), free(c), free(t), free(u), free(one), free(scratch);
+        ic_jet_space_free(sp);
+        return;
+    }
     ic_jet_set_const(one, 1.0, sp);
     for (int trial = 0; trial < 5 * harness_multiplier(); trial++) {
         sample_jet(a, harness_uniform(rng, 0.2, 1.4), sp, rng);
@@ -128,10 +136,16 @@ static void test_compose(harness_rng *rng)
 {
     ic_jet_space *s1 = NULL, *s2 = NULL, *s3 = NULL, *p2 = NULL, *p3 = NULL;
     enum { K = 12 };
-    if (ic_jet_space_new(&s1, 1, K, NULL) || ic_jet_space_new(&s2, 2, K, NULL) ||
-        ic_jet_space_new(&s3, 3, 7, NULL) || ic_jet_space_new(&p2, 2, K, NULL) ||
-        ic_jet_space_new(&p3, 3, K, NULL))
+    if (!REQUIRE(ic_jet_space_new(&s1, 1, K, NULL) == IC_OK &&
+                     ic_jet_space_new(&s2, 2, K, NULL) == IC_OK &&
+                     ic_jet_space_new(&s3, 3, 7, NULL) == IC_OK &&
+                     ic_jet_space_new(&p2, 2, K, NULL) == IC_OK &&
+                     ic_jet_space_new(&p3, 3, K, NULL) == IC_OK,
+                 "the jet spaces of the composition test")) {
+        ic_jet_space_free(s1), ic_jet_space_free(s2), ic_jet_space_free(s3);
+        ic_jet_space_free(p2), ic_jet_space_free(p3);
         return;
+    }
     double scratch[(K + 20) * 455];
     double g[3][455], P[455], x[3][455], t1[455], t2[455], direct[455], composed[455];
     for (int out = 0; out < 3; out++) {
@@ -190,8 +204,13 @@ static void test_reversion(harness_rng *rng)
 {
     enum { K = 16 };
     ic_jet_space *s1 = NULL, *s2 = NULL;
-    if (ic_jet_space_new(&s1, 1, K, NULL) || ic_jet_space_new(&s2, 2, 10, NULL))
+    if (!REQUIRE(ic_jet_space_new(&s1, 1, K, NULL) == IC_OK &&
+                     ic_jet_space_new(&s2, 2, 10, NULL) == IC_OK,
+                 "the jet spaces of the reversion test")) {
+        ic_jet_space_free(s1);
+        ic_jet_space_free(s2);
         return;
+    }
     double scratch[(K + 20) * 153];
     double f[17], g[17], h[17], y[17];
     /* f(x) = sin(x) + x^2/3: revert twice gives f back; f(g(y)) = y */
@@ -260,7 +279,7 @@ static void test_reversion(harness_rng *rng)
 static void test_domain_errors(void)
 {
     ic_jet_space *sp = NULL;
-    if (ic_jet_space_new(&sp, 2, 3, NULL) != IC_OK)
+    if (!REQUIRE(ic_jet_space_new(&sp, 2, 3, NULL) == IC_OK, "jet space of 2 variables, order 3"))
         return;
     double a[10], b[10], r[10], scratch[40 * 10];
     ic_error err;

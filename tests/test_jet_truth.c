@@ -49,15 +49,16 @@ int main(int argc, char **argv)
 {
     const char *path = argc > 1 ? argv[1] : "tests/truth/jet_truth.txt";
     FILE *f = fopen(path, "r");
-    if (!f) {
-        fprintf(stderr, "cannot open %s\n", path);
-        return 1;
-    }
+    if (!REQUIRE(f != NULL, "cannot open the truth file %s", path))
+        return harness_finish("test_jet_truth");
     static double a[MAXN], b[MAXN], want[MAXN], got[MAXN];
     char line[256];
     int expected = -1;
-    if (!fgets(line, sizeof line, f)) /* header comment: "...; N cases" */
-        return 1;
+    /* the header comment: "...; N cases" */
+    if (!REQUIRE(fgets(line, sizeof line, f) != NULL, "%s: no header line", path)) {
+        fclose(f);
+        return harness_finish("test_jet_truth");
+    }
     const char *semi = strrchr(line, ';');
     if (semi)
         expected = atoi(semi + 1);
@@ -67,16 +68,20 @@ int main(int argc, char **argv)
     int m, K;
     while (fscanf(f, " case %31s %d %d %31s", name, &m, &K, param) == 4) {
         ic_jet_space *sp = NULL;
-        if (ic_jet_space_new(&sp, m, K, NULL) != IC_OK)
-            return 1;
+        if (!REQUIRE(ic_jet_space_new(&sp, m, K, NULL) == IC_OK,
+                     "case %s: jet space of %d variables, order %d", name, m, K))
+            break;
         const int n = ic_jet_space_len(sp);
         const int binary = !strcmp(name, "mul") || !strcmp(name, "div") || !strcmp(name, "atan2");
-        if (read_coefs(f, 'a', a, n) || (binary && read_coefs(f, 'b', b, n)) ||
-            read_coefs(f, 'r', want, n)) {
-            fprintf(stderr, "malformed truth file at case %s\n", name);
-            return 1;
-        }
         double *scratch = malloc(ic_jet_scratch_len(sp) * sizeof *scratch);
+        if (!REQUIRE(!read_coefs(f, 'a', a, n) && !(binary && read_coefs(f, 'b', b, n)) &&
+                         !read_coefs(f, 'r', want, n),
+                     "malformed truth file at case %s", name) ||
+            !REQUIRE(scratch != NULL, "case %s: no memory for the scratch", name)) {
+            free(scratch);
+            ic_jet_space_free(sp);
+            break;
+        }
         ic_status st = apply(name, param, got, a, binary ? b : NULL, sp, scratch);
         CHECK(st == IC_OK, "%s in %d vars order %d: status %d", name, m, K, st);
         /* Tolerance: the degree-d coefficient is a sum of O(d) products of

@@ -41,67 +41,85 @@ static void compare_derivs(const char *name, ic_surface *s, const double *at, in
     }
 }
 
+/* A malformed truth file: a failed check saying where; returns -1. */
+static int bad_truth(const char *path, const char *case_name, const char *what)
+{
+    CHECK(0, "%s, case %s: %s", path, case_name, what);
+    return -1;
+}
+
+/* One case of the truth file (kind and name read): its formula, point and
+ * derivatives, compared with the surface's. 0, or -1 on a malformed case. */
+static int truth_case(FILE *f, const char *path, const char *kind, const char *name,
+                      const ic_jet_space *s2, const ic_jet_space *s3)
+{
+    char line[4096];
+    const int parametric = strcmp(kind, "parametric") == 0;
+    const ic_jet_space *sp = parametric ? s2 : s3;
+    const int n = ic_jet_space_len(sp), nout = parametric ? 3 : 1;
+    char formula[1024];
+    if (!fgets(line, sizeof line, f) || strncmp(line, "formula ", 8) != 0)
+        return bad_truth(path, name, "no formula line");
+    snprintf(formula, sizeof formula, "%s", line + 8);
+    formula[strcspn(formula, "\n")] = '\0';
+    double at[3];
+    if (!fgets(line, sizeof line, f) ||
+        sscanf(line, "at %lf %lf %lf", &at[0], &at[1], &at[2]) < (parametric ? 2 : 3))
+        return bad_truth(path, name, "no point line");
+    double want[84][3];
+    for (int i = 0; i < n; i++) {
+        int e[3];
+        if (!fgets(line, sizeof line, f))
+            return bad_truth(path, name, "fewer derivatives than the space holds");
+        if (parametric ? sscanf(line, "d %d %d %lf %lf %lf", &e[0], &e[1], &want[i][0],
+                                &want[i][1], &want[i][2]) != 5
+                       : sscanf(line, "d %d %d %d %lf", &e[0], &e[1], &e[2], &want[i][0]) != 4)
+            return bad_truth(path, name, "a malformed derivative line");
+        CHECK(ic_jet_index(sp, e) == i, "%s: monomial order of the truth file", name);
+    }
+    ic_surface *s = NULL;
+    ic_error err;
+    ic_status st;
+    if (parametric) {
+        char *parts[3], *save = NULL;
+        parts[0] = strtok_r(formula, ";", &save);
+        parts[1] = strtok_r(NULL, ";", &save);
+        parts[2] = strtok_r(NULL, ";", &save);
+        const char *xyz[3] = {parts[0], parts[1], parts[2]};
+        st = ic_surface_new_parametric(&s, xyz, NULL, NULL, 0, NULL, &err);
+    } else {
+        st = ic_surface_new_implicit(&s, formula, NULL, 0, &err);
+    }
+    CHECK(st == IC_OK, "%s compiles: %s", name, err.message);
+    if (st == IC_OK)
+        compare_derivs(name, s, at, nout, want, sp);
+    ic_surface_free(s);
+    return 0;
+}
+
+/* Every case of the truth file; returns the number read, -1 (a failed
+ * check) when the file cannot be read. */
 static int test_truth_file(const char *path)
 {
     FILE *f = fopen(path, "r");
-    if (!f) {
-        fprintf(stderr, "cannot open %s\n", path);
+    if (!REQUIRE(f != NULL, "cannot open %s", path))
         return -1;
-    }
     ic_jet_space *s2 = NULL, *s3 = NULL;
-    if (ic_jet_space_new(&s2, 2, ORDER, NULL) || ic_jet_space_new(&s3, 3, ORDER, NULL))
-        return -1;
     char line[4096], kind[32], name[64];
     int cases = 0;
-    if (!fgets(line, sizeof line, f))
-        return -1;
-    while (fgets(line, sizeof line, f) && strncmp(line, "end", 3) != 0) {
+    if (!REQUIRE(ic_jet_space_new(&s2, 2, ORDER, NULL) == IC_OK &&
+                     ic_jet_space_new(&s3, 3, ORDER, NULL) == IC_OK,
+                 "the jet spaces of order %d", ORDER))
+        cases = -1;
+    else if (!fgets(line, sizeof line, f))
+        cases = bad_truth(path, "(header)", "empty file");
+    while (cases >= 0 && fgets(line, sizeof line, f) && strncmp(line, "end", 3) != 0) {
         if (sscanf(line, "%31s %63s", kind, name) != 2)
-            return -1;
-        const int parametric = strcmp(kind, "parametric") == 0;
-        const ic_jet_space *sp = parametric ? s2 : s3;
-        const int n = ic_jet_space_len(sp), nout = parametric ? 3 : 1;
-        char formula[1024];
-        if (!fgets(line, sizeof line, f) || strncmp(line, "formula ", 8) != 0)
-            return -1;
-        snprintf(formula, sizeof formula, "%s", line + 8);
-        formula[strcspn(formula, "\n")] = '\0';
-        double at[3];
-        if (!fgets(line, sizeof line, f) ||
-            sscanf(line, "at %lf %lf %lf", &at[0], &at[1], &at[2]) < (parametric ? 2 : 3))
-            return -1;
-        double want[84][3];
-        for (int i = 0; i < n; i++) {
-            int e[3];
-            if (!fgets(line, sizeof line, f))
-                return -1;
-            if (parametric) {
-                if (sscanf(line, "d %d %d %lf %lf %lf", &e[0], &e[1], &want[i][0], &want[i][1],
-                           &want[i][2]) != 5)
-                    return -1;
-            } else if (sscanf(line, "d %d %d %d %lf", &e[0], &e[1], &e[2], &want[i][0]) != 4) {
-                return -1;
-            }
-            CHECK(ic_jet_index(sp, e) == i, "%s: monomial order of the truth file", name);
-        }
-        ic_surface *s = NULL;
-        ic_error err;
-        ic_status st;
-        if (parametric) {
-            char *parts[3], *save = NULL;
-            parts[0] = strtok_r(formula, ";", &save);
-            parts[1] = strtok_r(NULL, ";", &save);
-            parts[2] = strtok_r(NULL, ";", &save);
-            const char *xyz[3] = {parts[0], parts[1], parts[2]};
-            st = ic_surface_new_parametric(&s, xyz, NULL, NULL, 0, NULL, &err);
-        } else {
-            st = ic_surface_new_implicit(&s, formula, NULL, 0, &err);
-        }
-        CHECK(st == IC_OK, "%s compiles: %s", name, err.message);
-        if (st == IC_OK)
-            compare_derivs(name, s, at, nout, want, sp);
-        ic_surface_free(s);
-        cases++;
+            cases = bad_truth(path, "(next)", "no 'kind name' line");
+        else if (truth_case(f, path, kind, name, s2, s3) != 0)
+            cases = -1;
+        else
+            cases++;
     }
     fclose(f);
     ic_jet_space_free(s2);
@@ -193,9 +211,13 @@ static void test_primitives_match_formulas(harness_rng *rng)
         "((x-0.3)^2 + (y+1.2)^2 + (z-0.7)^2 + 3.75)^2 - 16*((x-0.3)^2 + (y+1.2)^2)",
         "(x-0.3)^2/2.25 + (y+1.2)^2/0.64 + (z-0.7)^2/1.21 - 1",
     };
-    ic_jet_space *s2 = NULL, *s3 = NULL;
-    if (ic_jet_space_new(&s2, 2, ORDER, NULL) || ic_jet_space_new(&s3, 3, ORDER, NULL))
-        return;
+    ic_jet_space *s2 = NULL, *s3 = NULL, *s1 = NULL, *first = NULL;
+    if (!REQUIRE(ic_jet_space_new(&s2, 2, ORDER, NULL) == IC_OK &&
+                     ic_jet_space_new(&s3, 3, ORDER, NULL) == IC_OK &&
+                     ic_jet_space_new(&s1, 1, 12, NULL) == IC_OK &&
+                     ic_jet_space_new(&first, 2, 1, NULL) == IC_OK,
+                 "the jet spaces of the primitives' test"))
+        goto done;
     for (int i = 0; i < 6; i++) {
         for (int form = 0; form < 2; form++) {
             ic_surface *p = NULL, *q = NULL;
@@ -208,14 +230,15 @@ static void test_primitives_match_formulas(harness_rng *rng)
             else
                 CHECK(ic_surface_new_parametric(&q, par[i], NULL, NULL, 0, NULL, &err) == IC_OK,
                       "%s", err.message);
-            if (!p || !q)
+            if (!p || !q) {
+                ic_surface_free(p);
+                ic_surface_free(q);
                 continue;
+            }
             const ic_jet_space *sp = form ? s3 : s2;
             const int n = ic_jet_space_len(sp), nout = form ? 1 : 3;
-            ic_jet_space *first = NULL;
-            if (!form && ic_jet_space_new(&first, 2, 1, NULL) == IC_OK)
+            if (!form)
                 check_param_intervals(i, p, q, first, rng);
-            ic_jet_space_free(first);
             for (int trial = 0; trial < 10; trial++) {
                 double at[3], a[3 * 84], b[3 * 84];
                 for (int k = 0; k < 3; k++)
@@ -234,8 +257,7 @@ static void test_primitives_match_formulas(harness_rng *rng)
                       i, form, worst / scale);
             }
             /* composition with a curve jet: primitives use jet arithmetic */
-            ic_jet_space *s1 = NULL;
-            if (ic_jet_space_new(&s1, 1, 12, NULL) == IC_OK) {
+            {
                 double curve[3][13] = {{0}}, a[39], b[39];
                 for (int k = 0; k < 3; k++) {
                     curve[k][0] = harness_uniform(rng, -1.4, 1.4);
@@ -254,11 +276,13 @@ static void test_primitives_match_formulas(harness_rng *rng)
                 CHECK(worst <= 32 * DBL_EPSILON * scale,
                       "primitive %d form %d composed vs formula: %g", i, form, worst / scale);
             }
-            ic_jet_space_free(s1);
             ic_surface_free(p);
             ic_surface_free(q);
         }
     }
+done:
+    ic_jet_space_free(s1);
+    ic_jet_space_free(first);
     ic_jet_space_free(s2);
     ic_jet_space_free(s3);
 }
@@ -272,7 +296,11 @@ static ic_surface *primitive(ic_primitive_kind kind, ic_surface_kind form, doubl
     p.major_radius = R;
     p.half_angle = 0.5;
     ic_surface *s = NULL;
-    return ic_surface_new_primitive(&s, &p, form, NULL) == IC_OK ? s : NULL;
+    ic_error err;
+    return REQUIRE(ic_surface_new_primitive(&s, &p, form, &err) == IC_OK, "primitive %d: %s",
+                   (int)kind, err.message)
+               ? s
+               : NULL;
 }
 
 /* Principal curvatures in closed form (outward normals: -1/r on a sphere). */
@@ -281,6 +309,8 @@ static void test_principal_curvatures(void)
     const double tier = 8 * DBL_EPSILON; /* a few roundings of O(1) values */
     ic_surface_geometry g;
     ic_surface *s = primitive(IC_PRIM_SPHERE, IC_PARAMETRIC, 2.5, 0);
+    if (!s)
+        return;
     const double uv[2] = {0.3, 0.4};
     CHECK(ic_surface_geometry_at(s, &g, uv, NULL) == IC_OK, "sphere geometry");
     CHECK_ABS(g.principal_curvatures[0], -0.4, tier, "sphere k1");
@@ -294,6 +324,8 @@ static void test_principal_curvatures(void)
     ic_surface_free(s);
 
     s = primitive(IC_PRIM_SPHERE, IC_IMPLICIT, 2.5, 0);
+    if (!s)
+        return;
     const double p[3] = {1.5, 2.0, 0.0};
     CHECK(ic_surface_geometry_at(s, &g, p, NULL) == IC_OK, "implicit sphere");
     CHECK_ABS(g.principal_curvatures[0], -0.4, tier, "implicit sphere k1");
@@ -302,6 +334,8 @@ static void test_principal_curvatures(void)
     ic_surface_free(s);
 
     s = primitive(IC_PRIM_CYLINDER, IC_PARAMETRIC, 1.5, 0);
+    if (!s)
+        return;
     CHECK(ic_surface_geometry_at(s, &g, uv, NULL) == IC_OK, "cylinder");
     CHECK_ABS(g.principal_curvatures[0], 0.0, tier, "cylinder k1");
     CHECK_ABS(g.principal_curvatures[1], -1.0 / 1.5, tier, "cylinder k2");
@@ -309,6 +343,8 @@ static void test_principal_curvatures(void)
     ic_surface_free(s);
 
     s = primitive(IC_PRIM_CYLINDER, IC_IMPLICIT, 1.5, 0);
+    if (!s)
+        return;
     const double q[3] = {0.9, 1.2, 7.0};
     CHECK(ic_surface_geometry_at(s, &g, q, NULL) == IC_OK, "implicit cylinder");
     CHECK_ABS(g.principal_curvatures[0], 0.0, tier, "implicit cylinder k1");
@@ -318,6 +354,8 @@ static void test_principal_curvatures(void)
     /* torus R = 2, r = 0.5 at v: -1/r along meridians, -cos v/(R + r cos v) */
     for (int form = 0; form < 2; form++) {
         s = primitive(IC_PRIM_TORUS, form ? IC_IMPLICIT : IC_PARAMETRIC, 0.5, 2.0);
+        if (!s)
+            return;
         const double u = 0.7, v = 2.3;
         const double at_uv[2] = {u, v};
         const double w = 2.0 + 0.5 * cos(v);
@@ -330,6 +368,8 @@ static void test_principal_curvatures(void)
     }
     /* cone apex (implicit): grad f = 0 */
     s = primitive(IC_PRIM_CONE, IC_IMPLICIT, 0, 0);
+    if (!s)
+        return;
     const double apex[3] = {0, 0, 0};
     CHECK(ic_surface_geometry_at(s, &g, apex, &err) == IC_ERR_DOMAIN, "cone apex degenerate");
     ic_surface_free(s);
@@ -365,8 +405,11 @@ static void test_callback_and_compose(void)
     CHECK(ic_surface_new_callback(&cb, IC_PARAMETRIC, paraboloid, NULL, NULL) == IC_OK, "cb");
     CHECK(ic_surface_new_parametric(&fm, xyz, NULL, NULL, 0, NULL, NULL) == IC_OK, "formula");
     ic_jet_space *s1 = NULL;
-    if (!cb || !fm || ic_jet_space_new(&s1, 1, 8, NULL) != IC_OK)
+    if (!cb || !fm || !REQUIRE(ic_jet_space_new(&s1, 1, 8, NULL) == IC_OK, "jet space of order 8")) {
+        ic_surface_free(cb);
+        ic_surface_free(fm);
         return;
+    }
     /* a parameter curve u = 0.4 + s - s^2, v = -0.3 + 2 s */
     double u[9] = {0.4, 1.0, -1.0}, v[9] = {-0.3, 2.0}, a[27], b[27];
     for (int i = 3; i < 9; i++)
@@ -413,11 +456,12 @@ static void test_invalid(void)
               which == 2,
           "unknown identifier in z: which = %d", which);
     const char *ok[3] = {"u", "v", "0"};
-    CHECK(ic_surface_new_parametric(&s, ok, NULL, NULL, 0, NULL, NULL) == IC_OK, "plane");
+    if (!REQUIRE(ic_surface_new_parametric(&s, ok, NULL, NULL, 0, NULL, NULL) == IC_OK, "plane"))
+        return;
     const double empty[2][2] = {{1, 0}, {0, 1}};
     CHECK(ic_surface_set_domain(s, empty, NULL, &err) == IC_ERR_INVALID, "empty domain");
     ic_jet_space *s3 = NULL;
-    if (ic_jet_space_new(&s3, 3, 2, NULL) == IC_OK) {
+    if (REQUIRE(ic_jet_space_new(&s3, 3, 2, NULL) == IC_OK, "jet space of 3 variables")) {
         double out[30];
         const double at[3] = {0, 0, 0};
         CHECK(ic_surface_taylor(s, out, at, s3, &err) == IC_ERR_INVALID, "wrong space");

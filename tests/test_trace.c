@@ -23,26 +23,32 @@ static void test_circle(int parametric_sphere, double tol)
 {
     ic_surface *A = NULL, *B = NULL;
     const char *sph[3] = {"2*cos(u)*cos(v)", "2*sin(u)*cos(v)", "2*sin(v)"};
-    if (parametric_sphere) {
-        const double dom[2][2] = {{-3.141592653589793, 3.141592653589793},
-                                  {-1.5707963267948966, 1.5707963267948966}};
-        const int per[2] = {1, 0};
-        if (ic_surface_new_parametric(&A, sph, NULL, NULL, 0, NULL, NULL) ||
-            ic_surface_set_domain(A, dom, per, NULL))
-            return;
-    } else if (ic_surface_new_implicit(&A, "x^2 + y^2 + z^2 - 4", NULL, 0, NULL)) {
-        return;
-    }
     ic_pair *pair = NULL;
     ic_tracer *tr = NULL;
     ic_trace_options opt;
     ic_trace_defaults(&opt);
     opt.tol = tol;
-    if (ic_surface_new_implicit(&B, "z - 1", NULL, 0, NULL) || ic_pair_new(&pair, A, B, NULL) ||
-        ic_tracer_new(&tr, pair, &opt, NULL))
-        return;
-    ic_local_point pt;
     ic_error err;
+    ic_status st;
+    if (parametric_sphere) {
+        const double dom[2][2] = {{-3.141592653589793, 3.141592653589793},
+                                  {-1.5707963267948966, 1.5707963267948966}};
+        const int per[2] = {1, 0};
+        st = ic_surface_new_parametric(&A, sph, NULL, NULL, 0, NULL, &err);
+        if (st == IC_OK)
+            st = ic_surface_set_domain(A, dom, per, &err);
+    } else {
+        st = ic_surface_new_implicit(&A, "x^2 + y^2 + z^2 - 4", NULL, 0, &err);
+    }
+    if (st == IC_OK)
+        st = ic_surface_new_implicit(&B, "z - 1", NULL, 0, &err);
+    if (st == IC_OK)
+        st = ic_pair_new(&pair, A, B, &err);
+    if (st == IC_OK)
+        st = ic_tracer_new(&tr, pair, &opt, &err);
+    if (!REQUIRE(st == IC_OK, "circle: surfaces, pair and tracer: %s", err.message))
+        goto done;
+    ic_local_point pt;
     const double X0[3] = {sqrt(3.0), 0, 1};
     ic_trace_event ev = IC_TRACE_FAILED;
     CHECK(ic_local_locate(pair, &pt, X0, &opt.local, &err) == IC_OK, "locate: %s", err.message);
@@ -66,8 +72,10 @@ static void test_circle(int parametric_sphere, double tol)
     }
     CHECK(worst_on <= 1e-12, "points on the circle to %g", worst_on);
     CHECK(worst_k <= 1e-10, "kappa and tau along the circle to %g", worst_k);
-    printf("circle (%s sphere), tol %g: %d points, length error %.2g\n",
-           parametric_sphere ? "parametric" : "implicit", tol, n, fabs(last->s - L));
+    if (last)
+        printf("circle (%s sphere), tol %g: %d points, length error %.2g\n",
+               parametric_sphere ? "parametric" : "implicit", tol, n, fabs(last->s - L));
+done:
     ic_tracer_free(tr);
     ic_pair_free(pair);
     ic_surface_free(A);
@@ -86,13 +94,15 @@ static void test_helix(void)
     ic_trace_options opt;
     ic_trace_defaults(&opt);
     const double dom[2][2] = {{-1, 7}, {0.5, 1.5}};
-    if (ic_surface_new_implicit(&A, "x^2 + y^2 - 1", NULL, 0, NULL) ||
-        ic_surface_new_parametric(&B, hel, NULL, NULL, 0, NULL, NULL) ||
-        ic_surface_set_domain(B, dom, NULL, NULL) || ic_pair_new(&pair, A, B, NULL) ||
-        ic_tracer_new(&tr, pair, &opt, NULL))
-        return;
-    ic_local_point pt;
     ic_error err;
+    if (!REQUIRE(ic_surface_new_implicit(&A, "x^2 + y^2 - 1", NULL, 0, &err) == IC_OK &&
+                     ic_surface_new_parametric(&B, hel, NULL, NULL, 0, NULL, &err) == IC_OK &&
+                     ic_surface_set_domain(B, dom, NULL, &err) == IC_OK &&
+                     ic_pair_new(&pair, A, B, &err) == IC_OK &&
+                     ic_tracer_new(&tr, pair, &opt, &err) == IC_OK,
+                 "helix: surfaces, pair and tracer: %s", err.message))
+        goto done;
+    ic_local_point pt;
     const double params[2] = {0, 1};
     ic_trace_event ev = IC_TRACE_FAILED;
     CHECK(ic_local_locate_params(pair, &pt, params, 2, &opt.local, &err) == IC_OK, "%s",
@@ -122,6 +132,7 @@ static void test_helix(void)
     }
     CHECK(worst <= 1e-9, "helix: kappa 0.8, tau 0.4 and z(s) to %g", worst);
     printf("helix: %d points, worst %.2g\n", n, worst);
+done:
     ic_tracer_free(tr);
     ic_pair_free(pair);
     ic_surface_free(A);
@@ -139,12 +150,14 @@ static void test_self_intersection(void)
     ic_trace_options opt;
     ic_trace_defaults(&opt);
     const double dom[2][2] = {{-5, 5}, {-5, 5}};
-    if (ic_surface_new_parametric(&A, enn, NULL, NULL, 0, NULL, NULL) ||
-        ic_surface_set_domain(A, dom, NULL, NULL) || ic_pair_new(&pair, A, NULL, NULL) ||
-        ic_tracer_new(&tr, pair, &opt, NULL))
-        return;
-    ic_local_point pt;
     ic_error err;
+    if (!REQUIRE(ic_surface_new_parametric(&A, enn, NULL, NULL, 0, NULL, &err) == IC_OK &&
+                     ic_surface_set_domain(A, dom, NULL, &err) == IC_OK &&
+                     ic_pair_new(&pair, A, NULL, &err) == IC_OK &&
+                     ic_tracer_new(&tr, pair, &opt, &err) == IC_OK,
+                 "Enneper: surface, pair and tracer: %s", err.message))
+        goto done;
+    ic_local_point pt;
     const double params[4] = {sqrt(2.0), 3, sqrt(2.0), -3};
     ic_trace_event ev = IC_TRACE_FAILED;
     CHECK(ic_local_locate_params(pair, &pt, params, 4, &opt.local, &err) == IC_OK, "%s",
@@ -169,6 +182,7 @@ static void test_self_intersection(void)
                ic_tracer_num_points(tr), ic_tracer_point(tr, ic_tracer_num_points(tr) - 1)->s,
                worst);
     }
+done:
     ic_tracer_free(tr);
     ic_pair_free(pair);
     ic_surface_free(A);
@@ -184,12 +198,14 @@ static void test_tangential_stop(void)
     ic_tracer *tr = NULL;
     ic_trace_options opt;
     ic_trace_defaults(&opt);
-    if (ic_surface_new_implicit(&A, "(x - 1)^2 + y^2 - 1", NULL, 0, NULL) ||
-        ic_surface_new_implicit(&B, "x^2 + y^2 + z^2 - 4", NULL, 0, NULL) ||
-        ic_pair_new(&pair, A, B, NULL) || ic_tracer_new(&tr, pair, &opt, NULL))
-        return;
-    ic_local_point pt;
     ic_error err;
+    if (!REQUIRE(ic_surface_new_implicit(&A, "(x - 1)^2 + y^2 - 1", NULL, 0, &err) == IC_OK &&
+                     ic_surface_new_implicit(&B, "x^2 + y^2 + z^2 - 4", NULL, 0, &err) == IC_OK &&
+                     ic_pair_new(&pair, A, B, &err) == IC_OK &&
+                     ic_tracer_new(&tr, pair, &opt, &err) == IC_OK,
+                 "Viviani: surfaces, pair and tracer: %s", err.message))
+        goto done;
+    ic_local_point pt;
     const double X0[3] = {1.5, 0.8660254037844386, 1};
     ic_trace_event ev = IC_TRACE_FAILED;
     CHECK(ic_local_locate(pair, &pt, X0, &opt.local, &err) == IC_OK, "locate");
@@ -211,6 +227,7 @@ static void test_tangential_stop(void)
         CHECK(worst <= 1e-12, "Viviani points on both surfaces to %g", worst);
     }
     CHECK(stopped == 2, "both directions stop at the branch point as tangential");
+done:
     ic_tracer_free(tr);
     ic_pair_free(pair);
     ic_surface_free(A);
@@ -237,6 +254,7 @@ static ic_trace_result *trace_pair(const char *f, const char *g, double box, ic_
         *st = ic_pair_new(pair, *A, *B, &err);
     if (*st == IC_OK)
         *st = ic_trace(&res, *pair, &opt, &err);
+    CHECK(*st == IC_OK, "%s and %s traced: %s", f, g, err.message);
     return res;
 }
 
@@ -380,9 +398,14 @@ static void test_whole_self(void)
     ic_trace_options opt;
     ic_trace_defaults(&opt);
     ic_error err;
-    if (ic_surface_new_parametric(&A, enn, NULL, NULL, 0, NULL, NULL) ||
-        ic_surface_set_domain(A, dom, NULL, NULL) || ic_pair_new(&pair, A, NULL, NULL))
+    if (!REQUIRE(ic_surface_new_parametric(&A, enn, NULL, NULL, 0, NULL, &err) == IC_OK &&
+                     ic_surface_set_domain(A, dom, NULL, &err) == IC_OK &&
+                     ic_pair_new(&pair, A, NULL, &err) == IC_OK,
+                 "Enneper: surface and pair: %s", err.message)) {
+        ic_pair_free(pair);
+        ic_surface_free(A);
         return;
+    }
     CHECK(ic_trace(&r, pair, &opt, &err) == IC_OK, "Enneper self-intersection: %s", err.message);
     CHECK(ic_trace_result_num_curves(r) == 2, "Enneper: two double curves, not %d",
           ic_trace_result_num_curves(r));
@@ -447,11 +470,18 @@ static void test_whole_parametric(int implicit_cylinder)
     ic_trace_defaults(&opt);
     ic_error err;
     /* the cylinder as a parametric patch, or implicit (the fourth pairing) */
-    if ((implicit_cylinder ? ic_surface_new_implicit(&A, "(x - 1)^2 + y^2 - 1", NULL, 0, NULL)
-                           : ic_surface_new_parametric(&A, cyl, NULL, NULL, 0, NULL, NULL) ||
-                                 ic_surface_set_domain(A, dc, pc, NULL)) ||
-        ic_surface_new_parametric(&B, sph, NULL, NULL, 0, NULL, NULL) ||
-        ic_surface_set_domain(B, ds, ps, NULL) || ic_pair_new(&pair, A, B, NULL))
+    ic_status st = implicit_cylinder
+                       ? ic_surface_new_implicit(&A, "(x - 1)^2 + y^2 - 1", NULL, 0, &err)
+                       : ic_surface_new_parametric(&A, cyl, NULL, NULL, 0, NULL, &err);
+    if (st == IC_OK && !implicit_cylinder)
+        st = ic_surface_set_domain(A, dc, pc, &err);
+    if (st == IC_OK)
+        st = ic_surface_new_parametric(&B, sph, NULL, NULL, 0, NULL, &err);
+    if (st == IC_OK)
+        st = ic_surface_set_domain(B, ds, ps, &err);
+    if (st == IC_OK)
+        st = ic_pair_new(&pair, A, B, &err);
+    if (!REQUIRE(st == IC_OK, "parametric Viviani: surfaces and pair: %s", err.message))
         goto done;
     CHECK(ic_trace(&r, pair, &opt, &err) == IC_OK, "parametric Viviani: %s", err.message);
     CHECK(ic_trace_result_num_curves(r) == 1 && ic_trace_result_num_specials(r) == 1,

@@ -101,10 +101,12 @@ static void test_tolerances(void)
         ic_trace_options opt;
         ic_trace_defaults(&opt);
         opt.tol = tols[k];
-        if (ic_surface_new_parametric(&t.A, enn, NULL, NULL, 0, NULL, NULL) ||
-            ic_surface_set_domain(t.A, dom, NULL, NULL) || ic_pair_new(&t.pair, t.A, NULL, NULL) ||
-            ic_trace(&t.res, t.pair, &opt, NULL)) {
-            CHECK(0, "Enneper at tol %g traced", tols[k]);
+        ic_error err;
+        if (!REQUIRE(ic_surface_new_parametric(&t.A, enn, NULL, NULL, 0, NULL, &err) == IC_OK &&
+                         ic_surface_set_domain(t.A, dom, NULL, &err) == IC_OK &&
+                         ic_pair_new(&t.pair, t.A, NULL, &err) == IC_OK &&
+                         ic_trace(&t.res, t.pair, &opt, &err) == IC_OK,
+                     "Enneper at tol %g traced: %s", tols[k], err.message)) {
             release(&t);
             continue;
         }
@@ -163,10 +165,12 @@ static void test_budget(void)
     opt.has_box = 1;
     for (int k = 0; k < 3; k++)
         opt.box[k][0] = -3, opt.box[k][1] = 3;
-    if (ic_surface_new_implicit(&t.A, "x^2 + y^2 + z^2 - 4", NULL, 0, NULL) ||
-        ic_surface_new_implicit(&t.B, "z - 1", NULL, 0, NULL) ||
-        ic_pair_new(&t.pair, t.A, t.B, NULL) || ic_trace(&t.res, t.pair, &opt, NULL)) {
-        CHECK(0, "budget case traced");
+    ic_error err;
+    if (!REQUIRE(ic_surface_new_implicit(&t.A, "x^2 + y^2 + z^2 - 4", NULL, 0, &err) == IC_OK &&
+                     ic_surface_new_implicit(&t.B, "z - 1", NULL, 0, &err) == IC_OK &&
+                     ic_pair_new(&t.pair, t.A, t.B, &err) == IC_OK &&
+                     ic_trace(&t.res, t.pair, &opt, &err) == IC_OK,
+                 "budget case traced: %s", err.message)) {
         release(&t);
         return;
     }

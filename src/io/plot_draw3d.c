@@ -315,12 +315,14 @@ static int overlaps(const rect *a, const rect *r, int n)
     return 0;
 }
 
-static void draw_specials(ctx3d *c)
+/* The special points, labelled by type; -1 out of memory (before: drawn
+ * without them; tests/test_nomem.c, "writers"). */
+static int draw_specials(ctx3d *c)
 {
     const int n = ic_trace_result_num_specials(c->trace);
     rect *placed = calloc((size_t)n + 1, sizeof *placed);
     if (!placed)
-        return;
+        return -1;
     int np = 0;
     for (int i = 0; i < n; i++) {
         const ic_trace_special *sp = ic_trace_result_special(c->trace, i);
@@ -356,6 +358,7 @@ static void draw_specials(ctx3d *c)
         ic_plot_text(c->cr, r.x0 + 2, r.y0 + 2, 12, 0, label, 0, 0);
     }
     free(placed);
+    return 0;
 }
 
 /* The box of the picture: the scene's, else around the parametric meshes
@@ -510,8 +513,12 @@ ic_status ic_plot_draw_3d(cairo_t *cr, const ic_plot_scene *scene, const ic_plot
         else
             draw_arrow(&c, pr[i].a, pr[i].b, pr[i].c);
     }
-    if (c.trace)
-        draw_specials(&c);
+    if (c.trace && draw_specials(&c) != 0) {
+        free(pr);
+        free(frames);
+        free(c.mesh.t);
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory drawing");
+    }
     if (nc > 0)
         draw_colorbar(&c, x + w - 95, y + 60, fmin(260, h - 160));
     draw_legend(&c, scene, x + 20, y + h - 18, nf);

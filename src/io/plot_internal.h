@@ -63,8 +63,8 @@ void ic_plot_tick_label(char *buf, size_t size, double v, double step);
 /* The 3D panel in the rectangle (x, y, w, h). */
 ic_status ic_plot_draw_3d(cairo_t *cr, const ic_plot_scene *scene, const ic_plot_options *opt,
                           double x, double y, double w, double h, ic_error *err);
-/* The chart of curvature and torsion against arc length. */
-void ic_plot_draw_chart(cairo_t *cr, const ic_trace_result *trace, double x, double y, double w,
-                        double h);
+/* The chart of curvature and torsion against arc length; -1 out of memory. */
+int ic_plot_draw_chart(cairo_t *cr, const ic_trace_result *trace, double x, double y, double w,
+                       double h);
 
 #endif

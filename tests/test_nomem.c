@@ -410,30 +410,50 @@ static ic_status trace_tangential(ic_error *err, char *summary)
     return trace(&cylinder, &plane, 3, err, summary);
 }
 
-/* the marching core alone: the circle of the sphere and the plane z = 1 */
-static ic_status tracer(ic_error *err, char *summary)
+/* The marching core alone: Viviani's curve from (1.5, sqrt(3)/2, 1) into its
+ * branch point (2, 0, 0) both ways (the march shortens its step before it),
+ * or (tangential) the line where the unit cylinder touches the plane x = 1,
+ * classified at every step, to the box. */
+static ic_status march(int tangential, ic_error *err, char *summary)
 {
+    const surface_def cylinder = {{"x^2 + y^2 - 1"}, {{0}}, {0}};
+    const surface_def plane = {{"x - 1"}, {{0}}, {0}};
     made_pair m;
-    ic_status st = make_pair(&m, &SPHERE_I, &PLANE_I, err);
+    ic_status st = tangential ? make_pair(&m, &cylinder, &plane, err)
+                              : make_pair(&m, &CYLINDER_I, &SPHERE_I, err);
     ic_trace_options opt;
     ic_trace_defaults(&opt);
+    opt.has_box = 1;
+    for (int k = 0; k < 3; k++)
+        opt.box[k][0] = -2.5, opt.box[k][1] = 2.5;
     ic_tracer *tr = NULL;
     ic_local_point pt;
-    const double X0[3] = {sqrt(3.0), 0, 1};
+    const double X0[3] = {tangential ? 1 : 1.5, tangential ? 0 : 0.8660254037844386,
+                          tangential ? 0.3 : 1};
     ic_trace_event ev = IC_TRACE_FAILED;
     if (st == IC_OK)
         st = ic_tracer_new(&tr, m.pair, &opt, err);
     if (st == IC_OK)
         st = ic_local_locate(m.pair, &pt, X0, &opt.local, err);
-    if (st == IC_OK)
-        st = ic_tracer_start(tr, &pt, 1, err);
-    if (st == IC_OK)
-        st = ic_tracer_run(tr, &ev, err);
-    if (st == IC_OK)
-        say(summary, "%s after %d points", ic_trace_event_name(ev), ic_tracer_num_points(tr));
+    for (int dir = -1; st == IC_OK && dir <= 1; dir += 2) {
+        st = ic_tracer_start(tr, &pt, dir, err);
+        if (st == IC_OK)
+            st = ic_tracer_run(tr, &ev, err);
+        const int n = ic_tracer_num_points(tr);
+        if (st == IC_OK)
+            say(summary, "%s after %d points at %.17g; ", ic_trace_event_name(ev), n,
+                ic_tracer_point(tr, n - 1)->xyz[0]);
+    }
     ic_tracer_free(tr);
     free_pair(&m);
     return st;
+}
+
+static ic_status tracer(ic_error *err, char *summary) { return march(0, err, summary); }
+
+static ic_status tracer_tangential(ic_error *err, char *summary)
+{
+    return march(1, err, summary);
 }
 
 static ic_status problem_file(ic_error *err, char *summary)
@@ -644,6 +664,7 @@ int main(int argc, char **argv)
         {"apparatus, transversal", apparatus_transversal},
         {"apparatus, tangential", apparatus_tangential},
         {"tracer", tracer},
+        {"tracer, tangential", tracer_tangential},
         {"trace, implicit", trace_implicit},
         {"trace, mixed", trace_mixed},
         {"trace, parametric", trace_parametric},

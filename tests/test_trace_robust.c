@@ -20,9 +20,9 @@ static int total_points(const ic_trace_result *r)
     return n;
 }
 
-/* The issue's 1e-9 relative on lengths, at every tolerance from 1e-6 to
- * 1e-12 (measured worst 8e-10: Enneper at tol 1e-6). */
-static double length_bound(double L) { return 1e-9 * L; }
+/* The issue's relative bound on lengths (TIER_LENGTH), at every tolerance
+ * from 1e-6 to 1e-12 (measured worst 8e-10: Enneper at tol 1e-6). */
+static double length_bound(double L) { return TIER_LENGTH * L; }
 
 /* Viviani's figure-eight, traced from an implicit cylinder and sphere in a
  * box, or with a parametric cylinder (z = zf(v1), v2 periodic on dom2). */
@@ -74,7 +74,7 @@ static void check_viviani(const traced *t, const char *what)
     CHECK(c->closed && err <= length_bound(L), "%s: length %.17g of %.17g", what, c->length, L);
     /* the branch point solves N_A x N_B = 0 to 1e-12 (linear in the offset) */
     CHECK(sp->type == IC_POINT_BRANCH &&
-              hypot(hypot(sp->xyz[0] - 2, sp->xyz[1]), sp->xyz[2]) <= 1e-12,
+              hypot(hypot(sp->xyz[0] - 2, sp->xyz[1]), sp->xyz[2]) <= TIER_LOCATED,
           "%s: the branch point (2, 0, 0)", what);
     printf("%-44s %5d points, length error %.2g\n", what, c->npoints, err / L);
 }

@@ -17,8 +17,8 @@
 
 #define PI 3.14159265358979323846
 
-/* The docs' promise for lengths (docs/tracing.md). */
-#define LENGTH_REL 1e-9
+/* The docs' promise for lengths (docs/tracing.md, harness.h) */
+#define LENGTH_REL TIER_LENGTH
 
 
 static ic_trace_options box_options(double lo, double hi)

@@ -36,7 +36,15 @@
 #include "intercurve.h"
 #include "nomem_wrap.h"
 
+/* AddressSanitizer, as gcc and clang say it */
 #if defined(__SANITIZE_ADDRESS__)
+#define NOMEM_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define NOMEM_ASAN 1
+#endif
+#endif
+#ifdef NOMEM_ASAN
 #include <sanitizer/lsan_interface.h>
 #define NOMEM_LEAK_CHECK() __lsan_do_recoverable_leak_check()
 #else
@@ -70,8 +78,8 @@ static void say(char *summary, const char *fmt, ...)
     va_end(ap);
 }
 
-/* Two implicit formulas or parametric triples (xyz[1] NULL: implicit
- * xyz[0]), B NULL for a self-intersection; dom: the parametric domain. */
+/* A surface: a parametric triple, or (xyz[1] NULL) the implicit formula
+ * xyz[0]; dom and periodic: the parametric domain (none when dom is empty). */
 typedef struct {
     const char *xyz[3];
     double dom[2][2];

@@ -21,9 +21,10 @@
 
 /* relative (of the box's diagonal L): the place of an exactly evaluated
  * contact. The locator stops at steps of 1e-15 of the unknowns' size and
- * the lengthened steps land within a few of them: 1e-12 L is far below the
- * 1e-8 L beyond which a contact is approximate, and far above rounding. */
-#define PLACE_TOL 1e-12
+ * the lengthened steps land within a few of them: the tier of located points
+ * (harness.h), 1e-12 L, is far below the 1e-8 L beyond which a contact is
+ * approximate, and far above rounding. */
+#define PLACE_TOL TIER_LOCATED
 /* relative (of L): an approximate contact is still the one near the truth
  * (the tracer merges approximate points within 1e-4 L) */
 #define APPROX_TOL 1e-4

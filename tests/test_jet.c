@@ -4,11 +4,6 @@
 #include "harness.h"
 #include "intercurve/jet.h"
 
-/* Tier for identities: a handful of recurrence passes, each within a few
- * ulps per coefficient at O(1) magnitudes (test_jet_truth measures 1.3
- * (d+1) ulps); 1e-14 is ~45 ulps, enough for order 16 and a composition. */
-#define TOL_IDENTITY 1e-14
-
 static double max_abs_diff(const double *a, const double *b, int n)
 {
     double m = 0.0;
@@ -37,7 +32,8 @@ static void sample_jet(double *a, double a0, const ic_jet_space *sp, harness_rng
 static void test_space_layout(void)
 {
     ic_jet_space *sp = NULL;
-    CHECK(ic_jet_space_new(&sp, 3, 6, NULL) == IC_OK, "space 3 vars order 6");
+    if (!REQUIRE(ic_jet_space_new(&sp, 3, 6, NULL) == IC_OK, "space 3 vars order 6"))
+        return;
     CHECK(ic_jet_space_len(sp) == 84, "C(9,3) = 84 coefficients, got %d", ic_jet_space_len(sp));
     for (int i = 0; i < ic_jet_space_len(sp); i++) {
         int alpha[3];
@@ -68,13 +64,20 @@ static void test_space_layout(void)
 static void test_identities(int m, int K, harness_rng *rng)
 {
     ic_jet_space *sp = NULL;
-    if (ic_jet_space_new(&sp, m, K, NULL) != IC_OK)
+    if (!REQUIRE(ic_jet_space_new(&sp, m, K, NULL) == IC_OK, "jet space of %d variables, order %d",
+                 m, K))
         return;
     const int n = ic_jet_space_len(sp);
     double *a = calloc((size_t)n, sizeof *a), *s = calloc((size_t)n, sizeof *s);
     double *c = calloc((size_t)n, sizeof *c), *t = calloc((size_t)n, sizeof *t);
     double *u = calloc((size_t)n, sizeof *u), *one = calloc((size_t)n, sizeof *one);
     double *scratch = malloc(ic_jet_scratch_len(sp) * sizeof *scratch);
+    if (!REQUIRE(a && s && c && t && u && one && scratch, "no memory for jets of %d coefficients",
+                 n)) {
+        free(a), free(s), free(c), free(t), free(u), free(one), free(scratch);
+        ic_jet_space_free(sp);
+        return;
+    }
     ic_jet_set_const(one, 1.0, sp);
     for (int trial = 0; trial < 5 * harness_multiplier(); trial++) {
         sample_jet(a, harness_uniform(rng, 0.2, 1.4), sp, rng);
@@ -82,30 +85,30 @@ static void test_identities(int m, int K, harness_rng *rng)
         ic_jet_mul(t, s, s, sp);
         ic_jet_mul(u, c, c, sp);
         ic_jet_add(t, t, u, sp);
-        CHECK(max_abs_diff(t, one, n) <= TOL_IDENTITY, "sin^2+cos^2 = 1 (%d vars, order %d): %g",
+        CHECK(max_abs_diff(t, one, n) <= TIER_IDENTITY, "sin^2+cos^2 = 1 (%d vars, order %d): %g",
               m, K, max_abs_diff(t, one, n));
         CHECK(ic_jet_log(t, a, sp, NULL) == IC_OK, "log"); /* exp(log a) = a */
         ic_jet_exp(u, t, sp);
         /* relative to the largest coefficient of the intermediate log a */
-        CHECK(max_abs_diff(u, a, n) <= TOL_IDENTITY * mag(t, n), "exp(log a) = a: %g",
+        CHECK(max_abs_diff(u, a, n) <= TIER_IDENTITY * mag(t, n), "exp(log a) = a: %g",
               max_abs_diff(u, a, n) / mag(t, n));
         ic_jet_sinh_cosh(s, c, a, sp); /* cosh^2 - sinh^2 = 1 */
         ic_jet_mul(t, c, c, sp);
         ic_jet_mul(u, s, s, sp);
         ic_jet_sub(t, t, u, sp);
-        CHECK(max_abs_diff(t, one, n) <= 8 * TOL_IDENTITY, "cosh^2-sinh^2 = 1: %g",
+        CHECK(max_abs_diff(t, one, n) <= 8 * TIER_IDENTITY, "cosh^2-sinh^2 = 1: %g",
               max_abs_diff(t, one, n)); /* cosh^2 ~ 4.6: 8x the O(1) tier */
         CHECK(ic_jet_sqrt(t, a, sp, NULL) == IC_OK, "sqrt"); /* sqrt(a)^2 = a */
         ic_jet_mul(u, t, t, sp);
-        CHECK(max_abs_diff(u, a, n) <= TOL_IDENTITY * mag(t, n), "sqrt(a)^2 = a: %g",
+        CHECK(max_abs_diff(u, a, n) <= TIER_IDENTITY * mag(t, n), "sqrt(a)^2 = a: %g",
               max_abs_diff(u, a, n) / mag(t, n));
         ic_jet_scale(t, a, 0.5, sp); /* tan(atan(a/2)) = a/2; asin(sin(a/2)) */
         ic_jet_atan(u, t, sp, scratch);
         CHECK(ic_jet_tan(s, u, sp, scratch, NULL) == IC_OK, "tan");
-        CHECK(max_abs_diff(s, t, n) <= TOL_IDENTITY, "tan(atan x) = x: %g", max_abs_diff(s, t, n));
+        CHECK(max_abs_diff(s, t, n) <= TIER_IDENTITY, "tan(atan x) = x: %g", max_abs_diff(s, t, n));
         ic_jet_sin(u, t, sp, scratch);
         CHECK(ic_jet_asin(s, u, sp, scratch, NULL) == IC_OK, "asin");
-        CHECK(max_abs_diff(s, t, n) <= TOL_IDENTITY, "asin(sin x) = x: %g", max_abs_diff(s, t, n));
+        CHECK(max_abs_diff(s, t, n) <= TIER_IDENTITY, "asin(sin x) = x: %g", max_abs_diff(s, t, n));
         /* a^2.5 / a^1.5 = a on a base with a(0) in [0.9, 2.1]: the pow
          * recurrence divides by a(0) at every degree, so a base near 0 would
          * measure conditioning, not correctness */
@@ -115,7 +118,7 @@ static void test_identities(int m, int K, harness_rng *rng)
         CHECK(ic_jet_pow_real(s, base, 1.5, sp, scratch, NULL) == IC_OK, "pow 1.5");
         CHECK(ic_jet_div(t, u, s, sp, NULL) == IC_OK, "div");
         const double big = fmax(mag(u, n), mag(s, n));
-        CHECK(max_abs_diff(t, base, n) <= 4 * TOL_IDENTITY * big, "a^2.5/a^1.5 = a: %g",
+        CHECK(max_abs_diff(t, base, n) <= 4 * TIER_IDENTITY * big, "a^2.5/a^1.5 = a: %g",
               max_abs_diff(t, base, n) / big); /* three recurrences in a row */
     }
     free(a), free(s), free(c), free(t), free(u), free(one), free(scratch);
@@ -128,10 +131,16 @@ static void test_compose(harness_rng *rng)
 {
     ic_jet_space *s1 = NULL, *s2 = NULL, *s3 = NULL, *p2 = NULL, *p3 = NULL;
     enum { K = 12 };
-    if (ic_jet_space_new(&s1, 1, K, NULL) || ic_jet_space_new(&s2, 2, K, NULL) ||
-        ic_jet_space_new(&s3, 3, 7, NULL) || ic_jet_space_new(&p2, 2, K, NULL) ||
-        ic_jet_space_new(&p3, 3, K, NULL))
+    if (!REQUIRE(ic_jet_space_new(&s1, 1, K, NULL) == IC_OK &&
+                     ic_jet_space_new(&s2, 2, K, NULL) == IC_OK &&
+                     ic_jet_space_new(&s3, 3, 7, NULL) == IC_OK &&
+                     ic_jet_space_new(&p2, 2, K, NULL) == IC_OK &&
+                     ic_jet_space_new(&p3, 3, K, NULL) == IC_OK,
+                 "the jet spaces of the composition test")) {
+        ic_jet_space_free(s1), ic_jet_space_free(s2), ic_jet_space_free(s3);
+        ic_jet_space_free(p2), ic_jet_space_free(p3);
         return;
+    }
     double scratch[(K + 20) * 455];
     double g[3][455], P[455], x[3][455], t1[455], t2[455], direct[455], composed[455];
     for (int out = 0; out < 3; out++) {
@@ -158,7 +167,7 @@ static void test_compose(harness_rng *rng)
         ic_jet_mul(t2, t1, g[1], sp);
         ic_jet_mul(t1, t2, g[0], sp);
         ic_jet_sub(direct, direct, t1, sp);
-        CHECK(max_abs_diff(direct, composed, n) <= TOL_IDENTITY,
+        CHECK(max_abs_diff(direct, composed, n) <= TIER_IDENTITY,
               "compose 2-var polynomial into %d vars: %g", out + 1,
               max_abs_diff(direct, composed, n));
         /* F(x, y, z) = sin(x + 2y) / (2 + z^2) over three variables */
@@ -178,7 +187,7 @@ static void test_compose(harness_rng *rng)
         ic_jet_mul(t1, g[2], g[2], sp);
         t1[0] += 2.0;
         CHECK(ic_jet_div(direct, t2, t1, sp, NULL) == IC_OK, "div");
-        CHECK(max_abs_diff(direct, composed, n) <= TOL_IDENTITY,
+        CHECK(max_abs_diff(direct, composed, n) <= TIER_IDENTITY,
               "compose 3-var function into %d vars: %g", out + 1,
               max_abs_diff(direct, composed, n));
     }
@@ -190,8 +199,13 @@ static void test_reversion(harness_rng *rng)
 {
     enum { K = 16 };
     ic_jet_space *s1 = NULL, *s2 = NULL;
-    if (ic_jet_space_new(&s1, 1, K, NULL) || ic_jet_space_new(&s2, 2, 10, NULL))
+    if (!REQUIRE(ic_jet_space_new(&s1, 1, K, NULL) == IC_OK &&
+                     ic_jet_space_new(&s2, 2, 10, NULL) == IC_OK,
+                 "the jet spaces of the reversion test")) {
+        ic_jet_space_free(s1);
+        ic_jet_space_free(s2);
         return;
+    }
     double scratch[(K + 20) * 153];
     double f[17], g[17], h[17], y[17];
     /* f(x) = sin(x) + x^2/3: revert twice gives f back; f(g(y)) = y */
@@ -211,7 +225,7 @@ static void test_reversion(harness_rng *rng)
     ic_jet_sin(f, y, s1, scratch);
     CHECK(ic_jet_revert(g, f, s1, scratch, NULL) == IC_OK, "revert sin");
     CHECK(ic_jet_asin(h, y, s1, scratch, NULL) == IC_OK, "asin");
-    CHECK(max_abs_diff(h, g, 17) <= TOL_IDENTITY, "revert(sin) = asin: %g",
+    CHECK(max_abs_diff(h, g, 17) <= TIER_IDENTITY, "revert(sin) = asin: %g",
           max_abs_diff(h, g, 17));
     double zero[17] = {0};
     ic_error err;
@@ -237,14 +251,14 @@ static void test_reversion(harness_rng *rng)
     CHECK(ic_jet_revert2(H, Gc, s2, scratch, NULL) == IC_OK, "revert2 back");
     /* relative to the coefficients of the inverse map G (up to ~1e3 at degree 10) */
     const double gbig = fmax(mag(G0, n), mag(G1, n));
-    CHECK(max_abs_diff(H0, F0, n) <= TOL_IDENTITY * gbig &&
-              max_abs_diff(H1, F1, n) <= TOL_IDENTITY * gbig,
+    CHECK(max_abs_diff(H0, F0, n) <= TIER_IDENTITY * gbig &&
+              max_abs_diff(H1, F1, n) <= TIER_IDENTITY * gbig,
           "revert2(revert2(F)) = F: %g %g (scale %g)", max_abs_diff(H0, F0, n),
           max_abs_diff(H1, F1, n), gbig);
     ic_jet_compose(H0, F0, s2, Gc, s2, scratch);
     ic_jet_compose(H1, F1, s2, Gc, s2, scratch);
-    CHECK(max_abs_diff(H0, X, n) <= TOL_IDENTITY * gbig &&
-              max_abs_diff(H1, Y, n) <= TOL_IDENTITY * gbig,
+    CHECK(max_abs_diff(H0, X, n) <= TIER_IDENTITY * gbig &&
+              max_abs_diff(H1, Y, n) <= TIER_IDENTITY * gbig,
           "F(G(y)) = y: %g %g (scale %g)", max_abs_diff(H0, X, n), max_abs_diff(H1, Y, n), gbig);
     /* a singular linear part is refused */
     ic_jet_mul(F1, X, X, s2);
@@ -260,7 +274,7 @@ static void test_reversion(harness_rng *rng)
 static void test_domain_errors(void)
 {
     ic_jet_space *sp = NULL;
-    if (ic_jet_space_new(&sp, 2, 3, NULL) != IC_OK)
+    if (!REQUIRE(ic_jet_space_new(&sp, 2, 3, NULL) == IC_OK, "jet space of 2 variables, order 3"))
         return;
     double a[10], b[10], r[10], scratch[40 * 10];
     ic_error err;

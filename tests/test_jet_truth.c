@@ -49,15 +49,16 @@ int main(int argc, char **argv)
 {
     const char *path = argc > 1 ? argv[1] : "tests/truth/jet_truth.txt";
     FILE *f = fopen(path, "r");
-    if (!f) {
-        fprintf(stderr, "cannot open %s\n", path);
-        return 1;
-    }
+    if (!REQUIRE(f != NULL, "cannot open the truth file %s", path))
+        return harness_finish("test_jet_truth");
     static double a[MAXN], b[MAXN], want[MAXN], got[MAXN];
     char line[256];
     int expected = -1;
-    if (!fgets(line, sizeof line, f)) /* header comment: "...; N cases" */
-        return 1;
+    /* the header comment: "...; N cases" */
+    if (!REQUIRE(fgets(line, sizeof line, f) != NULL, "%s: no header line", path)) {
+        fclose(f);
+        return harness_finish("test_jet_truth");
+    }
     const char *semi = strrchr(line, ';');
     if (semi)
         expected = atoi(semi + 1);
@@ -67,23 +68,24 @@ int main(int argc, char **argv)
     int m, K;
     while (fscanf(f, " case %31s %d %d %31s", name, &m, &K, param) == 4) {
         ic_jet_space *sp = NULL;
-        if (ic_jet_space_new(&sp, m, K, NULL) != IC_OK)
-            return 1;
+        if (!REQUIRE(ic_jet_space_new(&sp, m, K, NULL) == IC_OK,
+                     "case %s: jet space of %d variables, order %d", name, m, K))
+            break;
         const int n = ic_jet_space_len(sp);
         const int binary = !strcmp(name, "mul") || !strcmp(name, "div") || !strcmp(name, "atan2");
-        if (read_coefs(f, 'a', a, n) || (binary && read_coefs(f, 'b', b, n)) ||
-            read_coefs(f, 'r', want, n)) {
-            fprintf(stderr, "malformed truth file at case %s\n", name);
-            return 1;
-        }
         double *scratch = malloc(ic_jet_scratch_len(sp) * sizeof *scratch);
+        if (!REQUIRE(!read_coefs(f, 'a', a, n) && !(binary && read_coefs(f, 'b', b, n)) &&
+                         !read_coefs(f, 'r', want, n),
+                     "malformed truth file at case %s", name) ||
+            !REQUIRE(scratch != NULL, "case %s: no memory for the scratch", name)) {
+            free(scratch);
+            ic_jet_space_free(sp);
+            break;
+        }
         ic_status st = apply(name, param, got, a, binary ? b : NULL, sp, scratch);
         CHECK(st == IC_OK, "%s in %d vars order %d: status %d", name, m, K, st);
-        /* Tolerance: the degree-d coefficient is a sum of O(d) products of
-         * lower ones, each rounded; with inputs of O(1) and coefficients that
-         * decay, the error stays within 4 (d + 1) ulps of the largest
-         * coefficient magnitude up to that degree (observed worst 2.29: the
-         * value of x^5 after the three roundings of binary powering). */
+        /* in units of (d + 1) ulps of the largest coefficient up to degree d
+         * (TIER_JET_TRUTH, harness.h) */
         double big = 0.0;
         for (int d = 0; d <= K; d++) {
             for (int i = ic_jet_degree_start(sp, d); i < ic_jet_degree_start(sp, d + 1); i++)
@@ -91,7 +93,7 @@ int main(int argc, char **argv)
             for (int i = ic_jet_degree_start(sp, d); i < ic_jet_degree_start(sp, d + 1); i++) {
                 const double err = fabs(got[i] - want[i]) / (big * DBL_EPSILON * (d + 1));
                 worst = fmax(worst, err);
-                CHECK(err <= 4.0, "%s (%s) %d vars order %d, coefficient %d (degree %d): got "
+                CHECK(err <= TIER_JET_TRUTH, "%s (%s) %d vars order %d, coefficient %d (degree %d): got "
                       "%.17g want %.17g (%.1f units)", name, param, m, K, i, d, got[i], want[i],
                       err);
             }
@@ -102,6 +104,7 @@ int main(int argc, char **argv)
     }
     fclose(f);
     CHECK(cases == expected && cases > 0, "read %d cases, the file announces %d", cases, expected);
-    printf("worst error: %.2f units of (d+1) eps x max |coefficient| (tolerance 4)\n", worst);
+    printf("worst error: %.2f units of (d+1) eps x max |coefficient| (tolerance %g)\n", worst,
+           TIER_JET_TRUTH);
     return harness_finish("test_jet_truth");
 }

@@ -162,7 +162,7 @@ static void test_refined_loop(void)
         const double L = 2 * 3.14159265358979323846 * sqrt(1e-4 - 0.004 * 0.004);
         const ic_trace_curve *cv = ic_trace_result_curve(res, 0);
         CHECK(ic_trace_result_num_curves(res) == 1 && cv->closed &&
-                  fabs(cv->length - L) <= 1e-9 * L,
+                  fabs(cv->length - L) <= TIER_LENGTH * L,
               "the bead's circle found: %d curves, length %.17g of %.17g",
               ic_trace_result_num_curves(res), cv ? cv->length : 0.0, L);
         CHECK(rep->refined_cells >= 1 && rep->uncovered_cells == 0 && rep->nfailures == 0 &&

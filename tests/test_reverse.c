@@ -20,9 +20,9 @@
 
 /* relative: both apparatus come from the same formulas with the operands
  * of N_A x N_B swapped; rounding differs by a few ulps of each quantity's
- * scale, amplified up to order 8 by the recurrences (1e-11 is the tier of
- * the local apparatus against truth, docs/testing.md) */
-#define REVERSE_TOL 1e-11
+ * scale, amplified up to order 8 by the recurrences (the tier of the local
+ * apparatus against truth to order 4, harness.h) */
+#define REVERSE_TOL TIER_APPARATUS_LOW
 
 #define ORDER 8
 

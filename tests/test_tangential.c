@@ -72,16 +72,18 @@ static const tcase CASES[] = {
      IMP(NULL), {0, 0, 0}, IC_POINT_BRANCH, 2, NULL},
 };
 
+/* The surface of d; NULL, after a failed check, when it cannot be built. */
 static ic_surface *build(const surf *d)
 {
     ic_surface *s = NULL;
-    ic_status st = d->f ? ic_surface_new_implicit(&s, d->f, NULL, 0, NULL)
-                        : ic_surface_new_parametric(&s, d->xyz, d->par, NULL, 0, NULL, NULL);
+    ic_error err;
+    ic_status st = d->f ? ic_surface_new_implicit(&s, d->f, NULL, 0, &err)
+                        : ic_surface_new_parametric(&s, d->xyz, d->par, NULL, 0, NULL, &err);
     if (st == IC_OK && d->domain[0][1] > d->domain[0][0]) {
         const int periodic[2] = {1, 1};
-        st = ic_surface_set_domain(s, d->domain, periodic, NULL);
+        st = ic_surface_set_domain(s, d->domain, periodic, &err);
     }
-    if (st != IC_OK) {
+    if (!REQUIRE(st == IC_OK, "test surface %s: %s", d->f ? d->f : d->xyz[0], err.message)) {
         ic_surface_free(s);
         return NULL;
     }
@@ -162,10 +164,12 @@ static void test_near_tangential(void)
 {
     ic_surface *A = NULL, *B = NULL;
     ic_pair *pair = NULL;
-    if (ic_surface_new_implicit(&A, "(x - 1)^2 + y^2 - 1", NULL, 0, NULL) ||
-        ic_surface_new_implicit(&B, "x^2 + y^2 + z^2 - 4", NULL, 0, NULL) ||
-        ic_pair_new(&pair, A, B, NULL))
-        return;
+    ic_error err;
+    if (!REQUIRE(ic_surface_new_implicit(&A, "(x - 1)^2 + y^2 - 1", NULL, 0, &err) == IC_OK &&
+                     ic_surface_new_implicit(&B, "x^2 + y^2 + z^2 - 4", NULL, 0, &err) == IC_OK &&
+                     ic_pair_new(&pair, A, B, &err) == IC_OK,
+                 "near the branch point: surfaces and pair: %s", err.message))
+        goto done;
     ic_local_options opt;
     ic_local_defaults(&opt);
     printf("near the branch point: theta, angle, |kappa - exact|, |tau - exact|, "
@@ -175,7 +179,6 @@ static void test_near_tangential(void)
         const double X[3] = {1 + cos(th), sin(th), 2 * sin(th / 2)};
         ic_local_point pt;
         ic_local_result res;
-        ic_error err;
         if (ic_local_locate(pair, &pt, X, &opt, &err) != IC_OK ||
             ic_local_apparatus(pair, &res, &pt, 3, IC_METHOD_AUTO, &opt, &err) != IC_OK) {
             CHECK(0, "theta 1e-%d: %s", e, err.message);
@@ -201,6 +204,7 @@ static void test_near_tangential(void)
         CHECK(ek <= bound && et <= bound, "theta 1e-%d: errors %g %g above %g", e, ek, et,
               bound);
     }
+done:
     ic_pair_free(pair);
     ic_surface_free(A);
     ic_surface_free(B);
@@ -228,6 +232,29 @@ static double compare_closed(const ic_local_result *hd, const ic_local_result *c
               h->kappa, c->tau, h->tau);
     }
     return worst;
+}
+
+/* The height-difference analysis of a random pair at its point of contact
+ * (located from the parameters params[4], or from the origin when params is
+ * NULL): 1 for a clear branch point (Delta >= 0.02) to compare with, 0 to
+ * draw again (another type, or IC_ERR_UNABLE: a classification that cannot
+ * decide), and a failed check for anything else. */
+static int random_branch_point(ic_pair *pair, ic_local_point *pt, ic_local_result *hd,
+                               const double *params, const ic_local_options *opt, int trial)
+{
+    ic_error err;
+    const double origin[3] = {0, 0, 0};
+    ic_status st = params ? ic_local_locate_params(pair, pt, params, 4, opt, &err)
+                          : ic_local_locate(pair, pt, origin, opt, &err);
+    if (!REQUIRE(st == IC_OK, "random pair %d: the point of contact not located: %s", trial,
+                 err.message))
+        return 0;
+    st = ic_local_apparatus(pair, hd, pt, 3, IC_METHOD_HEIGHT_DIFFERENCE, opt, &err);
+    if (st == IC_ERR_UNABLE)
+        return 0;
+    if (!REQUIRE(st == IC_OK, "random pair %d: height-difference: %s", trial, err.message))
+        return 0;
+    return hd->type == IC_POINT_BRANCH && hd->discriminant >= 0.02;
 }
 
 /* The closed form of Hassan and Badr (2016) section 4 (corrected) against the
@@ -282,18 +309,12 @@ static void test_closed_form_random(void)
         ic_local_result hd, cf;
         ic_error err;
         const double params[4] = {0, 0, 0, 0};
-        if (A && B && ic_pair_new(&pair, A, B, NULL) == IC_OK &&
-            ic_local_locate_params(pair, &pt, params, 4, &opt, &err) == IC_OK &&
-            ic_local_apparatus(pair, &hd, &pt, 3, IC_METHOD_HEIGHT_DIFFERENCE, &opt, &err) == IC_OK) {
+        if (A && B &&
+            REQUIRE(ic_pair_new(&pair, A, B, &err) == IC_OK, "random pair %d: %s", trial,
+                    err.message) &&
+            random_branch_point(pair, &pt, &hd, params, &opt, trial)) {
             const ic_status st =
                 ic_local_apparatus(pair, &cf, &pt, 3, IC_METHOD_CLOSED_FORM, &opt, &err);
-            if (hd.type != IC_POINT_BRANCH || hd.discriminant < 0.02) {
-                /* not a clear branch point: draw again */
-                ic_pair_free(pair);
-                ic_surface_free(A);
-                ic_surface_free(B);
-                continue;
-            }
             CHECK(st == IC_OK && cf.nbranches == 2, "random branch point %d: %s", trial,
                   st ? err.message : "");
             if (st == IC_OK)
@@ -361,11 +382,10 @@ static void test_closed_form_implicit_random(void)
         ic_local_point pt;
         ic_local_result hd, cf;
         ic_error err;
-        const double origin[3] = {0, 0, 0};
-        if (A && B && ic_pair_new(&pair, A, B, NULL) == IC_OK &&
-            ic_local_locate(pair, &pt, origin, &opt, &err) == IC_OK &&
-            ic_local_apparatus(pair, &hd, &pt, 3, IC_METHOD_HEIGHT_DIFFERENCE, &opt, &err) == IC_OK &&
-            hd.type == IC_POINT_BRANCH && hd.discriminant > 0.02) {
+        if (A && B &&
+            REQUIRE(ic_pair_new(&pair, A, B, &err) == IC_OK, "random implicit pair %d: %s",
+                    trial, err.message) &&
+            random_branch_point(pair, &pt, &hd, NULL, &opt, trial)) {
             const ic_status st =
                 ic_local_apparatus(pair, &cf, &pt, 3, IC_METHOD_CLOSED_FORM, &opt, &err);
             CHECK(st == IC_OK && cf.nbranches == 2, "random implicit branch point %d: %s", trial,
@@ -398,13 +418,13 @@ int main(int argc, char **argv)
         const int self = !tc->B.f && !tc->B.xyz[0];
         ic_surface *A = build(&tc->A), *B = self ? NULL : build(&tc->B);
         ic_pair *pair = NULL;
-        if (!A || (!self && !B) || ic_pair_new(&pair, A, B, NULL) != IC_OK) {
-            CHECK(0, "%s: setup", tc->label);
+        ic_error err;
+        if (!A || (!self && !B) ||
+            !REQUIRE(ic_pair_new(&pair, A, B, &err) == IC_OK, "%s: pair: %s", tc->label,
+                     err.message))
             goto next;
-        }
         ic_local_point pt;
         ic_local_result res;
-        ic_error err;
         ic_status st = ic_local_locate(pair, &pt, tc->point, &opt, &err);
         CHECK(st == IC_OK, "%s: locate: %s", tc->label, err.message);
         if (st != IC_OK)

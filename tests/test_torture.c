@@ -58,6 +58,14 @@ int main(int argc, char **argv)
         if (c->bench_only)
             continue;
         snprintf(path, sizeof path, "%s/tests/torture/%s.json", dir, c->name);
+        /* a case file that cannot be read fails, whatever its verdict (the
+         * loader's "cannot open" would pass for an input error) */
+        FILE *probe = fopen(path, "rb");
+        if (!REQUIRE(probe != NULL, "%s: cannot read %s", c->name, path)) {
+            nfail++;
+            continue;
+        }
+        fclose(probe);
         tt_result r;
         const double w0 = tt_now();
         tt_run(&r, path, time_limit, kill_after);

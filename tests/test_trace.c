@@ -23,26 +23,32 @@ static void test_circle(int parametric_sphere, double tol)
 {
     ic_surface *A = NULL, *B = NULL;
     const char *sph[3] = {"2*cos(u)*cos(v)", "2*sin(u)*cos(v)", "2*sin(v)"};
-    if (parametric_sphere) {
-        const double dom[2][2] = {{-3.141592653589793, 3.141592653589793},
-                                  {-1.5707963267948966, 1.5707963267948966}};
-        const int per[2] = {1, 0};
-        if (ic_surface_new_parametric(&A, sph, NULL, NULL, 0, NULL, NULL) ||
-            ic_surface_set_domain(A, dom, per, NULL))
-            return;
-    } else if (ic_surface_new_implicit(&A, "x^2 + y^2 + z^2 - 4", NULL, 0, NULL)) {
-        return;
-    }
     ic_pair *pair = NULL;
     ic_tracer *tr = NULL;
     ic_trace_options opt;
     ic_trace_defaults(&opt);
     opt.tol = tol;
-    if (ic_surface_new_implicit(&B, "z - 1", NULL, 0, NULL) || ic_pair_new(&pair, A, B, NULL) ||
-        ic_tracer_new(&tr, pair, &opt, NULL))
-        return;
-    ic_local_point pt;
     ic_error err;
+    ic_status st;
+    if (parametric_sphere) {
+        const double dom[2][2] = {{-3.141592653589793, 3.141592653589793},
+                                  {-1.5707963267948966, 1.5707963267948966}};
+        const int per[2] = {1, 0};
+        st = ic_surface_new_parametric(&A, sph, NULL, NULL, 0, NULL, &err);
+        if (st == IC_OK)
+            st = ic_surface_set_domain(A, dom, per, &err);
+    } else {
+        st = ic_surface_new_implicit(&A, "x^2 + y^2 + z^2 - 4", NULL, 0, &err);
+    }
+    if (st == IC_OK)
+        st = ic_surface_new_implicit(&B, "z - 1", NULL, 0, &err);
+    if (st == IC_OK)
+        st = ic_pair_new(&pair, A, B, &err);
+    if (st == IC_OK)
+        st = ic_tracer_new(&tr, pair, &opt, &err);
+    if (!REQUIRE(st == IC_OK, "circle: surfaces, pair and tracer: %s", err.message))
+        goto done;
+    ic_local_point pt;
     const double X0[3] = {sqrt(3.0), 0, 1};
     ic_trace_event ev = IC_TRACE_FAILED;
     CHECK(ic_local_locate(pair, &pt, X0, &opt.local, &err) == IC_OK, "locate: %s", err.message);
@@ -55,7 +61,7 @@ static void test_circle(int parametric_sphere, double tol)
     const ic_trace_point *last = ic_tracer_point(tr, n - 1);
     /* the length: per step the arc length is the predictor's, exact to the
      * truncation tolerance; n steps of tol each, relative to L */
-    CHECK(last && fabs(last->s - L) <= 1e-9 * L + n * tol, "length %.15g vs %.15g (%d points)",
+    CHECK(last && fabs(last->s - L) <= TIER_LENGTH * L + n * tol, "length %.15g vs %.15g (%d points)",
           last ? last->s : 0, L, n);
     double worst_on = 0, worst_k = 0;
     for (int i = 0; i < n; i++) {
@@ -66,8 +72,10 @@ static void test_circle(int parametric_sphere, double tol)
     }
     CHECK(worst_on <= 1e-12, "points on the circle to %g", worst_on);
     CHECK(worst_k <= 1e-10, "kappa and tau along the circle to %g", worst_k);
-    printf("circle (%s sphere), tol %g: %d points, length error %.2g\n",
-           parametric_sphere ? "parametric" : "implicit", tol, n, fabs(last->s - L));
+    if (last)
+        printf("circle (%s sphere), tol %g: %d points, length error %.2g\n",
+               parametric_sphere ? "parametric" : "implicit", tol, n, fabs(last->s - L));
+done:
     ic_tracer_free(tr);
     ic_pair_free(pair);
     ic_surface_free(A);
@@ -86,13 +94,15 @@ static void test_helix(void)
     ic_trace_options opt;
     ic_trace_defaults(&opt);
     const double dom[2][2] = {{-1, 7}, {0.5, 1.5}};
-    if (ic_surface_new_implicit(&A, "x^2 + y^2 - 1", NULL, 0, NULL) ||
-        ic_surface_new_parametric(&B, hel, NULL, NULL, 0, NULL, NULL) ||
-        ic_surface_set_domain(B, dom, NULL, NULL) || ic_pair_new(&pair, A, B, NULL) ||
-        ic_tracer_new(&tr, pair, &opt, NULL))
-        return;
-    ic_local_point pt;
     ic_error err;
+    if (!REQUIRE(ic_surface_new_implicit(&A, "x^2 + y^2 - 1", NULL, 0, &err) == IC_OK &&
+                     ic_surface_new_parametric(&B, hel, NULL, NULL, 0, NULL, &err) == IC_OK &&
+                     ic_surface_set_domain(B, dom, NULL, &err) == IC_OK &&
+                     ic_pair_new(&pair, A, B, &err) == IC_OK &&
+                     ic_tracer_new(&tr, pair, &opt, &err) == IC_OK,
+                 "helix: surfaces, pair and tracer: %s", err.message))
+        goto done;
+    ic_local_point pt;
     const double params[2] = {0, 1};
     ic_trace_event ev = IC_TRACE_FAILED;
     CHECK(ic_local_locate_params(pair, &pt, params, 2, &opt.local, &err) == IC_OK, "%s",
@@ -120,8 +130,9 @@ static void test_helix(void)
         const double u = 2 * p->s / sqrt(5.0);
         worst = fmax(worst, fabs(p->xyz[2] - u / 2));
     }
-    CHECK(worst <= 1e-9, "helix: kappa 0.8, tau 0.4 and z(s) to %g", worst);
+    CHECK(worst <= TIER_ON_CURVE, "helix: kappa 0.8, tau 0.4 and z(s) to %g", worst);
     printf("helix: %d points, worst %.2g\n", n, worst);
+done:
     ic_tracer_free(tr);
     ic_pair_free(pair);
     ic_surface_free(A);
@@ -139,12 +150,14 @@ static void test_self_intersection(void)
     ic_trace_options opt;
     ic_trace_defaults(&opt);
     const double dom[2][2] = {{-5, 5}, {-5, 5}};
-    if (ic_surface_new_parametric(&A, enn, NULL, NULL, 0, NULL, NULL) ||
-        ic_surface_set_domain(A, dom, NULL, NULL) || ic_pair_new(&pair, A, NULL, NULL) ||
-        ic_tracer_new(&tr, pair, &opt, NULL))
-        return;
-    ic_local_point pt;
     ic_error err;
+    if (!REQUIRE(ic_surface_new_parametric(&A, enn, NULL, NULL, 0, NULL, &err) == IC_OK &&
+                     ic_surface_set_domain(A, dom, NULL, &err) == IC_OK &&
+                     ic_pair_new(&pair, A, NULL, &err) == IC_OK &&
+                     ic_tracer_new(&tr, pair, &opt, &err) == IC_OK,
+                 "Enneper: surface, pair and tracer: %s", err.message))
+        goto done;
+    ic_local_point pt;
     const double params[4] = {sqrt(2.0), 3, sqrt(2.0), -3};
     ic_trace_event ev = IC_TRACE_FAILED;
     CHECK(ic_local_locate_params(pair, &pt, params, 4, &opt.local, &err) == IC_OK, "%s",
@@ -164,11 +177,12 @@ static void test_self_intersection(void)
             worst = fmax(worst, fabs(v * v - 3 * (1 + u * u)) / (1 + u * u));
             worst = fmax(worst, fabs(p->tau) * (p->frame_defined ? 1 : 0));
         }
-        CHECK(worst <= 1e-9, "Enneper double curve, direction %d: off by %g", dir, worst);
+        CHECK(worst <= TIER_ON_CURVE, "Enneper double curve, direction %d: off by %g", dir, worst);
         printf("Enneper double curve, direction %+d: %d points to s = %.6g, worst %.2g\n", dir,
                ic_tracer_num_points(tr), ic_tracer_point(tr, ic_tracer_num_points(tr) - 1)->s,
                worst);
     }
+done:
     ic_tracer_free(tr);
     ic_pair_free(pair);
     ic_surface_free(A);
@@ -184,12 +198,14 @@ static void test_tangential_stop(void)
     ic_tracer *tr = NULL;
     ic_trace_options opt;
     ic_trace_defaults(&opt);
-    if (ic_surface_new_implicit(&A, "(x - 1)^2 + y^2 - 1", NULL, 0, NULL) ||
-        ic_surface_new_implicit(&B, "x^2 + y^2 + z^2 - 4", NULL, 0, NULL) ||
-        ic_pair_new(&pair, A, B, NULL) || ic_tracer_new(&tr, pair, &opt, NULL))
-        return;
-    ic_local_point pt;
     ic_error err;
+    if (!REQUIRE(ic_surface_new_implicit(&A, "(x - 1)^2 + y^2 - 1", NULL, 0, &err) == IC_OK &&
+                     ic_surface_new_implicit(&B, "x^2 + y^2 + z^2 - 4", NULL, 0, &err) == IC_OK &&
+                     ic_pair_new(&pair, A, B, &err) == IC_OK &&
+                     ic_tracer_new(&tr, pair, &opt, &err) == IC_OK,
+                 "Viviani: surfaces, pair and tracer: %s", err.message))
+        goto done;
+    ic_local_point pt;
     const double X0[3] = {1.5, 0.8660254037844386, 1};
     ic_trace_event ev = IC_TRACE_FAILED;
     CHECK(ic_local_locate(pair, &pt, X0, &opt.local, &err) == IC_OK, "locate");
@@ -211,6 +227,7 @@ static void test_tangential_stop(void)
         CHECK(worst <= 1e-12, "Viviani points on both surfaces to %g", worst);
     }
     CHECK(stopped == 2, "both directions stop at the branch point as tangential");
+done:
     ic_tracer_free(tr);
     ic_pair_free(pair);
     ic_surface_free(A);
@@ -237,6 +254,7 @@ static ic_trace_result *trace_pair(const char *f, const char *g, double box, ic_
         *st = ic_pair_new(pair, *A, *B, &err);
     if (*st == IC_OK)
         *st = ic_trace(&res, *pair, &opt, &err);
+    CHECK(*st == IC_OK, "%s and %s traced: %s", f, g, err.message);
     return res;
 }
 
@@ -277,7 +295,7 @@ static void test_whole(void)
         const double eight = 2 * viviani_lobe();
         const ic_trace_curve *c = ic_trace_result_curve(r, 0);
         /* the 1e-9 relative (measured 8.5e-14) */
-        CHECK(c->closed && fabs(c->length - eight) <= 1e-9 * eight,
+        CHECK(c->closed && fabs(c->length - eight) <= TIER_LENGTH * eight,
               "figure-eight length %.15g of %.15g", c->length, eight);
         double worst = 0, worst_tau = 0;
         for (int i = 0; i < c->npoints; i++) {
@@ -306,7 +324,7 @@ static void test_whole(void)
         CHECK(ic_trace_result_num_specials(r) == 1, "one tangential point");
         const ic_trace_special *sp = ic_trace_result_special(r, 0);
         CHECK(sp && sp->type == IC_POINT_BRANCH && sp->nbranches == 2 && !sp->approximate &&
-                  hypot(hypot(sp->xyz[0] - 2, sp->xyz[1]), sp->xyz[2]) < 1e-12,
+                  hypot(hypot(sp->xyz[0] - 2, sp->xyz[1]), sp->xyz[2]) < TIER_LOCATED,
               "the branch point (2, 0, 0), located exactly");
         CHECK(ic_trace_result_report(r)->uncovered_cells == 0, "nothing left uncovered");
     }
@@ -331,7 +349,7 @@ static void test_whole(void)
         const double L = (double)(4 * sum * h / 3);
         for (int i = 0; st == IC_OK && i < ic_trace_result_num_curves(r); i++) {
             const ic_trace_curve *c = ic_trace_result_curve(r, i);
-            CHECK(c->closed && c->shape == IC_SHAPE_PLANAR && fabs(c->length - L) <= 1e-9 * L,
+            CHECK(c->closed && c->shape == IC_SHAPE_PLANAR && fabs(c->length - L) <= TIER_LENGTH * L,
                   "ellipse %d: %s, length %.15g of %.15g", i, ic_shape_name(c->shape), c->length,
                   L);
         }
@@ -356,7 +374,7 @@ static void test_whole(void)
         }
         /* the tangential locator's 1e-12 residual; the length to the 1e-9 */
         CHECK(c->tangential && c->closed && c->shape == IC_SHAPE_CIRCLE &&
-                  fabs(c->length - L) <= 1e-9 * L && worst <= 1e-10,
+                  fabs(c->length - L) <= TIER_LENGTH * L && worst <= 1e-10,
               "Ex 5.2: tangential %d, closed %d, %s, length %.17g of 2 pi, off %g", c->tangential,
               c->closed, ic_shape_name(c->shape), c->length, worst);
         printf("Ex 5.2 tangential circle: %d points, length error %.2g, off %.2g\n", c->npoints,
@@ -380,9 +398,14 @@ static void test_whole_self(void)
     ic_trace_options opt;
     ic_trace_defaults(&opt);
     ic_error err;
-    if (ic_surface_new_parametric(&A, enn, NULL, NULL, 0, NULL, NULL) ||
-        ic_surface_set_domain(A, dom, NULL, NULL) || ic_pair_new(&pair, A, NULL, NULL))
+    if (!REQUIRE(ic_surface_new_parametric(&A, enn, NULL, NULL, 0, NULL, &err) == IC_OK &&
+                     ic_surface_set_domain(A, dom, NULL, &err) == IC_OK &&
+                     ic_pair_new(&pair, A, NULL, &err) == IC_OK,
+                 "Enneper: surface and pair: %s", err.message)) {
+        ic_pair_free(pair);
+        ic_surface_free(A);
         return;
+    }
     CHECK(ic_trace(&r, pair, &opt, &err) == IC_OK, "Enneper self-intersection: %s", err.message);
     CHECK(ic_trace_result_num_curves(r) == 2, "Enneper: two double curves, not %d",
           ic_trace_result_num_curves(r));
@@ -405,7 +428,7 @@ static void test_whole_self(void)
             worst = fmax(worst, mirror);
         }
         /* the tracer's tolerance 1e-10 with margin for the x ~ 60 scale */
-        CHECK(worst <= 1e-9, "Enneper curve %d: off the double curve by %g", i, worst);
+        CHECK(worst <= TIER_ON_CURVE, "Enneper curve %d: off the double curve by %g", i, worst);
         /* the curve ends exactly where a preimage meets the domain edge:
          * 3(1 + w^2) = 25, w = +-sqrt(22/3) */
         const ic_trace_point *p0 = &c->points[0], *p1 = &c->points[c->npoints - 1];
@@ -416,7 +439,7 @@ static void test_whole_self(void)
               p1->params[0][on_x0], a);
         /* the whole double curve's length: the 1e-9 relative */
         CHECK(c->shape == IC_SHAPE_PLANAR && c->ends[0] == IC_TRACE_LEFT_DOMAIN &&
-                  c->ends[1] == IC_TRACE_LEFT_DOMAIN && fabs(c->length - L) <= 1e-9 * L,
+                  c->ends[1] == IC_TRACE_LEFT_DOMAIN && fabs(c->length - L) <= TIER_LENGTH * L,
               "Enneper curve %d: %s, length %.15g of %.15g", i, ic_shape_name(c->shape), c->length,
               L);
         printf("Enneper whole, curve %d: %d points, off %.2g, length error %.2g\n", i, c->npoints,
@@ -447,11 +470,18 @@ static void test_whole_parametric(int implicit_cylinder)
     ic_trace_defaults(&opt);
     ic_error err;
     /* the cylinder as a parametric patch, or implicit (the fourth pairing) */
-    if ((implicit_cylinder ? ic_surface_new_implicit(&A, "(x - 1)^2 + y^2 - 1", NULL, 0, NULL)
-                           : ic_surface_new_parametric(&A, cyl, NULL, NULL, 0, NULL, NULL) ||
-                                 ic_surface_set_domain(A, dc, pc, NULL)) ||
-        ic_surface_new_parametric(&B, sph, NULL, NULL, 0, NULL, NULL) ||
-        ic_surface_set_domain(B, ds, ps, NULL) || ic_pair_new(&pair, A, B, NULL))
+    ic_status st = implicit_cylinder
+                       ? ic_surface_new_implicit(&A, "(x - 1)^2 + y^2 - 1", NULL, 0, &err)
+                       : ic_surface_new_parametric(&A, cyl, NULL, NULL, 0, NULL, &err);
+    if (st == IC_OK && !implicit_cylinder)
+        st = ic_surface_set_domain(A, dc, pc, &err);
+    if (st == IC_OK)
+        st = ic_surface_new_parametric(&B, sph, NULL, NULL, 0, NULL, &err);
+    if (st == IC_OK)
+        st = ic_surface_set_domain(B, ds, ps, &err);
+    if (st == IC_OK)
+        st = ic_pair_new(&pair, A, B, &err);
+    if (!REQUIRE(st == IC_OK, "parametric Viviani: surfaces and pair: %s", err.message))
         goto done;
     CHECK(ic_trace(&r, pair, &opt, &err) == IC_OK, "parametric Viviani: %s", err.message);
     CHECK(ic_trace_result_num_curves(r) == 1 && ic_trace_result_num_specials(r) == 1,
@@ -469,7 +499,7 @@ static void test_whole_parametric(int implicit_cylinder)
         /* on both surfaces to the corrector's precision; the length to the
          * issue's 1e-9 relative, the gaps at the poles bridged by the
          * end-corrected trapezoid rule (error O(gap^5)) */
-        CHECK(worst <= 1e-9 && c->closed && fabs(c->length - eight) <= 1e-9 * eight,
+        CHECK(worst <= TIER_ON_CURVE && c->closed && fabs(c->length - eight) <= TIER_LENGTH * eight,
               "parametric Viviani: closed %d, length %.17g of %.17g, off %g", c->closed, c->length,
               eight, worst);
         printf("Viviani, %s cylinder and parametric sphere: one closed figure-eight, %d points, "
@@ -498,7 +528,7 @@ static void check_contact(const ic_trace_result *r, ic_status st, const double w
     const ic_trace_special *sp = ic_trace_result_special(r, 0);
     const double d = hypot(hypot(sp->xyz[0] - want[0], sp->xyz[1] - want[1]), sp->xyz[2] - want[2]);
     CHECK(sp->type == IC_POINT_ISOLATED_CONTACT && sp->nbranches == 0 && !sp->approximate &&
-              d <= 1e-12,
+              d <= TIER_LOCATED,
           "%s: %s at distance %.3g from (%g, %g, %g)", what, ic_point_type_name(sp->type), d,
           want[0], want[1], want[2]);
     /* every other cell proven empty (plain or centred interval forms, and
@@ -599,7 +629,7 @@ static void test_tangential_parametric(void)
             worst = fmax(worst, fabs(c->points[i].kappa - 0.5) + fabs(c->points[i].tau));
         }
         CHECK(c->tangential && c->closed && c->shape == IC_SHAPE_CIRCLE &&
-                  fabs(c->length - L) <= 1e-9 * L && worst <= 1e-10,
+                  fabs(c->length - L) <= TIER_LENGTH * L && worst <= 1e-10,
               "Bendrici and Boumedien-Zidani (2022), Example 3: tangential %d, closed %d, %s, "
               "length %.17g of 4 pi, off %g",
               c->tangential, c->closed, ic_shape_name(c->shape), c->length, worst);
@@ -650,7 +680,7 @@ static void test_branch_completion(void)
         /* the 1e-9 relative; both ends exactly on x = 0.9 */
         CHECK(c->ends[0] == IC_TRACE_LEFT_BOX && c->ends[1] == IC_TRACE_LEFT_BOX &&
                   c->points[0].xyz[0] == 0.9 && c->points[c->npoints - 1].xyz[0] == 0.9 &&
-                  fabs(c->length - L) <= 1e-9 * L,
+                  fabs(c->length - L) <= TIER_LENGTH * L,
               "arc %d: length %.17g of %.17g", i, c->length, L);
         printf("branch completion, arc %d: length error %.2g\n", i, fabs(c->length - L) / L);
     }

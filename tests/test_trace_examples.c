@@ -37,7 +37,7 @@ static void check_curves(const traced *t, const char *name, int n, double L, ic_
     for (int i = 0; i < ic_trace_result_num_curves(t->res); i++) {
         const ic_trace_curve *c = ic_trace_result_curve(t->res, i);
         worst = fmax(worst, fabs(c->length - L) / L);
-        CHECK(c->closed && c->shape == shape && fabs(c->length - L) <= 1e-9 * L,
+        CHECK(c->closed && c->shape == shape && fabs(c->length - L) <= TIER_LENGTH * L,
               "%s curve %d: closed %d, %s, length %.17g of %.17g", name, i, c->closed,
               ic_shape_name(c->shape), c->length, L);
     }
@@ -65,7 +65,7 @@ static void check_tacnode(const traced *t)
          * the kernel (Gauss-Newton on N_A x N_B = 0 alone stops about 2e-3
          * away, where the march meets the angle threshold) */
         found += sp->type == IC_POINT_TACNODE &&
-                 hypot(hypot(sp->xyz[0], sp->xyz[1]), sp->xyz[2]) <= 1e-12;
+                 hypot(hypot(sp->xyz[0], sp->xyz[1]), sp->xyz[2]) <= TIER_LOCATED;
     }
     CHECK(ic_trace_result_num_specials(res) == 1 && found == 1, "tacnode: one, at the origin");
     CHECK(ic_trace_result_num_curves(res) == 2, "tacnode: %d curves, not 2",
@@ -78,7 +78,7 @@ static void check_tacnode(const traced *t)
         const ic_trace_curve *c = ic_trace_result_curve(res, i);
         const int k = fabs(c->length - L[0]) < fabs(c->length - L[1]) ? 0 : 1;
         worst = fmax(worst, fabs(c->length - L[k]) / L[k]);
-        CHECK(!c->closed && fabs(c->length - L[k]) <= 1e-9 * L[k],
+        CHECK(!c->closed && fabs(c->length - L[k]) <= TIER_LENGTH * L[k],
               "tacnode curve %d: length %.17g of %.17g", i, c->length, L[k]);
         int through = 0;
         for (int j = 1; j + 1 < c->npoints; j++) {
@@ -107,7 +107,7 @@ static void check_cusp(const traced *t)
     /* located as a simple root of h'' along the kernel (Gauss-Newton alone
      * stopped 8e-9 away, where the point classified as a branch point) */
     CHECK(ic_trace_result_num_specials(res) == 1 && sp->type == IC_POINT_CUSP && !sp->approximate &&
-              hypot(hypot(sp->xyz[0], sp->xyz[1]), sp->xyz[2]) <= 1e-12,
+              hypot(hypot(sp->xyz[0], sp->xyz[1]), sp->xyz[2]) <= TIER_LOCATED,
           "cusp: one, at the origin, classified cusp");
     const double L = 8.0 / 27 * (pow(3.25, 1.5) - 1);
     double worst = 0;
@@ -115,7 +115,7 @@ static void check_cusp(const traced *t)
     for (int i = 0; i < ic_trace_result_num_curves(res); i++) {
         const ic_trace_curve *c = ic_trace_result_curve(res, i);
         worst = fmax(worst, fabs(c->length - L) / L);
-        CHECK(fabs(c->length - L) <= 1e-9 * L, "cusp arc %d: length %.17g of %.17g", i, c->length,
+        CHECK(fabs(c->length - L) <= TIER_LENGTH * L, "cusp arc %d: length %.17g of %.17g", i, c->length,
               L);
     }
     printf("%-24s 2 arcs to the cusp, length error %.2g\n", "cusp", worst);
@@ -139,7 +139,7 @@ int main(int argc, char **argv)
             const ic_trace_special *sp = ic_trace_result_special(t.res, i);
             /* located on N_A x N_B = 0 to 1e-12 */
             at_x += sp->type == IC_POINT_BRANCH &&
-                    hypot(hypot(fabs(sp->xyz[0]) - 1, sp->xyz[1]), sp->xyz[2]) <= 1e-12;
+                    hypot(hypot(fabs(sp->xyz[0]) - 1, sp->xyz[1]), sp->xyz[2]) <= TIER_LOCATED;
         }
         CHECK(ic_trace_result_num_specials(t.res) == 2 && at_x == 2,
               "equal cylinders: branch points at (+-1, 0, 0)");

@@ -17,8 +17,8 @@
 
 #define PI 3.14159265358979323846
 
-/* The docs' promise for lengths (docs/tracing.md). */
-#define LENGTH_REL 1e-9
+/* The docs' promise for lengths (docs/tracing.md, harness.h) */
+#define LENGTH_REL TIER_LENGTH
 
 
 static ic_trace_options box_options(double lo, double hi)
@@ -171,6 +171,7 @@ static void test_power_1025(void)
     const ic_trace_options opt = box_options(-1.5, 1.5);
     if (!trace_implicit(&t, "x^1025 + 0.25", "x^2 + y^2 + z^2 - 1", &opt)) {
         CHECK(0, "x^1025 trace");
+        release(&t);
         return;
     }
     const double x0 = -pow(0.25, 1.0 / 1025);
@@ -188,6 +189,7 @@ static void test_undefined_centre(void)
     const ic_trace_options opt = box_options(-1, 1);
     if (!trace_implicit(&t, "sqrt(x - 0.016) - 0.05", "y", &opt)) {
         CHECK(0, "sqrt trace");
+        release(&t);
         return;
     }
     expect_curves("a plane whose formula is undefined at a cell centre", t.res, 1, 2.0, 0);
@@ -208,6 +210,7 @@ static void test_kink_at_centre(void)
     const double dom[2][2] = {{-1, 1}, {-1, 1}};
     if (!trace_mixed(&t, xyz, dom, "z - 0.001", &opt)) {
         CHECK(0, "kink trace");
+        release(&t);
         return;
     }
     expect_curves("a kink at the cells' centres", t.res, 2, 2.0, 0);
@@ -226,6 +229,7 @@ static void test_exp_overflow(void)
     opt.box[0][0] = 700, opt.box[0][1] = 720;
     if (!trace_implicit(&t, "z + exp(x) - exp(x)", "y", &opt)) {
         CHECK(0, "exp trace");
+        release(&t);
         return;
     }
     CHECK(!complete(t.res), "exp overflow: the part beyond 709.78 is undecided (length %.17g of 20)",
@@ -242,6 +246,7 @@ static void test_huge_box(void)
     const ic_trace_options opt = box_options(-1e160, 1e160);
     if (!trace_implicit(&t, "x^2 + y^2 + z^2 - 1", "z", &opt)) {
         CHECK(0, "huge box trace");
+        release(&t);
         return;
     }
     const double L = total_length(t.res);
@@ -260,6 +265,7 @@ static void test_huge_domain(void)
     const double dom[2][2] = {{-1e300, 1e300}, {-1e300, 1e300}};
     if (!trace_mixed(&t, xyz, dom, "x^2 + y^2 + z^2 - 1", &opt)) {
         CHECK(0, "huge domain trace");
+        release(&t);
         return;
     }
     const double L = total_length(t.res);
@@ -280,6 +286,7 @@ static void test_time_limit(void)
     timespec_get(&t0, TIME_UTC);
     if (!trace_implicit(&t, "z", "2 * z", &opt)) {
         CHECK(0, "coincident planes trace");
+        release(&t);
         return;
     }
     timespec_get(&t1, TIME_UTC);
@@ -308,6 +315,7 @@ static void test_scales(void)
         const ic_trace_options opt = box_options(-1.5 * s, 1.5 * s);
         if (!trace_implicit(&t, fa, fb, &opt)) {
             CHECK(0, "scale %g traced", s);
+            release(&t);
             continue;
         }
         char what[64];
@@ -340,6 +348,7 @@ static void test_viviani_scaled(void)
         const ic_trace_options opt = box_options(-2.5 * s, 2.5 * s);
         if (!trace_implicit(&t, fa, fb, &opt)) {
             CHECK(0, "Viviani at scale %g traced", s);
+            release(&t);
             continue;
         }
         char what[64];
@@ -362,6 +371,7 @@ static void test_tiny_overlap(void)
     opt.box[0][1] = 3.5;
     if (!trace_implicit(&t, "x^2 + y^2 + z^2 - 1", "(x - 1.999999)^2 + y^2 + z^2 - 1", &opt)) {
         CHECK(0, "overlap trace");
+        release(&t);
         return;
     }
     const double h = 1.999999 / 2, L = 2 * PI * sqrt(1 - h * h);
@@ -379,6 +389,7 @@ static void test_coincident(void)
     const ic_trace_options opt = box_options(-1, 1);
     if (!trace_implicit(&t, "x + y - z", "2 * z - 2 * x - 2 * y", &opt)) {
         CHECK(0, "coincident planes trace");
+        release(&t);
         return;
     }
     const ic_trace_report *rep = ic_trace_result_report(t.res);
@@ -402,10 +413,12 @@ static void test_whitney_arc_length(void)
     ic_trace_defaults(&opt);
     const char *xyz[3] = {"u * v", "v", "u^2"};
     const double dom[2][2] = {{-1, 1}, {-1, 1}};
-    if (ic_surface_new_parametric(&t.A, xyz, NULL, NULL, 0, NULL, NULL) != IC_OK ||
-        ic_surface_set_domain(t.A, dom, NULL, NULL) != IC_OK ||
-        ic_pair_new(&t.pair, t.A, NULL, NULL) != IC_OK || ic_trace(&t.res, t.pair, &opt, NULL) != IC_OK) {
-        CHECK(0, "Whitney umbrella traced");
+    ic_error err;
+    if (!REQUIRE(ic_surface_new_parametric(&t.A, xyz, NULL, NULL, 0, NULL, &err) == IC_OK &&
+                     ic_surface_set_domain(t.A, dom, NULL, &err) == IC_OK &&
+                     ic_pair_new(&t.pair, t.A, NULL, &err) == IC_OK &&
+                     ic_trace(&t.res, t.pair, &opt, &err) == IC_OK,
+                 "Whitney umbrella traced: %s", err.message)) {
         release(&t);
         return;
     }
@@ -434,6 +447,7 @@ static void test_cone_apex(void)
     opt.box[2][0] = -0.8, opt.box[2][1] = 0.8;
     if (!trace_implicit(&t, "x^2 + y^2 - z^2", "y", &opt)) {
         CHECK(0, "cone trace");
+        release(&t);
         return;
     }
     expect_curves("the cone through its apex", t.res, 2, 1.6 * sqrt(2.0), 0);
@@ -486,6 +500,7 @@ static void test_tangential_arc_domain(void)
         traced t;
         if (!trace_mixed(&t, xyz, dom, "x^2 + y^2 - 1", &opt)) {
             CHECK(0, "tangential arc at offset %g", offsets[k]);
+            release(&t);
             continue;
         }
         const ic_trace_curve *c =

@@ -14,8 +14,9 @@
  *  - principal curvatures are ordered k1 >= k2.
  *
  * A surface owns a workspace that grows on first use of a new order, so
- * evaluation does not allocate in steady state; one surface object must not
- * be evaluated from two threads at once.
+ * evaluation does not allocate in steady state (up to order 4 in its own
+ * variables it is made with the surface: those evaluations never allocate);
+ * one surface object must not be evaluated from two threads at once.
  */
 #ifndef INTERCURVE_SURFACE_H
 #define INTERCURVE_SURFACE_H

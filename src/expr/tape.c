@@ -176,12 +176,14 @@ static ic_status check_names(const char *const *vars, int nvars, const ic_consta
 }
 
 /* Drops instructions no output depends on (the intermediate constants left
- * by folding) and renumbers the rest; the sharing table is no longer needed. */
-static void remove_dead_code(ic_expr *e)
+ * by folding) and renumbers the rest; the sharing table is no longer needed.
+ * -1 out of memory: the tape is then not the one it should be (a picture of
+ * its surface came out different; tests/test_nomem.c, "writers"). */
+static int remove_dead_code(ic_expr *e)
 {
     int *live = calloc((size_t)e->len + 1, sizeof *live);
     if (!live)
-        return; /* keeping dead code is harmless */
+        return -1;
     for (int k = 0; k < e->noutputs; k++)
         live[e->outputs[k]] = 1;
     for (int i = e->len - 1; i >= 0; i--)
@@ -210,6 +212,7 @@ static void remove_dead_code(ic_expr *e)
     free(e->hash);
     e->hash = NULL;
     e->hash_cap = 0;
+    return 0;
 }
 
 ic_status ic_expr_compile(ic_expr **out, const char *const *formulas, int nformulas,
@@ -246,7 +249,10 @@ ic_status ic_expr_compile(ic_expr **out, const char *const *formulas, int nformu
         }
         e->outputs[i] = r;
     }
-    remove_dead_code(e);
+    if (remove_dead_code(e) != 0) {
+        ic_expr_free(e);
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory compiling a formula");
+    }
     *out = e;
     return IC_OK;
 }

@@ -99,9 +99,10 @@ static ic_status draw_figure(cairo_t *cr, const ic_plot_scene *scene, const ic_p
     /* the chart only where there is a curve to chart */
     const int chart = opt->chart && scene->trace && ic_trace_result_num_curves(scene->trace) > 0;
     const double w3 = chart ? 0.62 * W : W;
-    const ic_status st = ic_plot_draw_3d(cr, scene, opt, 0, 40, w3, H - 40, err);
-    if (st == IC_OK && chart)
-        ic_plot_draw_chart(cr, scene->trace, w3 + 10, 50, W - w3 - 20, H - 60);
+    ic_status st = ic_plot_draw_3d(cr, scene, opt, 0, 40, w3, H - 40, err);
+    if (st == IC_OK && chart &&
+        ic_plot_draw_chart(cr, scene->trace, w3 + 10, 50, W - w3 - 20, H - 60) != 0)
+        st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory drawing the chart");
     return st;
 }
 

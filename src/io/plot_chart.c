@@ -22,17 +22,20 @@ static int cmp_qsort(const void *a, const void *b)
 }
 
 /* The value range of kappa (which 0) or tau (1); *clipped when the
- * percentile range was used. */
-static void value_range(const ic_trace_result *tr, int which, double scale, double *lo, double *hi,
-                        int *clipped)
+ * percentile range was used. 0, or -1 out of memory (before: a chart of the
+ * range [-1, 1], found by tests/test_nomem.c, "writers"). */
+static int value_range(const ic_trace_result *tr, int which, double scale, double *lo, double *hi,
+                       int *clipped)
 {
     *clipped = 0;
     int n = 0;
     for (int c = 0; c < ic_trace_result_num_curves(tr); c++)
         n += ic_trace_result_curve(tr, c)->npoints;
     double *v = malloc(((size_t)n + 1) * sizeof *v);
+    if (!v)
+        return -1;
     int m = 0;
-    for (int c = 0; v && c < ic_trace_result_num_curves(tr); c++) {
+    for (int c = 0; c < ic_trace_result_num_curves(tr); c++) {
         const ic_trace_curve *cv = ic_trace_result_curve(tr, c);
         for (int k = 0; k < cv->npoints; k++) {
             const ic_trace_point *p = &cv->points[k];
@@ -44,7 +47,7 @@ static void value_range(const ic_trace_result *tr, int which, double scale, doub
     if (m == 0) {
         *lo = -1, *hi = 1;
         free(v);
-        return;
+        return 0;
     }
     qsort(v, (size_t)m, sizeof *v, cmp_qsort);
     *lo = v[0], *hi = v[m - 1];
@@ -53,7 +56,7 @@ static void value_range(const ic_trace_result *tr, int which, double scale, doub
         const double mid = 0.5 * (*lo + *hi), pad = fmax(0.1 * fabs(mid), 0.1 * scale);
         *lo = mid - (pad > 0 ? pad : 0.1), *hi = mid + (pad > 0 ? pad : 0.1);
         free(v);
-        return;
+        return 0;
     }
     const double p2 = v[(int)(0.02 * (m - 1))], p98 = v[(int)(0.98 * (m - 1))];
     const double core = p98 - p2;
@@ -69,15 +72,17 @@ static void value_range(const ic_trace_result *tr, int which, double scale, doub
     if (!(which == 0 && *lo == 0))
         *lo -= pad;
     free(v);
+    return 0;
 }
 
-/* One panel: frame, ticks, the lines, the singular points. */
-static void panel(cairo_t *cr, const ic_trace_result *tr, int which, double x, double y, double w,
+/* One panel: frame, ticks, the lines, the singular points; -1 out of memory. */
+static int panel(cairo_t *cr, const ic_trace_result *tr, int which, double x, double y, double w,
                   double h, double smax, double scale)
 {
     double lo, hi;
     int clipped;
-    value_range(tr, which, scale, &lo, &hi, &clipped);
+    if (value_range(tr, which, scale, &lo, &hi, &clipped) != 0)
+        return -1;
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_rectangle(cr, x, y, w, h);
     cairo_fill(cr);
@@ -161,6 +166,7 @@ static void panel(cairo_t *cr, const ic_trace_result *tr, int which, double x, d
                   ? (clipped ? "torsion \xcf\x84 (clipped to the 2-98% range)" : "torsion \xcf\x84")
                   : (clipped ? "curvature \xce\xba (clipped)" : "curvature \xce\xba"),
               0, 1);
+    return 0;
 }
 
 /* One legend entry: a swatch and "curve k"; its width with the space after. */
@@ -216,7 +222,8 @@ static void draw_curve_legend(cairo_t *cr, int nc, double x, double y, double wi
         ic_plot_text(cr, x, y, LEGEND_FONT, 0, buf, 0, 0.5);
 }
 
-void ic_plot_draw_chart(cairo_t *cr, const ic_trace_result *tr, double x, double y, double w, double h)
+int ic_plot_draw_chart(cairo_t *cr, const ic_trace_result *tr, double x, double y, double w,
+                       double h)
 {
     double smax = 0;
     const int nc = tr ? ic_trace_result_num_curves(tr) : 0;
@@ -225,7 +232,7 @@ void ic_plot_draw_chart(cairo_t *cr, const ic_trace_result *tr, double x, double
     if (nc == 0 || !(smax > 0)) {
         cairo_set_source_rgb(cr, 0.4, 0.4, 0.4);
         ic_plot_text(cr, x + 0.5 * w, y + 0.5 * h, 13, 0, "no curve: no curvature to chart", 0.5, 0.5);
-        return;
+        return 0;
     }
     /* two panels, each with its s ticks below it; the axis title and the
      * curve legend at the bottom */
@@ -237,9 +244,11 @@ void ic_plot_draw_chart(cairo_t *cr, const ic_trace_result *tr, double x, double
             if (isfinite(cv->points[k].kappa))
                 kscale = fmax(kscale, cv->points[k].kappa);
     }
-    panel(cr, tr, 0, x + left, y + 30, w - left - 15, ph, smax, kscale);
-    panel(cr, tr, 1, x + left, y + 30 + ph + 50, w - left - 15, ph, smax, kscale);
+    if (panel(cr, tr, 0, x + left, y + 30, w - left - 15, ph, smax, kscale) != 0 ||
+        panel(cr, tr, 1, x + left, y + 30 + ph + 50, w - left - 15, ph, smax, kscale) != 0)
+        return -1;
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
     ic_plot_text(cr, x + left + 0.5 * (w - left - 15), y + h - 28, 12, 0, "arc length s", 0.5, 0.5);
     draw_curve_legend(cr, nc, x + left, y + h - 5, w - left - 15);
+    return 0;
 }

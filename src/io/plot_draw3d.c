@@ -218,12 +218,14 @@ static int overlaps(const plot_rect *a, const plot_rect *r, int n)
     return 0;
 }
 
-static void draw_specials(ctx3d *c)
+/* The special points, labelled by type; -1 out of memory (before: drawn
+ * without them; tests/test_nomem.c, "writers"). */
+static int draw_specials(ctx3d *c)
 {
     const int n = ic_trace_result_num_specials(c->trace);
     plot_rect *placed = calloc((size_t)n + 1, sizeof *placed);
     if (!placed)
-        return;
+        return -1;
     int np = 0;
     for (int i = 0; i < n; i++) {
         const ic_trace_special *sp = ic_trace_result_special(c->trace, i);
@@ -259,6 +261,7 @@ static void draw_specials(ctx3d *c)
         ic_plot_text(c->cr, r.x0 + 2, r.y0 + 2, 12, 0, label, 0, 0);
     }
     free(placed);
+    return 0;
 }
 
 /* The points of the frames: n positions equally spaced in arc length over
@@ -436,8 +439,8 @@ static ic_status draw_scene(ctx3d *c, const ic_plot_scene *scene, const ic_plot_
             else
                 draw_arrow(c, pr[i].a, pr[i].b, pr[i].c);
         }
-        if (c->trace)
-            draw_specials(c);
+        if (c->trace && draw_specials(c) != 0)
+            st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory drawing the special points");
         if (nc > 0)
             draw_colorbar(c, x + w - 95, y + 60, fmin(260, h - 160));
         draw_legend(c, scene, x + 20, y + h - 18, w - 30, nf);

@@ -128,8 +128,8 @@ ic_status ic_plot_draw_3d(cairo_t *cr, const ic_plot_scene *scene, const ic_plot
  * first curves while they and "... and N more" fit, at most one per colour
  * of the palette; 0 when not even one fits. */
 int ic_plot_legend_entries(cairo_t *cr, int ncurves, double width);
-/* The chart of curvature and torsion against arc length. */
-void ic_plot_draw_chart(cairo_t *cr, const ic_trace_result *trace, double x, double y, double w,
-                     double h);
+/* The chart of curvature and torsion against arc length; -1 out of memory. */
+int ic_plot_draw_chart(cairo_t *cr, const ic_trace_result *trace, double x, double y, double w,
+                       double h);
 
 #endif

@@ -6,9 +6,9 @@
 #include <math.h>
 #include <string.h>
 
-ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res, const ic_local_point *pt,
-                             int order, ic_method method, const ic_local_options *opt,
-                             ic_error *err)
+static ic_status apparatus(ic_pair *pair, ic_local_result *res, const ic_local_point *pt,
+                           int order, ic_method method, const ic_local_options *opt,
+                           ic_error *err)
 {
     memset(res, 0, sizeof *res);
     res->point = *pt;
@@ -90,4 +90,16 @@ ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res, const ic_local
     br->regular = 1;
     ic_branch_finish(br, sh, opt);
     return IC_OK;
+}
+
+/* (the perturbation method tries the apparatus at nearby points, and passes
+ * over those where it fails: out of memory there is the pair's to tell;
+ * tests/test_nomem.c, "apparatus, tangential") */
+ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res, const ic_local_point *pt,
+                             int order, ic_method method, const ic_local_options *opt,
+                             ic_error *err)
+{
+    const long before = pair->nomem;
+    const ic_status st = apparatus(pair, res, pt, order, method, opt, err);
+    return ic_pair_nomem_check(pair, before, st, err);
 }

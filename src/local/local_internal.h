@@ -16,7 +16,16 @@ struct ic_pair {
     ic_jet_space *tensor[2]; /* [0]: 2 variables, [1]: 3 variables */
     ic_jet_space *near[2];
     ic_pairing pairing; /* what differs between the kinds of pair */
+    long nomem;         /* its operations that ran out of memory (ic_pair_nomem_check) */
 };
+
+/* Out of memory is noted in the pair, like a stream's error indicator: an
+ * operation built on others that tries another way after a failed step (a
+ * search, a march, a locator) cannot tell it from a step that fails, and
+ * asks afterwards. Returns st, noted when it is IC_ERR_NOMEM; IC_ERR_NOMEM
+ * (err set) when memory ran out during the operation (the pair's count is
+ * no longer `before`), whatever st says. */
+ic_status ic_pair_nomem_check(ic_pair *pair, long before, ic_status st, ic_error *err);
 
 /* The pair's pairing (pairing/pairing.h), built with it. */
 const ic_pairing *ic_pair_pairing(const ic_pair *pair);

@@ -56,8 +56,8 @@ static int converge(ic_pair *pair, ic_local_point *Q, const ic_local_point *near
     return 0;
 }
 
-ic_status ic_local_locate_degenerate(ic_pair *pair, ic_local_point *pt, const ic_local_point *near,
-                                     double reach, const ic_local_options *opt, ic_error *err)
+static ic_status locate_degenerate(ic_pair *pair, ic_local_point *pt, const ic_local_point *near,
+                                   double reach, const ic_local_options *opt, ic_error *err)
 {
     for (int m = MAX_DEGENERATE_ORDER; m >= 3; m--) {
         ic_local_point Q = *near;
@@ -76,4 +76,14 @@ ic_status ic_local_locate_degenerate(ic_pair *pair, ic_local_point *pt, const ic
                         "no degenerate tangential point (contact order 3..%d) within %g of "
                         "(%g, %g, %g)",
                         MAX_DEGENERATE_ORDER, reach, near->xyz[0], near->xyz[1], near->xyz[2]);
+}
+
+/* (a contact order whose apparatus fails is passed over: out of memory
+ * there is the pair's to tell) */
+ic_status ic_local_locate_degenerate(ic_pair *pair, ic_local_point *pt, const ic_local_point *near,
+                                     double reach, const ic_local_options *opt, ic_error *err)
+{
+    const long before = pair->nomem;
+    const ic_status st = locate_degenerate(pair, pt, near, reach, opt, err);
+    return ic_pair_nomem_check(pair, before, st, err);
 }

@@ -122,6 +122,15 @@ ic_status ic_sheet_at(ic_pair *pair, ic_sheet *sh, int which, const ic_local_poi
                              err);
 }
 
+ic_status ic_pair_nomem_check(ic_pair *pair, long before, ic_status st, ic_error *err)
+{
+    if (st == IC_ERR_NOMEM)
+        pair->nomem++;
+    else if (pair->nomem != before)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
+    return st;
+}
+
 ic_status ic_sheet_singular(ic_error *err, ic_status st, int which)
 {
     if (st == IC_ERR_DOMAIN && err) {

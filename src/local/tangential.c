@@ -38,21 +38,21 @@ static int idx2(const ic_jet_space *sp, int i, int j)
     return ic_jet_index(sp, a);
 }
 
-/* out(r, w) = a(r d + w dp) */
+/* The coefficients of a bivariate jet of the highest order. */
+enum { MAX_LEN2 = (IC_JET_MAX_ORDER + 1) * (IC_JET_MAX_ORDER + 2) / 2 };
+
+/* out(r, w) = a(r d + w dp). The substitution's jets are on the stack: a
+ * failed allocation here could not be reported (found by tests/test_nomem.c,
+ * "apparatus, tangential": the branches came from uninitialised memory). */
 static void rotate(const tctx *cx, double *out, const double *a, const double *d, const double *dp)
 {
-    const int n = ic_jet_space_len(cx->sp2);
-    double *X = malloc(2 * (size_t)n * sizeof *X);
-    if (!X)
-        return;
-    double *Y = X + n;
+    double X[MAX_LEN2], Y[MAX_LEN2];
     ic_jet_zero(X, cx->sp2);
     ic_jet_zero(Y, cx->sp2);
     X[1] = d[0], X[2] = dp[0];
     Y[1] = d[1], Y[2] = dp[1];
     const double *in[2] = {X, Y};
     ic_jet_compose(out, a, cx->sp2, in, cx->sp2, cx->s2);
-    free(X);
 }
 
 /* out = d a / dw (the second variable) */

@@ -20,6 +20,38 @@ static ic_surface *surface_alloc(ic_surface_kind kind, ic_backend backend)
     return s;
 }
 
+/* Evaluations in the surface's own variables up to this order (Newton steps
+ * of the searches and the locator, the fundamental forms, a pair's order-4
+ * tensors) find their spaces and workspaces made at creation: the callers
+ * that try another cell or step after a failed evaluation could not tell
+ * out of memory there from a point where the surface is undefined. */
+#define RESERVED_ORDER 4
+
+/* Makes what those evaluations use; IC_ERR_NOMEM, and s freed, if it cannot. */
+static ic_status reserve(ic_surface *s, ic_error *err)
+{
+    for (int k = 0; k <= RESERVED_ORDER; k++)
+        if (!ic_surface_space(s, k, err)) {
+            ic_surface_free(s);
+            return IC_ERR_NOMEM;
+        }
+    const ic_jet_space *sp = s->spaces[RESERVED_ORDER];
+    const size_t n = (size_t)ic_jet_space_len(sp);
+    size_t eval = 0;
+    if (s->backend == BACKEND_FORMULA)
+        eval = (size_t)ic_surface_num_vars(s) * n + ic_expr_jet_work_len(s->expr, sp);
+    else if (s->backend == BACKEND_PRIMITIVE)
+        eval = 7 * n; /* ic_primitive_taylor's */
+    /* the fundamental forms' Taylor coefficients, order 2 */
+    const size_t forms = 3 * (size_t)ic_jet_space_len(s->spaces[2]);
+    if ((eval && !ic_surface_work(s, IC_WORK_EVAL, eval)) ||
+        !ic_surface_work(s, IC_WORK_COMPOSE, forms)) {
+        ic_surface_free(s);
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory creating a surface");
+    }
+    return IC_OK;
+}
+
 ic_status ic_surface_new_parametric(ic_surface **out, const char *const xyz[3],
                                     const char *const params[2], const ic_constant *consts,
                                     int nconsts, int *which, ic_error *err)
@@ -36,8 +68,10 @@ ic_status ic_surface_new_parametric(ic_surface **out, const char *const xyz[3],
         ic_surface_free(s);
         return st;
     }
-    *out = s;
-    return IC_OK;
+    st = reserve(s, err);
+    if (st == IC_OK)
+        *out = s;
+    return st;
 }
 
 ic_status ic_surface_new_implicit(ic_surface **out, const char *f, const ic_constant *consts,
@@ -53,8 +87,10 @@ ic_status ic_surface_new_implicit(ic_surface **out, const char *f, const ic_cons
         ic_surface_free(s);
         return st;
     }
-    *out = s;
-    return IC_OK;
+    st = reserve(s, err);
+    if (st == IC_OK)
+        *out = s;
+    return st;
 }
 
 ic_status ic_surface_new_callback(ic_surface **out, ic_surface_kind kind, ic_surface_callback fn,
@@ -68,8 +104,10 @@ ic_status ic_surface_new_callback(ic_surface **out, ic_surface_kind kind, ic_sur
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory creating a surface");
     s->fn = fn;
     s->user = user;
-    *out = s;
-    return IC_OK;
+    const ic_status st = reserve(s, err);
+    if (st == IC_OK)
+        *out = s;
+    return st;
 }
 
 ic_status ic_surface_new_primitive(ic_surface **out, const ic_primitive *prim, ic_surface_kind form,
@@ -89,8 +127,10 @@ ic_status ic_surface_new_primitive(ic_surface **out, const ic_primitive *prim, i
     }
     if (form == IC_PARAMETRIC)
         ic_primitive_default_domain(s);
-    *out = s;
-    return IC_OK;
+    st = reserve(s, err);
+    if (st == IC_OK)
+        *out = s;
+    return st;
 }
 
 void ic_surface_free(ic_surface *s)

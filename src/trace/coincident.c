@@ -20,13 +20,15 @@
 #include "trace_internal.h"
 #include "common/mathconst.h"
 #include "common/vec3.h"
+#include "local/local_internal.h"
 
 #include <math.h>
 #include <string.h>
 
 enum { SCALE_GRID = 17 };
 
-/* Grows the box [lo, hi] by the samples of a parametric surface. */
+/* Grows the box [lo, hi] by the samples of a parametric surface; sp: two
+ * variables, order 2 (the point is each jet's constant term). */
 static void sample_bounds(ic_surface *s, const ic_jet_space *sp, double *lo, double *hi)
 {
     double dom[2][2];
@@ -38,25 +40,25 @@ static void sample_bounds(ic_surface *s, const ic_jet_space *sp, double *lo, dou
         for (int j = 0; j < SCALE_GRID; j++) {
             const double uv[2] = {dom[0][0] + (dom[0][1] - dom[0][0]) * i / (SCALE_GRID - 1),
                                   dom[1][0] + (dom[1][1] - dom[1][0]) * j / (SCALE_GRID - 1)};
-            double t[3];
-            if (ic_surface_taylor(s, t, uv, sp, NULL) != IC_OK || !isfinite(t[0] + t[1] + t[2]))
+            double t[18];
+            if (ic_surface_taylor(s, t, uv, sp, NULL) != IC_OK || !isfinite(t[0] + t[6] + t[12]))
                 continue;
             for (int k = 0; k < 3; k++)
-                lo[k] = fmin(lo[k], t[k]), hi[k] = fmax(hi[k], t[k]);
+                lo[k] = fmin(lo[k], t[6 * k]), hi[k] = fmax(hi[k], t[6 * k]);
         }
 }
 
 double ic_trace_problem_scale(ic_pair *pair, const ic_trace_options *opt)
 {
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    ic_jet_space *sp = NULL;
-    if (ic_jet_space_new(&sp, 2, 0, NULL) == IC_OK)
-        for (int s = 0; s < 2; s++) {
-            ic_surface *S = ic_pair_surface(pair, s);
-            if (ic_surface_get_kind(S) == IC_PARAMETRIC)
-                sample_bounds(S, sp, lo, hi);
-        }
-    ic_jet_space_free(sp);
+    /* the pair's space (the surface's workspace for it is made with the
+     * surface): a space made here could fail, and a smaller L would follow
+     * (tests/test_nomem.c, "trace, mixed") */
+    for (int s = 0; s < 2; s++) {
+        ic_surface *S = ic_pair_surface(pair, s);
+        if (ic_surface_get_kind(S) == IC_PARAMETRIC)
+            sample_bounds(S, pair->near[0], lo, hi);
+    }
     for (int k = 0; opt->has_box && k < 3; k++) {
         /* the samples cut to the box; no samples there: the box itself */
         const double a = fmax(lo[k], opt->box[k][0]), b = fmin(hi[k], opt->box[k][1]);

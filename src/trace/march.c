@@ -6,6 +6,7 @@
 #include "trace_constants.h"
 #include "trace_internal.h"
 #include "common/vec3.h"
+#include "local/local_internal.h"
 #include "tangential_curve.h"
 
 #include <math.h>
@@ -561,7 +562,7 @@ static ic_status no_step(ic_tracer *tr, int near_tangential, ic_trace_event *eve
                         tr->s, tr->cur.xyz[0], tr->cur.xyz[1], tr->cur.xyz[2], tr->opt.min_step);
 }
 
-ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
+static ic_status step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
 {
     *event = IC_TRACE_CONTINUE;
     if (tr->done)
@@ -605,6 +606,15 @@ ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
         return record(tr, err);
     }
     return no_step(tr, near_tangential, event, err);
+}
+
+/* A step tries shorter steps after a failed one: out of memory there is the
+ * pair's to tell (ic_pair_nomem_check; tests/test_nomem.c, "trace,
+ * tangential"). */
+ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
+{
+    const long before = tr->pair->nomem;
+    return ic_pair_nomem_check(tr->pair, before, step(tr, event, err), err);
 }
 
 void ic_tracer_set_deadline(ic_tracer *tr, double deadline) { tr->deadline = deadline; }

@@ -258,8 +258,11 @@ ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local
     return IC_OK;
 }
 
+/* Adds the curve of the points pts (the result's from now on, freed with it
+ * even when this fails). */
 static ic_status add_curve(ic_trace_result *r, ic_trace_point *pts, int n, int closed,
-                           ic_trace_event e0, ic_trace_event e1, double shape_tol, int at0, int at1)
+                           ic_trace_event e0, ic_trace_event e1, double shape_tol, int at0, int at1,
+                           ic_error *err)
 {
     if (r->ncurves == r->capc) {
         const int cap = r->capc ? 2 * r->capc : 8;
@@ -272,8 +275,10 @@ static ic_status add_curve(ic_trace_result *r, ic_trace_point *pts, int n, int c
             r->storage = s;
         if (at)
             r->at = at;
-        if (!c || !s || !at)
-            return IC_ERR_NOMEM;
+        if (!c || !s || !at) { /* (tests/test_nomem.c, "trace, mixed": pts leaked) */
+            free(pts);
+            return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory adding a curve");
+        }
         r->capc = cap;
     }
     r->at[r->ncurves][0] = at0;
@@ -290,8 +295,16 @@ static ic_status add_curve(ic_trace_result *r, ic_trace_point *pts, int n, int c
     c->shape_tol = shape_tol;
     c->shape = ic_trace_shape(pts, n, c->length, shape_tol, 0);
     if (r->index && ic_curve_index_add(r->index, r->ncurves - 1, pts, n) != 0)
-        return IC_ERR_NOMEM;
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory indexing a curve");
     return IC_OK;
+}
+
+/* Out of memory where the curve goes on regardless: noted in the pair, for
+ * ic_trace to answer (tests/test_nomem.c, "trace, implicit": a branch
+ * point was left out). */
+static void note_nomem(ic_pair *pair, ic_status st)
+{
+    (void)ic_pair_nomem_check(pair, pair->nomem, st, NULL);
 }
 
 /* The tangential point ahead of a curve end `near`; 0 when it cannot be
@@ -384,13 +397,19 @@ static int finish_end(ic_trace_result *r, ic_pair *pair, const ic_trace_options 
     int index = -1;
     if (!locate_end(pair, &opt->local, &near, &P)) {
         double X[3];
-        if (ic_trace_locate_surface_singular(pair, near.xyz, r->scale, X))
-            return end_at_surface_singular(r, pts, np, X);
-        ic_trace_add_special(r, pair, &near, 1, opt, NULL);
+        if (ic_trace_locate_surface_singular(pair, near.xyz, r->scale, X)) {
+            index = end_at_surface_singular(r, pts, np, X);
+            if (index < 0)
+                note_nomem(pair, IC_ERR_NOMEM);
+            return index;
+        }
+        note_nomem(pair, ic_trace_add_special(r, pair, &near, 1, opt, NULL));
         return -1;
     }
     /* classified once, where it was first recorded */
-    if (ic_trace_add_special(r, pair, &P, 0, opt, &index) != IC_OK || !r->located[index].res_ok)
+    const ic_status added = ic_trace_add_special(r, pair, &P, 0, opt, &index);
+    note_nomem(pair, added);
+    if (added != IC_OK || !r->located[index].res_ok)
         return -1;
     const ic_local_result res = r->located[index].res;
     double d[3];
@@ -466,7 +485,8 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
     ic_status st = ic_tracer_start(tr, pt, 1, err);
     if (st == IC_OK)
         st = ic_tracer_run(tr, &e1, err);
-    if (st != IC_OK && e1 != IC_TRACE_FAILED)
+    /* out of memory ends the trace, never just this curve */
+    if (st != IC_OK && (e1 != IC_TRACE_FAILED || st == IC_ERR_NOMEM))
         return st;
     if (st != IC_OK)
         ic_trace_failure(&r->report, "curve from (%g, %g, %g): %s", pt->xyz[0], pt->xyz[1],
@@ -484,11 +504,15 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
     if (e1 == IC_TRACE_CLOSED) {
         *pts_out = fwd;
         *n_out = n1;
-        return add_curve(r, fwd, n1, 1, e1, e1, opt->shape_tol, -1, -1);
+        return add_curve(r, fwd, n1, 1, e1, e1, opt->shape_tol, -1, -1, err);
     }
     st = ic_tracer_start(tr, pt, -1, err);
     if (st == IC_OK)
         st = ic_tracer_run(tr, &e0, err);
+    if (st == IC_ERR_NOMEM) {
+        free(fwd);
+        return st;
+    }
     if (st != IC_OK)
         ic_trace_failure(&r->report, "curve from (%g, %g, %g), backwards: %s", pt->xyz[0],
                          pt->xyz[1], pt->xyz[2], err ? err->message : "failed");
@@ -530,7 +554,7 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
         *n_out = 0;
         return IC_OK;
     }
-    return add_curve(r, all, n0 + n1 - 1, 0, e0, e1, opt->shape_tol, at0, at1);
+    return add_curve(r, all, n0 + n1 - 1, 0, e0, e1, opt->shape_tol, at0, at1, err);
 }
 
 /* Traces a curve from every start candidate that no curve traced so far
@@ -737,8 +761,8 @@ static ic_status check_options(const ic_trace_options *o, ic_error *err)
     return IC_OK;
 }
 
-ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options *user_opt,
-                   ic_error *err)
+static ic_status trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options *user_opt,
+                       ic_error *err)
 {
     if (!out || !pair || !user_opt)
         return ic_error_set(err, IC_ERR_INVALID, 0, "ic_trace needs a result, a pair and options");
@@ -854,3 +878,22 @@ const ic_trace_special *ic_trace_result_special(const ic_trace_result *r, int i)
     return i >= 0 && i < r->nspecials ? &r->specials[i] : NULL;
 }
 const ic_trace_report *ic_trace_result_report(const ic_trace_result *r) { return &r->report; }
+
+/* Out of memory ends the trace, wherever it struck: the searches and the
+ * march try another way after a failed step, so it is asked of the pair at
+ * the end (ic_pair_nomem_check; tests/test_nomem.c). */
+ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options *user_opt,
+                   ic_error *err)
+{
+    if (!out || !pair || !user_opt)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "ic_trace needs a result, a pair and options");
+    const long before = pair->nomem;
+    ic_status st = ic_pair_nomem_check(pair, before, trace(out, pair, user_opt, err), err);
+    if (st == IC_ERR_NOMEM) {
+        ic_trace_result_free(*out);
+        *out = NULL;
+        if (err && err->code != IC_ERR_NOMEM) /* a stage that said nothing */
+            ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory tracing");
+    }
+    return st;
+}

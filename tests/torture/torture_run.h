@@ -20,14 +20,15 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "../harness.h"
 #include "intercurve.h"
 
-/* Relative tolerance of the lengths: the docs promise 1e-9 for arc length
- * (docs/testing.md, "traced lengths", the issue's figure; the tracer's
- * truncation error per step is absolute, 1e-10 by default, so on curves of
- * normal size the sum over a few hundred steps stays below 1e-9 relative).
- * A case that misses it is a known failure, never a looser tolerance. */
-#define TT_LENGTH_TOL 1e-9
+/* Relative tolerance of the lengths: the docs' promise for arc length
+ * (TIER_LENGTH, harness.h; the tracer's truncation error per step is
+ * absolute, 1e-10 by default, so on curves of normal size the sum over a
+ * few hundred steps stays below it). A case that misses it is a known
+ * failure, never a looser tolerance. */
+#define TT_LENGTH_TOL TIER_LENGTH
 /* Point positions: 1e-8 of the problem's size (the located singular points
  * are Newton/Gauss-Newton solutions good to ~1e-12; 1e-8 leaves room for the
  * conditioning of a problem of that size without accepting a point that is

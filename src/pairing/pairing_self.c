@@ -6,21 +6,61 @@
 
 #include <math.h>
 
-/* One sheet pair per curve, and away from the diagonal by `band` (two leaf
- * widths of the first search: the band does not shrink with refinement). */
+/* dimensionless: two preimages closer than this fraction of the diagonal
+ * band are one (Newton leaves trivial solutions apart by rounding, 1e-15 of
+ * the domain; the band is about 1/16 of it) */
+#define SELF_DISTINCT_OF_BAND 1e-6
+
+/* 1 when R is proven one-to-one over the (u, v) box [lo, hi]: for a and b
+ * in the box, R(a) - R(b) = M (a - b) with row i of M the gradient of R_i at
+ * a point between them (mean value theorem, row by row), so M lies in the
+ * interval matrix of R's gradients over the box; where a 2 x 2 minor of it
+ * excludes 0, every such M has rank 2 and R(a) = R(b) forces a = b. */
+static int injective(const ic_pairing *p, const double lo[2], const double hi[2])
+{
+    const ic_interval box[2] = {{lo[0], hi[0]}, {lo[1], hi[1]}};
+    ic_interval_grad R[3];
+    if (ic_surface_eval_interval_grad(p->S[0], R, box, NULL) != IC_OK)
+        return 0;
+    for (int i = 0; i < 3; i++) {
+        const int j = (i + 1) % 3;
+        const ic_interval minor = ic_interval_sub(ic_interval_mul(R[i].d[0], R[j].d[1]),
+                                                  ic_interval_mul(R[i].d[1], R[j].d[0]));
+        if (ic_pairing_excludes_zero(minor))
+            return 1;
+    }
+    return 0;
+}
+
+/* One sheet pair per curve ((u, v) before (p, q): a cell wholly after is
+ * the mirror of one before); a leaf within `band` of the diagonal (two leaf
+ * widths of the first search) is skipped only where R is proven one-to-one
+ * over the hull of its two parameter boxes, which then holds no pair of
+ * distinct preimages. Elsewhere it is searched like any cell (before: every
+ * such leaf was skipped, and at depth 3 the band held the whole domain of
+ * Enneper's surface: no curve, "complete"). */
 static int skip(const ic_pairing *p, const double *lo, const double *hi, int leaf,
                 const double band[2])
 {
-    (void)p;
-    return lo[0] > hi[2] ||
-           (leaf && hi[0] >= lo[2] - band[0] && lo[0] <= hi[2] + band[0] &&
-            hi[1] >= lo[3] - band[1] && lo[1] <= hi[3] + band[1]);
+    if (lo[0] > hi[2])
+        return 1;
+    const int near = hi[0] >= lo[2] - band[0] && lo[0] <= hi[2] + band[0] &&
+                     hi[1] >= lo[3] - band[1] && lo[1] <= hi[3] + band[1];
+    if (!leaf || !near)
+        return 0;
+    const double hlo[2] = {fmin(lo[0], lo[2]), fmin(lo[1], lo[3])};
+    const double hhi[2] = {fmax(hi[0], hi[2]), fmax(hi[1], hi[3])};
+    return injective(p, hlo, hhi);
 }
 
+/* Preimages apart by more than a millionth of the band: Newton from a cell
+ * by the diagonal that lands on the diagonal itself (a trivial solution,
+ * apart by rounding) gives no start point; a true pair of preimages close
+ * together does. */
 static int distinct(const ic_pairing *p, const double *z, const double band[2])
 {
     (void)p;
-    return fabs(z[0] - z[2]) + fabs(z[1] - z[3]) > 2 * (band[0] + band[1]);
+    return fabs(z[0] - z[2]) + fabs(z[1] - z[3]) > SELF_DISTINCT_OF_BAND * (band[0] + band[1]);
 }
 
 static ic_status region(const ic_pairing *p, const double box[3][2], int has_box, double *lo,

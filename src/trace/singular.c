@@ -74,6 +74,12 @@ ic_status ic_trace_record_tangential(ic_trace_result *r, ic_tracer *tr, ic_pair 
         pt = *near;
         approximate = 1;
     }
+    /* a self-intersection's trivial solution: one preimage twice (every
+     * point of the diagonal has parallel normals) */
+    if (ic_pair_is_self(pair) &&
+        fabs(pt.params[0][0] - pt.params[1][0]) + fabs(pt.params[0][1] - pt.params[1][1]) <=
+            lo.distinct_params)
+        return IC_OK;
     /* two surfaces that coincide around it: a region, not a point */
     if (ic_trace_in_coincident(r, pt.xyz))
         return IC_OK;

@@ -185,11 +185,291 @@ static void test_close_branches(void)
     release(&t);
 }
 
+/* ---- a singular point of a surface ---- */
+
+/* The cone x^2 + y^2 = z^2 cut by the cylinder (x - 1/2)^2 + y^2 = 1/4
+ * through its apex: the closed curve c(th) = ((1 + cos 2th)/2,
+ * (sin 2th)/2, cos th), through the apex twice (th = pi/2, 3 pi/2), of
+ * speed sqrt(1 + sin^2 th). */
+static long double apex_curve_speed(long double th)
+{
+    const long double s = sinl(th);
+    return sqrtl(1 + s * s);
+}
+
+/* Its torsion at th: (c1 x c2) . c3 / |c1 x c2|^2, ck the k-th derivative. */
+static double apex_curve_torsion(double th)
+{
+    const double d1[3] = {-sin(2 * th), cos(2 * th), -sin(th)};
+    const double d2[3] = {-2 * cos(2 * th), -2 * sin(2 * th), -cos(th)};
+    const double d3[3] = {4 * sin(2 * th), -4 * cos(2 * th), sin(th)};
+    const double c[3] = {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2],
+                         d1[0] * d2[1] - d1[1] * d2[0]};
+    return (c[0] * d3[0] + c[1] * d3[1] + c[2] * d3[2]) / (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+}
+
+/* The largest relative error of the torsion over the curve's points (the
+ * apex itself, where the frame is a limit, left out): th from cos th = z,
+ * sin th = y / z. */
+static double apex_torsion_error(const ic_trace_curve *c)
+{
+    double worst = 0;
+    for (int i = 0; i < c->npoints; i++) {
+        const ic_trace_point *p = &c->points[i];
+        const double *x = p->xyz;
+        if (!p->frame_defined || fabs(x[2]) < 1e-12)
+            continue;
+        const double tau = apex_curve_torsion(atan2(x[1] / x[2], x[2]));
+        worst = fmax(worst, fabs(p->tau - tau) / fmax(1.0, fabs(tau)));
+    }
+    return worst;
+}
+
+/* IC_TRACE_SINGULAR_CLEARANCE: the curve points nearer the apex than the
+ * clearance are dropped and the curve runs straight to the apex. At the
+ * cone's apex the normal vanishes: the torsion of a point at d from it errs
+ * by about eps (L/d)^3 (measured 1.4e-5 relative at d = 4e-4, 0.1 at
+ * 4e-5), so 1e-3 admits no point nearer than about 1e-4 L; a straight cut
+ * of a curve of curvature kappa over d shortens it by about kappa^2 d^3 / 24
+ * at each of the four ends: 1.5e-3 L already costs 1e-7 of the length. */
+static void test_cone_apex(void)
+{
+    static const double box[3][2] = {{-0.2, 1.2}, {-0.7, 0.7}, {-1.2, 1.2}};
+    traced t;
+    if (!trace_implicit(&t, "x^2 + y^2 - z^2", "(x - 0.5)^2 + y^2 - 0.25", box, 6)) {
+        CHECK(0, "cone and cylinder: traced");
+        return;
+    }
+    const double L = simpson_length(apex_curve_speed, 0, 2 * PI);
+    const ic_trace_curve *c = ncurves(&t) == 1 ? ic_trace_result_curve(t.res, 0) : NULL;
+    CHECK(c && c->closed && fabs(c->length - L) <= LENGTH_REL * L,
+          "cone and cylinder: %d curves, the first closed %d of length %.17g (want one closed "
+          "of %.17g)",
+          ncurves(&t), c ? c->closed : -1, c ? c->length : 0.0, L);
+    CHECK(npoints(&t) == 1 && ic_trace_result_special(t.res, 0)->type == IC_POINT_SURFACE_SINGULAR,
+          "cone and cylinder: %d points (want the apex, surface-singular)", npoints(&t));
+    if (c) {
+        /* relative: see above */
+        const double err = apex_torsion_error(c);
+        CHECK(err <= 1e-3, "cone and cylinder: torsion off by %.3g relative near the apex", err);
+    }
+    CHECK(complete(&t), "cone and cylinder: complete (%s)", first_failure(&t));
+    release(&t);
+}
+
+/* ---- coincidence ---- */
+
+/* IC_TRACE_COINCIDENT_TOL: z = a (x^2 + y^2) and z = 0 touch at the origin
+ * (an isolated contact); at L/8 from it they are a L^2/64 apart, here
+ * 10^-9.5 L with L = 1: a Morse contact, not a coincidence. The same plane
+ * twice coincides. */
+static void test_coincidence_tolerance(void)
+{
+    ic_surface *A = NULL, *B = NULL, *P = NULL;
+    ic_pair *flat = NULL, *same = NULL;
+    const double a = 64 * pow(10.0, -9.5);
+    char f[80];
+    snprintf(f, sizeof f, "z - %.17g*(x^2 + y^2)", a);
+    const int ok = ic_surface_new_implicit(&A, f, NULL, 0, NULL) == IC_OK &&
+                   ic_surface_new_implicit(&B, "z", NULL, 0, NULL) == IC_OK &&
+                   ic_surface_new_implicit(&P, "z", NULL, 0, NULL) == IC_OK &&
+                   ic_pair_new(&flat, A, B, NULL) == IC_OK && ic_pair_new(&same, P, B, NULL) == IC_OK;
+    CHECK(ok, "coincidence: surfaces made");
+    if (ok) {
+        ic_local_point origin;
+        memset(&origin, 0, sizeof origin);
+        CHECK(!ic_trace_coincident_at(flat, &origin, 1.0),
+              "z = %g (x^2 + y^2) against z = 0: taken for coincident", a);
+        CHECK(ic_trace_coincident_at(same, &origin, 1.0), "the plane twice: not coincident");
+    }
+    ic_pair_free(flat);
+    ic_pair_free(same);
+    ic_surface_free(A);
+    ic_surface_free(B);
+    ic_surface_free(P);
+}
+
+/* ---- the tangential locator and its place ---- */
+
+/* The contact of order m of the graph z = H + (x - X0)^m + (y - Y0)^m with
+ * the plane z = H, at (X0, Y0, H) by construction, in three pairings:
+ * implicit/implicit, a parametric graph on an implicit plane, and two
+ * parametric sheets (over (u, v) = (x, y)). */
+#define X0 0.3
+#define Y0 (-0.2)
+#define H 0.1
+
+static const double GRAPH_DOMAIN[2][2] = {{-2, 2}, {-2, 2}};
+
+static ic_surface *parametric(const char *z)
+{
+    const char *xyz[3] = {"u", "v", z};
+    const int per[2] = {0, 0};
+    ic_surface *s = NULL;
+    if (ic_surface_new_parametric(&s, xyz, NULL, NULL, 0, NULL, NULL) != IC_OK)
+        return NULL;
+    if (ic_surface_set_domain(s, GRAPH_DOMAIN, per, NULL) != IC_OK) {
+        ic_surface_free(s);
+        return NULL;
+    }
+    return s;
+}
+
+static ic_surface *implicit(const char *f)
+{
+    ic_surface *s = NULL;
+    return ic_surface_new_implicit(&s, f, NULL, 0, NULL) == IC_OK ? s : NULL;
+}
+
+/* Surfaces A (the graph) and B (the plane) in the pairing; 0 on failure. */
+static int contact_surfaces(int m, int pairing, ic_surface **A, ic_surface **B)
+{
+    char g[160];
+    if (pairing == 0) {
+        snprintf(g, sizeof g, "z - %g - (x - %g)^%d - (y - %g)^%d", H, X0, m, Y0, m);
+        *A = implicit(g);
+    } else {
+        snprintf(g, sizeof g, "%g + (u - %g)^%d + (v - %g)^%d", H, X0, m, Y0, m);
+        *A = parametric(g);
+    }
+    snprintf(g, sizeof g, pairing == 2 ? "%g" : "z - %g", H);
+    *B = pairing == 2 ? parametric(g) : implicit(g);
+    return *A && *B;
+}
+
+typedef struct {
+    ic_status status;
+    double dist;  /* from the true contact */
+    double place; /* ic_local_tangential_place */
+} located;
+
+/* Locates from the point of the graph at (X0, Y0) + off dir (L = 1). */
+static located locate_contact(ic_pair *pair, int m, double off, const double *dir)
+{
+    ic_local_options o;
+    ic_local_defaults(&o);
+    o.scale = 1.0;
+    const double x = X0 + off * dir[0], y = Y0 + off * dir[1];
+    ic_local_point near, pt;
+    memset(&near, 0, sizeof near);
+    near.xyz[0] = x, near.xyz[1] = y, near.xyz[2] = H + pow(x - X0, m) + pow(y - Y0, m);
+    for (int s = 0; s < 2; s++)
+        near.params[s][0] = x, near.params[s][1] = y;
+    located r = {ic_local_locate_tangential(pair, &pt, &near, 1.0, &o, NULL), INFINITY, NAN};
+    if (r.status != IC_OK)
+        return r;
+    r.dist = sqrt(pow(pt.xyz[0] - X0, 2) + pow(pt.xyz[1] - Y0, 2) + pow(pt.xyz[2] - H, 2));
+    if (ic_local_tangential_place(pair, &pt, &o, &r.place, NULL) != IC_OK)
+        r.place = NAN;
+    return r;
+}
+
+/* relative (L = 1): where the located contact must be. The locator ends at
+ * steps of 1e-15 of the unknowns (measured 8e-15 up to order 14); at order
+ * 16, the highest the analysis reaches, the residual is flat (16 d^15 <
+ * 1e-12 up to d = 0.13) and it ends within 1e-11 (measured 5.6e-12). */
+static double locate_tol(int m) { return m <= 14 ? 1e-12 : 1e-10; }
+
+/* The place radius is an estimate by decades of L, within a factor of
+ * about 4 of the true distance (docs/tracing.md); it is at most 1e-4 L,
+ * which says "not known". A simple point is known to a few units in the
+ * last place of L (IC_TRACE_PLACE_ULPS assumes 16). */
+#define PLACE_FACTOR 8.0
+#define PLACE_UNKNOWN 1e-4
+#define PLACE_SIMPLE_ULPS 16
+
+static void check_place(const char *what, const located *r, int m)
+{
+    CHECK(r->place >= fmin(r->dist / PLACE_FACTOR, 0.99 * PLACE_UNKNOWN) - 16 * DBL_EPSILON,
+          "%s: the place radius %.3g, but the point is %.3g from the contact", what, r->place,
+          r->dist);
+    if (m <= 4 && r->dist <= 1e-13)
+        CHECK(r->place <= PLACE_SIMPLE_ULPS * DBL_EPSILON,
+              "%s: a point located to %.3g, its place radius %.3g", what, r->dist, r->place);
+}
+
+/* Whether the start `off` away must end at the contact: its residual
+ * (about m off^(m-1)) well above the locator's acceptance. */
+static int must_converge(int m, double off)
+{
+    return m <= 4 ? off >= 1e-3 : m <= 8 ? off >= 1e-2 : off >= 0.075;
+}
+
+/* The contacts of order 2 to 16 in the three pairings, from four sides at
+ * each distance: located (LOCATE_*), and their place honest and useful
+ * (PLACE_*). At order 16 the locator may say it cannot converge. */
+static void test_locator_contacts(void)
+{
+    static const double dirs[4][2] = {{1, 0.5}, {-0.3, 1}, {-1, -0.7}, {0.6, -1}};
+    static const double near_offs[3] = {1e-2, 1e-3, 1e-4}, far_offs[3] = {0.3, 0.15, 0.075};
+    for (int m = 2; m <= 16; m += 2)
+        for (int pairing = 0; pairing < 3; pairing++) {
+            ic_surface *A = NULL, *B = NULL;
+            ic_pair *pair = NULL;
+            const int ok = contact_surfaces(m, pairing, &A, &B) &&
+                           ic_pair_new(&pair, A, B, NULL) == IC_OK;
+            CHECK(ok, "contact of order %d, pairing %d: made", m, pairing);
+            for (int i = 0; ok && i < 3; i++)
+                for (int d = 0; d < 4; d++) {
+                    const double off = m <= 8 ? near_offs[i] : far_offs[i];
+                    char what[96];
+                    snprintf(what, sizeof what, "order %d, pairing %d, from %g side %d", m,
+                             pairing, off, d);
+                    const located r = locate_contact(pair, m, off, dirs[d]);
+                    if (must_converge(m, off))
+                        CHECK((m == 16 && r.status == IC_ERR_UNABLE) || r.dist <= locate_tol(m),
+                              "%s: located %.3g from the contact (status %d)", what, r.dist,
+                              r.status);
+                    if (r.status == IC_OK)
+                        check_place(what, &r, m);
+                }
+            ic_pair_free(pair);
+            ic_surface_free(A);
+            ic_surface_free(B);
+        }
+}
+
+/* LOCATE_ACCEPT: the sphere of radius 1/2 above the plane z = 0 with a gap
+ * g: no common point (every residual vector has a component of at least
+ * g/2: the distances to the two surfaces add up to g at best), so none is
+ * located at g = 6e-12 (L = 1); at g = 0 the contact is. */
+static void test_locator_hovering(void)
+{
+    static const char *const spheres[2] = {"x^2 + y^2 + (z - 0.500000000006)^2 - 0.25",
+                                           "x^2 + y^2 + (z - 0.5)^2 - 0.25"};
+    for (int touching = 0; touching < 2; touching++) {
+        ic_surface *A = implicit(spheres[touching]), *B = implicit("z");
+        ic_pair *pair = NULL;
+        ic_local_options o;
+        ic_local_defaults(&o);
+        ic_local_point near, pt;
+        memset(&near, 0, sizeof near);
+        memset(&pt, 0, sizeof pt);
+        near.xyz[0] = 1e-3, near.xyz[1] = 2e-3;
+        ic_status st = IC_ERR_INVALID;
+        if (A && B && ic_pair_new(&pair, A, B, NULL) == IC_OK)
+            st = ic_local_locate_tangential(pair, &pt, &near, 1.0, &o, NULL);
+        if (touching)
+            CHECK(st == IC_OK && fabs(pt.xyz[0]) + fabs(pt.xyz[1]) + fabs(pt.xyz[2]) <= 1e-15,
+                  "the touching sphere: status %d", st);
+        else
+            CHECK(st == IC_ERR_UNABLE, "a sphere 6e-12 above the plane: status %d, at (%g, %g, %g)",
+                  st, pt.xyz[0], pt.xyz[1], pt.xyz[2]);
+        ic_pair_free(pair);
+        ic_surface_free(A);
+        ic_surface_free(B);
+    }
+}
+
 int main(void)
 {
     test_cell_budget();
     test_refinement_depth();
     test_loop_beside_contact();
     test_close_branches();
+    test_cone_apex();
+    test_coincidence_tolerance();
+    test_locator_contacts();
+    test_locator_hovering();
     return harness_finish("constants");
 }

@@ -20,28 +20,41 @@
 /* The docs' promise for lengths (docs/tracing.md). */
 #define LENGTH_REL 1e-9
 
-/* Two implicit formulas traced in the box with the default options at the
- * search depth given. */
-static int trace_implicit(traced *t, const char *fa, const char *fb, const double box[3][2],
-                          int depth)
+/* The default options in the box at the search depth given. */
+static ic_trace_options box_options(const double box[3][2], int depth)
 {
-    memset(t, 0, sizeof *t);
-    ic_error err;
     ic_trace_options opt;
     ic_trace_defaults(&opt);
     opt.has_box = 1;
     memcpy(opt.box, box, sizeof opt.box);
     opt.depth = depth;
+    return opt;
+}
+
+/* Two implicit formulas traced with the options. */
+static int trace_with(traced *t, const char *fa, const char *fb, const ic_trace_options *opt)
+{
+    memset(t, 0, sizeof *t);
+    ic_error err;
     ic_status st = ic_surface_new_implicit(&t->A, fa, NULL, 0, &err);
     if (st == IC_OK)
         st = ic_surface_new_implicit(&t->B, fb, NULL, 0, &err);
     if (st == IC_OK)
         st = ic_pair_new(&t->pair, t->A, t->B, &err);
     if (st == IC_OK)
-        st = ic_trace(&t->res, t->pair, &opt, &err);
+        st = ic_trace(&t->res, t->pair, opt, &err);
     if (st != IC_OK)
         fprintf(stderr, "trace %s / %s: %s\n", fa, fb, err.message);
     return st == IC_OK;
+}
+
+/* Two implicit formulas traced in the box with the default options at the
+ * search depth given. */
+static int trace_implicit(traced *t, const char *fa, const char *fb, const double box[3][2],
+                          int depth)
+{
+    const ic_trace_options opt = box_options(box, depth);
+    return trace_with(t, fa, fb, &opt);
 }
 
 static int ncurves(const traced *t) { return ic_trace_result_num_curves(t->res); }
@@ -51,6 +64,16 @@ static const char *first_failure(const traced *t)
 {
     const ic_trace_report *r = ic_trace_result_report(t->res);
     return r->nfailures ? r->failures[0] : "";
+}
+
+/* Whether some failure of the report contains the words. */
+static int failure_says(const traced *t, const char *words)
+{
+    const ic_trace_report *r = ic_trace_result_report(t->res);
+    for (int i = 0; i < r->nfailures; i++)
+        if (strstr(r->failures[i], words))
+            return 1;
+    return 0;
 }
 
 /* ---- the search's budgets ---- */
@@ -144,6 +167,42 @@ static void test_loop_beside_contact(void)
               p->approximate, p->xyz[0], p->xyz[1], p->xyz[2]);
     }
     CHECK(complete(&t), "a loop 0.02 from a contact: complete (%s)", first_failure(&t));
+    release(&t);
+}
+
+/* ---- the undecided regions ---- */
+
+/* IC_TRACE_MAX_REGIONS: y + 1e-300 exp(800 sin(8 pi x)) overflows double
+ * precision where sin(8 pi x) > log(DBL_MAX)/800 = 0.8872, in eight bands
+ * of width 0.038 about x = 1/16 + n/4, n = -4..3. Each band is undecided
+ * (the formula cannot be evaluated there) and is listed as its own region,
+ * no wider in x than the band and a first-search cell (1/32) each side:
+ * with six regions at most the last would reach across three bands. */
+static void test_undecided_regions(void)
+{
+    static const double box[3][2] = {{-1, 1}, {-1, 1}, {-1, 1}};
+    traced t;
+    if (!trace_implicit(&t, "y + 1e-300*exp(800*sin(8*pi*x))", "z", box, 6)) {
+        CHECK(0, "overflow bands: traced");
+        return;
+    }
+    CHECK(!complete(&t), "overflow bands: complete");
+    const ic_trace_report *r = ic_trace_result_report(t.res);
+    int found[8] = {0};
+    for (int i = 0; i < r->nfailures; i++) {
+        const char *box_text = strchr(r->failures[i], '[');
+        double lo, hi;
+        if (strncmp(r->failures[i], "undecided:", 10) != 0 || !box_text ||
+            sscanf(box_text, "[%lf, %lf]", &lo, &hi) != 2)
+            continue;
+        CHECK(hi - lo <= 0.038 + 2.0 / 32, "an undecided region [%g, %g] in x: wider than a band",
+              lo, hi);
+        for (int n = -4; n <= 3; n++)
+            found[n + 4] += lo <= 0.0625 + n / 4.0 && 0.0625 + n / 4.0 <= hi;
+    }
+    for (int n = 0; n < 8; n++)
+        CHECK(found[n] == 1, "the band about x = %g: in %d regions (want 1)", 0.0625 + (n - 4) / 4.0,
+              found[n]);
     release(&t);
 }
 
@@ -287,6 +346,31 @@ static void test_coincidence_tolerance(void)
     ic_surface_free(A);
     ic_surface_free(B);
     ic_surface_free(P);
+}
+
+/* IC_TRACE_COINCIDENT_REACH: the plane z = 0.25 given twice. The cells
+ * within the reach of a point where the surfaces were found to coincide
+ * are the coincident region, not refined: the trace takes 0.7 s (Debug).
+ * With a tenth of the reach the cells between the coincident points are
+ * refined and each new start point tested again: 380 s. Within a time
+ * limit of 10 s the region must be reported as such, not cut short. */
+static void test_coincident_region(void)
+{
+    static const double box[3][2] = {{-1, 1}, {-1, 1}, {-1, 1}};
+    ic_trace_options opt = box_options(box, 6);
+    opt.time_limit = 10;
+    traced t;
+    if (!trace_with(&t, "z - 0.25", "z - 0.25", &opt)) {
+        CHECK(0, "coincident planes: traced");
+        return;
+    }
+    CHECK(ncurves(&t) == 0 && npoints(&t) == 0 && !complete(&t),
+          "coincident planes: %d curves, %d points, complete %d (want 0, 0, 0)", ncurves(&t),
+          npoints(&t), complete(&t));
+    CHECK(failure_says(&t, "coincide") && !failure_says(&t, "time limit"),
+          "coincident planes: the report says \"%s\" (want the coincident region, in time)",
+          first_failure(&t));
+    release(&t);
 }
 
 /* ---- the tangential locator and its place ---- */
@@ -466,9 +550,11 @@ int main(void)
     test_cell_budget();
     test_refinement_depth();
     test_loop_beside_contact();
+    test_undecided_regions();
     test_close_branches();
     test_cone_apex();
     test_coincidence_tolerance();
+    test_coincident_region();
     test_locator_contacts();
     test_locator_hovering();
     return harness_finish("constants");

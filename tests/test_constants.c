@@ -244,7 +244,7 @@ static void test_close_branches(void)
     release(&t);
 }
 
-/* ---- a singular point of a surface ---- */
+/* ---- singular points ---- */
 
 /* The cone x^2 + y^2 = z^2 cut by the cylinder (x - 1/2)^2 + y^2 = 1/4
  * through its apex: the closed curve c(th) = ((1 + cos 2th)/2,
@@ -313,6 +313,33 @@ static void test_cone_apex(void)
         CHECK(err <= 1e-3, "cone and cylinder: torsion off by %.3g relative near the apex", err);
     }
     CHECK(complete(&t), "cone and cylinder: complete (%s)", first_failure(&t));
+    release(&t);
+}
+
+/* IC_TRACE_END_REACH: the saddle z = k (x^2 - y^2), k = 0.05, meets z = 0
+ * in the lines y = x and y = -x, crossing at a branch point at the origin.
+ * The normals' angle there grows as 2 k d with the distance d, so the
+ * march stops about 1e-4 (3e-5 L) before the point; its locator must reach
+ * that far (1e-4 L does, 1e-5 L does not: four ends left approximate). */
+static void test_flat_branch_point(void)
+{
+    static const double box[3][2] = {{-1, 1}, {-1, 1}, {-1, 1}};
+    traced t;
+    if (!trace_implicit(&t, "z - 0.05*(x^2 - y^2)", "z", box, 6)) {
+        CHECK(0, "flat saddle: traced");
+        return;
+    }
+    CHECK(ncurves(&t) == 2, "flat saddle: %d curves (want the two diagonals)", ncurves(&t));
+    for (int i = 0; i < ncurves(&t); i++) {
+        const ic_trace_curve *c = ic_trace_result_curve(t.res, i);
+        CHECK(fabs(c->length - 2 * sqrt(2.0)) <= LENGTH_REL * 2 * sqrt(2.0),
+              "flat saddle: curve %d of length %.17g (want 2 sqrt 2)", i, c->length);
+    }
+    const ic_trace_special *p = npoints(&t) == 1 ? ic_trace_result_special(t.res, 0) : NULL;
+    CHECK(p && p->type == IC_POINT_BRANCH && !p->approximate &&
+              fmax(fmax(fabs(p->xyz[0]), fabs(p->xyz[1])), fabs(p->xyz[2])) <= 1e-12,
+          "flat saddle: %d points (want the branch point at the origin, exact)", npoints(&t));
+    CHECK(complete(&t), "flat saddle: complete (%s)", first_failure(&t));
     release(&t);
 }
 
@@ -545,6 +572,80 @@ static void test_locator_hovering(void)
     }
 }
 
+/* The cylinder-like graph z = H + (x - X0)^m touches the plane z = H along
+ * the line x = X0 (a tangential curve, of contact order m): located from
+ * beside it, the point is on the line and not carried along it (the
+ * locator does not follow a tangential curve). LOCATE_MAX_ITERATIONS: at
+ * order 8 the lengthened steps need more than 10 iterations. */
+static void test_locator_lines(void)
+{
+    static const double offs[3] = {1e-2, 3e-2, 1e-1};
+    for (int m = 2; m <= 8; m += 2)
+        for (int pairing = 0; pairing < 3; pairing++) {
+            char g[120];
+            if (pairing == 0)
+                snprintf(g, sizeof g, "z - %g - (x - %g)^%d", H, X0, m);
+            else
+                snprintf(g, sizeof g, "%g + (u - %g)^%d", H, X0, m);
+            char h[40];
+            snprintf(h, sizeof h, pairing == 2 ? "%g" : "z - %g", H);
+            ic_surface *A = pairing == 0 ? implicit(g) : parametric(g);
+            ic_surface *B = pairing == 2 ? parametric(h) : implicit(h);
+            ic_pair *pair = NULL;
+            const int ok = A && B && ic_pair_new(&pair, A, B, NULL) == IC_OK;
+            CHECK(ok, "line of order %d, pairing %d: made", m, pairing);
+            for (int i = 0; ok && i < 3; i++) {
+                ic_local_options o;
+                ic_local_defaults(&o);
+                ic_local_point near, pt;
+                memset(&near, 0, sizeof near);
+                memset(&pt, 0, sizeof pt);
+                const double x = X0 + offs[i], y = Y0;
+                near.xyz[0] = x, near.xyz[1] = y, near.xyz[2] = H + pow(offs[i], m);
+                for (int s = 0; s < 2; s++)
+                    near.params[s][0] = x, near.params[s][1] = y;
+                const ic_status st = ic_local_locate_tangential(pair, &pt, &near, 1.0, &o, NULL);
+                /* on the line to the locator's 1e-12; along it, not moved
+                 * farther than the start was from it */
+                CHECK(st == IC_OK && hypot(pt.xyz[0] - X0, pt.xyz[2] - H) <= 1e-12 &&
+                          fabs(pt.xyz[1] - y) <= offs[i],
+                      "line of order %d, pairing %d, from %g: status %d at (%.17g, %.17g, %.17g)",
+                      m, pairing, offs[i], st, pt.xyz[0], pt.xyz[1], pt.xyz[2]);
+            }
+            ic_pair_free(pair);
+            ic_surface_free(A);
+            ic_surface_free(B);
+        }
+}
+
+/* LOCATE_PLAIN_ITERATIONS: the sphere of radius 1/2 on the plane z = 0,
+ * located from its points up to 0.45 from the contact (plain Gauss-Newton
+ * needs more than 4 steps from there). */
+static void test_locator_far(void)
+{
+    ic_surface *A = implicit("x^2 + y^2 + (z - 0.5)^2 - 0.25"), *B = implicit("z");
+    ic_pair *pair = NULL;
+    const int ok = A && B && ic_pair_new(&pair, A, B, NULL) == IC_OK;
+    CHECK(ok, "sphere on a plane: made");
+    static const double offs[4] = {0.1, 0.2, 0.3, 0.45};
+    for (int i = 0; ok && i < 4; i++) {
+        ic_local_options o;
+        ic_local_defaults(&o);
+        ic_local_point near, pt;
+        memset(&near, 0, sizeof near);
+        memset(&pt, 0, sizeof pt);
+        const double x = 0.8 * offs[i], y = 0.6 * offs[i];
+        near.xyz[0] = x, near.xyz[1] = y, near.xyz[2] = 0.5 - sqrt(0.25 - x * x - y * y);
+        const ic_status st = ic_local_locate_tangential(pair, &pt, &near, 1.0, &o, NULL);
+        CHECK(st == IC_OK && fabs(pt.xyz[0]) + fabs(pt.xyz[1]) + fabs(pt.xyz[2]) <= 1e-15,
+              "sphere on a plane from %g: status %d at (%g, %g, %g)", offs[i], st, pt.xyz[0],
+              pt.xyz[1], pt.xyz[2]);
+    }
+    ic_pair_free(pair);
+    ic_surface_free(A);
+    ic_surface_free(B);
+}
+
 int main(void)
 {
     test_cell_budget();
@@ -553,9 +654,12 @@ int main(void)
     test_undecided_regions();
     test_close_branches();
     test_cone_apex();
+    test_flat_branch_point();
     test_coincidence_tolerance();
     test_coincident_region();
     test_locator_contacts();
     test_locator_hovering();
+    test_locator_lines();
+    test_locator_far();
     return harness_finish("constants");
 }

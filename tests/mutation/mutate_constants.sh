@@ -18,7 +18,7 @@
 #   ONLY=REGEX     run only the mutations whose constant name matches REGEX
 #   TESTS="a b"    the ctest names to run (default below; `constants` is added
 #                  when tests/test_constants.c exists)
-#   TIMEOUT=S      ctest's per-test limit in seconds (default 300): a test that
+#   TIMEOUT=S      ctest's per-test limit in seconds (default 900): a test that
 #                  runs past it counts as caught, marked (timeout)
 #
 # Values: reals are multiplied and divided by 10 exactly. Counts are
@@ -35,7 +35,7 @@ TREE=$(cd "$(dirname "$0")/../.." && pwd)
 SCRATCH=${1:-$TREE/build-mutation}
 mkdir -p "$SCRATCH"
 SCRATCH=$(cd "$SCRATCH" && pwd)
-TIMEOUT=${TIMEOUT:-300}
+TIMEOUT=${TIMEOUT:-900}
 ONLY=${ONLY:-.}
 DEFAULT_TESTS="trust torture contact_place trace trace_robust trace_examples loops"
 [ -f "$TREE/tests/test_constants.c" ] && DEFAULT_TESTS="$DEFAULT_TESTS constants"

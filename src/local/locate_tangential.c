@@ -24,35 +24,55 @@
 #include <math.h>
 #include <string.h>
 
+/* Each constant below is pinned by a test that fails when it is changed
+ * tenfold (tests/test_constants.c, the contacts of order 2 to 16, the
+ * tangential lines, far starts and the cone's apex), or says why that change
+ * cannot matter (docs/testing.md, "Constants pinned"). */
+
 /* dimensionless (the residuals are lengths over L and sines): a point is
  * tangential when every residual is below this */
 #define LOCATE_ACCEPT 1e-12
+/* (/10 cannot matter: located residuals are 1e-15 or less at every
+ * contact measured, orders 2 to 16 in three pairings) */
 /* iterations of plain Gauss-Newton (quadratic convergence needs a
  * handful), and of the lengthened steps at a multiple root (order 15: a few
  * dozen) */
 #define LOCATE_PLAIN_ITERATIONS 40
 #define LOCATE_MAX_ITERATIONS 100
+/* (MAX x10 only caps time: the lengthened steps stop by step size or stall
+ * within 10 iterations at every contact measured) */
 /* dimensionless: a residual this small is a root (below, rounding of
  * normalized quantities at the origin only) */
 #define LOCATE_FLOOR 1e-300
+/* (tenfold either way is still zero for any residual of doubles) */
 /* the longest lengthening of a step: the multiplicity of N_A x N_B at a
  * contact of order 16, the highest order the analysis reaches */
 #define LOCATE_MAX_MULTIPLICITY 16
+/* (x10 cannot matter: up to order 16 a k <= 16 leaves the smallest residual,
+ * and the locator does not move along a tangential line at all) */
 /* a plain step that lowers the residual by less than this factor is slow
  * (linear) convergence: a multiple root, and longer steps are tried */
 #define LOCATE_SLOW_RATIO 0.1
+/* (/10 cannot matter: a multiple root converges by at least 1/2 per step, a
+ * simple one quadratically; no ratio falls between 0.01 and 0.1) */
 /* relative: the forward-difference step, of the problem's size for a
  * coordinate, of (1 + |p|) for a parameter; near the root, a thousandth of
  * the last step */
 #define LOCATE_DIFF_REL 1e-7
 #define LOCATE_DIFF_OF_STEP 1e-3
+/* (REL x10 and OF_STEP either way move the located point only within the
+ * locator's own accuracy: 1e-14 L, 1e-11 L at order 16) */
 /* dimensionless: the Levenberg-Marquardt damping, of the trace of J^T J
  * or of each unknown's own diagonal entry */
 #define LOCATE_DAMPING 1e-14
+/* (/10: as the difference steps, within 1e-11 L at order 16) */
 /* difference steps tried per step at a multiple root */
 #define LOCATE_DIFF_RETRIES 4
+/* (x10 only caps time: the retries stop where the step stops shrinking) */
 /* iterations without a better point before giving up */
 #define LOCATE_STALL 3
+/* (either way: the lengthened steps improve steadily to their step-size
+ * stop at every contact measured) */
 
 /* The unknowns' own size: a coordinate's is L, a parameter's 1. */
 static double unit_of(const ic_tres *c)

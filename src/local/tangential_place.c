@@ -12,7 +12,9 @@
  * from the rung where the residual starts to grow by at least this factor
  * per decade (half an order: a simple root grows tenfold, a root of
  * multiplicity k by 10^k) out, the point is told apart from its
- * neighbours. */
+ * neighbours. Each is pinned both ways by tests/test_constants.c: a simple
+ * point's radius is at most 16 ulps of L, and no radius is below an eighth
+ * of the true distance unless it is the top rung ("not known"). */
 #define PLACE_FIRST_RUNG 1e-15
 #define PLACE_RUNGS 12
 #define PLACE_GROWTH 3.0

@@ -2,10 +2,11 @@
  * The register of the tracer's constants (docs/tracing.md, "Constants"):
  * each with its unit and the reason for its value. Lengths are never
  * absolute here: they are fractions of the search region or of a cell, or
- * counts. tests/test_trust.c exercises them (the kink's two lines 0.002
- * apart need IC_TRACE_ON_CURVE, the coincident planes the coincidence
- * constants, the time limit and the overflow cases the work limits); a test
- * per constant that fails when it is changed tenfold is not written yet.
+ * counts. Each is pinned by a test that fails when it is changed tenfold
+ * (levels: by 4, a factor 16 in cell size), or says below why that change
+ * cannot matter (docs/testing.md, "Constants pinned";
+ * tests/mutation/mutate_constants.sh builds every mutant; tests/test_constants.c
+ * holds the cases).
  */
 #ifndef IC_TRACE_CONSTANTS_H
 #define IC_TRACE_CONSTANTS_H
@@ -13,24 +14,34 @@
 /* count: search cells one trace may examine, first search and refinement
  * together. A cell costs 1 to 10 microseconds (interval enclosures, a
  * Newton iteration, the loop test), so this bounds the search to seconds on
- * any input; reaching it leaves the rest undecided (complete: false). */
+ * any input; reaching it leaves the rest undecided (complete: false).
+ * Pinned /10 (near planes at depth 9 need 7e5 cells). x10 only bounds time:
+ * an input that reaches it takes ten times longer (the expanded quartic of
+ * test_contact_place: 25 s, then 290 s), none traced whole needs more. */
 #define IC_TRACE_MAX_CELLS 2000000L
 
 /* levels: how far below the first search's leaves an undecided cell is
  * subdivided (one level halves each side). 16 levels reach 2^-22 of the
  * region at the default depth 6: far below any curve feature the marching
- * resolves, and a refinement that needs more is reported, not pursued. */
+ * resolves, and a refinement that needs more is reported, not pursued.
+ * Pinned -4 (a loop of width 1e-6 needs 14 levels). +4 only costs time: a
+ * deeper refinement finds more, never less, and what needs it is reported. */
 #define IC_TRACE_MAX_REFINE_LEVELS 16
 
 /* levels: a loop cell holding a located singular point or a traced
  * tangential curve (where the loop test cannot succeed: N_A x N_B vanishes
  * there) is explained by that point's local analysis once it is this many
  * levels below the first search (1/8 of a first-search cell): nearer cells
- * beside it are refined until proven loop-free. */
+ * beside it are refined until proven loop-free.
+ * Pinned both ways (0: a loop 0.02 from a contact hidden; 7: the contacts of
+ * test_contact_place undecided). */
 #define IC_TRACE_EXPLAIN_LEVELS 3
 
 /* count: undecided cells are merged into at most this many regions, each
- * listed in the report's failures with its box and reason. */
+ * listed in the report's failures with its box and reason.
+ * Pinned /10 (eight overflow bands listed one by one). x10 changes only the
+ * count in the summary line of an input with more than 64 undecided places:
+ * the failures list shows 15 regions at most. */
 #define IC_TRACE_MAX_REGIONS 64
 
 /* relative (of the problem's scale L): two surfaces through a common point
@@ -38,52 +49,91 @@
  * from it lie on B within this fraction of L. Rounding leaves 1e-15; a
  * contact of finite order separates them by far more at L/8. Cells within
  * IC_TRACE_COINCIDENT_REACH L of such a point are part of the coincident
- * region. */
+ * region.
+ * Pinned: TOL x10 (a Morse contact 3e-10 L apart at L/8), REACH /10
+ * (coincident planes refined: 380 s instead of 0.7). TOL /10 cannot matter:
+ * coincident surfaces of the tests agree to 1e-15 L, four orders below; only
+ * a formula losing 4 digits to cancellation would. REACH x10 changes only
+ * the listed region: the report is incomplete either way, and transversal
+ * start points inside it are traced all the same. */
 #define IC_TRACE_COINCIDENT_TOL 1e-10
 #define IC_TRACE_COINCIDENT_REACH (1.0 / 64)
 
 /* relative (of L): a start candidate, a converged point of both surfaces,
  * lies on a traced curve when it is within the curve's sagitta and this
  * fraction of L of its polyline. Newton leaves 1e-10 L at most; curves
- * closer together than this are taken as one. */
+ * closer together than this are taken as one.
+ * Pinned x10 (two branches 5e-8 L apart). /10 cannot matter: start points
+ * and polylines lie on the surfaces to rounding (1e-15 L below offsets of
+ * 1e5 L) and the sagitta allowed is twice a circle's. */
 #define IC_TRACE_ON_CURVE 1e-8
 
 /* relative (of L): how far from both surfaces a point the tracer locates
  * may be (the locators' point_tol). Newton leaves about 1e-15 L; 1e-7 L
- * accepts the start candidates of the search (1e-10 L) with room. */
+ * accepts the start candidates of the search (1e-10 L) with room.
+ * Not pinned: a gate no point reaches. Every point given to the locators
+ * comes from Newton converged to 1e-10 (L + |x|) or better; x10 admits
+ * nothing more, /10 still leaves a factor 100. */
 #define IC_TRACE_POINT_TOL 1e-7
 
 /* relative (of L): how well the place of an isolated contact must be known
  * (ic_local_tangential_place: the radius where the locator's residuals sink
- * into rounding) for it to be exact; beyond, it is approximate. */
+ * into rounding) for it to be exact; beyond, it is approximate.
+ * Not pinned: for two implicit surfaces the place radius is a decade of L
+ * (the probe's rungs 1e-15 L 10^k) and 1e-8 L is itself one, so a contact
+ * on that rung is exact or approximate by rounding (z = (x - 1/64)^4
+ * written out: 1.0000 e-8 L, approximate), and a tenfold change only moves
+ * the threshold onto the next rung. A test would pin rounding. */
 #define IC_TRACE_PLACE_REL 1e-8
 
 /* relative (of a domain's width, or of L for a box face): a curve whose
  * every step fails, this near a bound it heads across, has left there (a
- * step landed on the bound itself) */
+ * step landed on the bound itself).
+ * Not pinned: a curve that landed on the bound stands on it to rounding
+ * (1e-16 of the width), so any tolerance above that decides the same; the
+ * rule itself is pinned (test_trust, "tangential arc cut by the domain"). */
 #define IC_TRACE_EDGE_REL 1e-9
 
 /* units in the last place of L: how well a located tangential point's place
  * is known at best (the locator stops at steps of 1e-15 of the unknowns'
- * size); coefficients a shift this small makes are no contact terms */
+ * size); coefficients a shift this small makes are no contact terms
+ * Not pinned: /10 is overridden by the measured place radius (a few ulps at
+ * best); x10 (3.6e-14 L) drops a quadratic coefficient only where a second
+ * zero lies within 1e-13 L of the contact, beyond any test's resolution. */
 #define IC_TRACE_PLACE_ULPS 16
 
 /* relative (of L): points of a curve nearer than this to a singular point
  * of a surface (a cone's apex) are dropped: the normal vanishes there and
- * their apparatus errs by about eps (L/d)^2, 1e-8 at this distance. */
+ * their apparatus errs by about eps (L/d)^2, 1e-8 at this distance.
+ * The torsion errs more, by about eps (L/d)^3: 1e-5 here, 0.1 at a tenth.
+ * Pinned both ways (the cone cut through its apex by a cylinder: the
+ * torsion near the apex; the length and the curve joined through it). */
 #define IC_TRACE_SINGULAR_CLEARANCE 1.5e-4
 
 /* relative (of L): two singular points closer than IC_TRACE_SAME_EXACT L
  * are one (located points agree to 1e-12 L); an approximate one (a curve
  * end that could not be located: the march stops about 2e-6 L before a
- * branch point) is the same as any within IC_TRACE_SAME_APPROX L. */
+ * branch point) is the same as any within IC_TRACE_SAME_APPROX L.
+ * Not pinned. EXACT x10: distinct points 1e-9 L apart are below the
+ * tracer's resolution anyway (curves nearer than IC_TRACE_ON_CURVE are
+ * one); /10: one point located from two curve ends agrees to 1e-15 L.
+ * APPROX /10 decides only whether the two ends at a near-tangency, where no
+ * tangential point exists, make one approximate point or two; x10 would
+ * merge an unlocatable end with another point within 1e-3 L: no input has
+ * such a pair. */
 #define IC_TRACE_SAME_EXACT 1e-10
 #define IC_TRACE_SAME_APPROX 1e-4
 
 /* relative (of L): how far from a curve's last point the point it stops
  * before is sought: on the collinear normals (a branch point, about 2e-6 L
- * ahead), and by the degenerate locator (a tacnode's end stops about 2e-3
- * away at L = 1, where Gauss-Newton is ill-conditioned along the curve). */
+ * ahead where the surfaces curve by about 1/L; 1e-5 / (2 k) at a saddle of
+ * curvature k, 1e-4 at k = 0.05), and by the degenerate locator (a tacnode's end stops about 2e-3
+ * away at L = 1, where Gauss-Newton is ill-conditioned along the curve).
+ * Pinned: END /10 (a flat saddle's branch point 3e-5 L ahead), DEGENERATE
+ * /10 (test_trace_examples: the tacnode). END x10: a farther Gauss-Newton
+ * point is checked again (a branch point with nearly tangent branches goes
+ * to the degenerate locator) and DEGENERATE x10 admits a farther point only
+ * where no nearer one classifies: no input changes. */
 #define IC_TRACE_END_REACH 1e-4
 #define IC_TRACE_DEGENERATE_REACH 5e-3
 

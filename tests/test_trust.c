@@ -21,6 +21,11 @@
 #define LENGTH_REL TIER_LENGTH
 
 
+static double norm_inf3(const double *x)
+{
+    return fmax(fabs(x[0]), fmax(fabs(x[1]), fabs(x[2])));
+}
+
 static ic_trace_options box_options(double lo, double hi)
 {
     ic_trace_options opt;
@@ -594,6 +599,39 @@ static void test_self_any_depth(void)
     }
 }
 
+/* z = u^3 - v^2 against z = 0 (Bendrici and Boumedien-Zidani (2022),
+ * Example 2): the curve u^3 = v^2 has a cusp at the origin, where its
+ * curvature is infinite and only one-sided tangents exist, +-x (the
+ * half-branches (t^2, +-t^3) leave along +x). The curve points there must
+ * say so: kappa not finite, no frame, t = +-x (before: the neighbouring
+ * point's finite kappa, 43.8, and frame were copied there). */
+static void test_cusp_end(void)
+{
+    const char *f[3] = {"u", "v", "u^3 - v^2"};
+    const double dom[2][2] = {{-1, 1}, {-1, 1}};
+    ic_trace_options opt = box_options(-2, 2);
+    traced t;
+    if (!trace_mixed(&t, f, dom, "z", &opt)) {
+        CHECK(0, "cusp trace");
+        return;
+    }
+    int at_cusp = 0, wrong = 0;
+    for (int c = 0; c < ic_trace_result_num_curves(t.res); c++) {
+        const ic_trace_curve *cv = ic_trace_result_curve(t.res, c);
+        for (int i = 0; i < cv->npoints; i++) {
+            const ic_trace_point *p = &cv->points[i];
+            if (norm_inf3(p->xyz) > 1e-12)
+                continue;
+            at_cusp++;
+            wrong += isfinite(p->kappa) || p->frame_defined || fabs(fabs(p->t[0]) - 1) > 1e-12;
+        }
+    }
+    CHECK(at_cusp >= 1 && wrong == 0, "cusp: %d curve points at it, %d with a finite kappa, a "
+                                      "frame or t not +-x",
+          at_cusp, wrong);
+    release(&t);
+}
+
 static void timed(const char *name, void (*fn)(void))
 {
     struct timespec t0, t1;
@@ -626,5 +664,6 @@ int main(void)
     timed("tangential arc cut by the domain", test_tangential_arc_domain);
     timed("bad options", test_bad_options);
     timed("self-intersection at any depth", test_self_any_depth);
+    timed("cusp end", test_cusp_end);
     return harness_finish("trust");
 }

@@ -459,6 +459,14 @@ static int finish_end(ic_trace_result *r, ic_pair *pair, const ic_trace_options 
         const double y = ic_norm3(e), a2 = x > 0 ? y * y / (x * x * x) : 0.0;
         const double arc = a2 * x > 1e-12 ? 8 / (27 * a2) * (pow(1 + 2.25 * a2 * x, 1.5) - 1) : x;
         extra->s = last->s + arc;
+        /* at the cusp itself: the one-sided tangent along the arrival, the
+         * curvature infinite, no n, b or torsion (written null; before, the
+         * neighbour's finite kappa and frame were copied here) */
+        const double sg = ic_dot3(T, last->t) < 0 ? -1.0 : 1.0;
+        ic_scale3(extra->t, T, sg);
+        extra->kappa = NAN;
+        extra->tau = NAN;
+        extra->frame_defined = 0;
     }
     *np = n + 1;
     return index;

@@ -40,7 +40,7 @@
 #define LOCATE_PLAIN_ITERATIONS 40
 #define LOCATE_MAX_ITERATIONS 100
 /* (MAX x10 only caps time: the lengthened steps stop by step size or stall
- * within 10 iterations at every contact measured) */
+ * within 20 iterations at every contact measured) */
 /* dimensionless: a residual this small is a root (below, rounding of
  * normalized quantities at the origin only) */
 #define LOCATE_FLOOR 1e-300

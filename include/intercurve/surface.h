@@ -63,7 +63,32 @@ typedef struct {
     double major_radius;  /**< torus: R */
     double half_angle;    /**< cone, radians, in (0, pi/2) */
     double axes[3];       /**< ellipsoid semi-axes */
+    /** Placement (not for the plane, whose `normal` places it): the local z
+     *  axis and the local x direction (the parametrisation's u = 0 seam),
+     *  both in space. All zero: z and x, the standard position above. A
+     *  ref_direction not normal to the axis is made normal to it (its
+     *  component along the axis removed); parallel to it is an error. */
+    double axis[3];
+    double ref_direction[3];
 } ic_primitive;
+
+/** Largest degree of a NURBS patch in either parameter. */
+#define IC_NURBS_MAX_DEGREE 9
+
+/**
+ * A NURBS patch (docs/nurbs.md): R(u, v) = sum N_i,p(u) N_j,q(v) w_ij P_ij /
+ * sum N_i,p(u) N_j,q(v) w_ij over the domain [knots[0][p], knots[0][n_u]] x
+ * [knots[1][q], knots[1][n_v]], p = degree[0], n_u = count[0] (likewise q, n_v
+ * along v). Nothing is owned: the surface copies what it needs.
+ */
+typedef struct {
+    int degree[2];          /**< 1..IC_NURBS_MAX_DEGREE */
+    int count[2];           /**< control points along u and along v, each > degree */
+    const double *knots[2]; /**< count[d] + degree[d] + 1 nondecreasing values */
+    const double *points;   /**< point (i, j) at points[3 * (i * count[1] + j)] */
+    const double *weights;  /**< count[0] * count[1] positive values, or NULL: all 1 */
+    int periodic[2];        /**< the patch closes on itself along u (v): checked */
+} ic_nurbs;
 
 /**
  * A surface given by code. It fills `derivs` with the partial derivatives

@@ -13,7 +13,7 @@ static const char *kind_name(const ic_cad_surface *s)
     static const char *const prims[] = {"plane", "sphere", "cylinder", "cone", "torus",
                                         "ellipsoid"};
     if (!s->supported)
-        return "unsupported";
+        return "not read";
     if (s->is_nurbs)
         return s->nurbs.weights ? "rational nurbs" : "nurbs";
     return prims[s->prim.kind];
@@ -75,10 +75,10 @@ static ic_status write_text(FILE *f, const char *file, const ic_cad_info *info,
             range_text(v, sizeof v, s->domain[1], s->periodic[1]);
         }
         detail_text(detail, sizeof detail, s);
-        fprintf(f, "%s%d  %s  \"%s\"  %s", info->format == IC_CAD_STEP ? "#" : "DE ", s->entity,
-                s->type, s->name, kind_name(s));
+        fprintf(f, "%s%d  %s  \"%s\"", info->format == IC_CAD_STEP ? "#" : "DE ", s->entity,
+                s->type, s->name);
         if (s->supported)
-            fprintf(f, "  u %s  v %s", u, v);
+            fprintf(f, "  %s  u %s  v %s", kind_name(s), u, v);
         fprintf(f, "  %s\n", detail);
     }
     if (ferror(f))
@@ -125,7 +125,10 @@ static cJSON *surface_json(json_out *j, const ic_cad_surface *s)
     for (int d = 0; d < 2; d++)
         ic_json_out_append(j, domain, range_json(j, s->domain[d]));
     ic_json_out_add(j, o, "domain", domain);
-    ic_json_out_add(j, o, "periodic", cJSON_CreateIntArray(s->periodic, 2));
+    cJSON *periodic = cJSON_CreateArray();
+    for (int d = 0; d < 2; d++)
+        ic_json_out_append(j, periodic, cJSON_CreateBool(s->periodic[d]));
+    ic_json_out_add(j, o, "periodic", periodic);
     if (s->is_nurbs) {
         ic_json_out_add(j, o, "degree", cJSON_CreateIntArray(s->nurbs.degree, 2));
         ic_json_out_add(j, o, "count", cJSON_CreateIntArray(s->nurbs.count, 2));

@@ -88,9 +88,9 @@ static int find_unit(const ic_step_file *f, const char *kind, const char *base,
     for (int k = 0; k < f->ninst; k++) {
         const int ctx = ic_step_part(f, &f->inst[k], "GLOBAL_UNIT_ASSIGNED_CONTEXT");
         const int list = ic_step_param(f, ctx, 0);
-        for (int j = 0; list >= 0 && j < f->values[list].count; j++) {
-            const int v = ic_step_item(f, list, j);
-            if (v >= 0 && f->values[v].kind == IC_STEP_REF &&
+        const int first = list >= 0 && f->values[list].kind == IC_STEP_LIST ? f->values[list].child : -1;
+        for (int v = first; v >= 0; v = f->values[v].next) {
+            if (f->values[v].kind == IC_STEP_REF &&
                 unit_of(f, f->values[v].u.ref, kind, base, symbol, factor, out, size, 0) == 0)
                 return 0;
         }

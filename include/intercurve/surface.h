@@ -126,6 +126,13 @@ IC_API IC_NODISCARD ic_status ic_surface_new_callback(ic_surface **s, ic_surface
  *  (0, pi/2). Parametric primitives get their natural domain (docs). */
 IC_API IC_NODISCARD ic_status ic_surface_new_primitive(ic_surface **s, const ic_primitive *prim,
                                                        ic_surface_kind form, ic_error *err);
+/** A NURBS patch (copied). IC_ERR_INVALID names the field at fault in
+ *  err->path, relative to the patch ("knots[1][4]", "weights[2][0]"): a
+ *  degree outside 1..IC_NURBS_MAX_DEGREE, too few points, a knot that is not
+ *  finite or decreases, an empty domain, a weight that is not positive, a
+ *  coordinate that is not finite, a periodic flag the points do not close. */
+IC_API IC_NODISCARD ic_status ic_surface_new_nurbs(ic_surface **s, const ic_nurbs *nurbs,
+                                                   ic_error *err);
 /** Frees a surface; NULL is allowed. */
 IC_API void ic_surface_free(ic_surface *s);
 

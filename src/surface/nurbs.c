@@ -68,7 +68,7 @@ static ic_status check_knots(const double *t, int n, int p, int k, ic_error *err
             return field_error(err, path, what);
         }
         if (i > 0 && t[i] < t[i - 1]) {
-            snprintf(what, sizeof what, "knots decrease: %.17g after %.17g", t[i], t[i - 1]);
+            snprintf(what, sizeof what, "knots decrease: %.10g after %.10g", t[i], t[i - 1]);
             return field_error(err, path, what);
         }
     }

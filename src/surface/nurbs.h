@@ -52,4 +52,10 @@ int ic_nurbs_find_span(const ic_nurbs_patch *patch, int dir, double t, ic_nurbs_
  * parameter (unchanged otherwise). */
 double ic_nurbs_wrap(const ic_nurbs_patch *patch, int dir, double t);
 
+/* The first knot line of the patch met going from `from` to `to` along
+ * dir (from itself excluded, to included): 1 and *knot, or 0. Knot lines
+ * are the distinct interior knots, and the seam of a wrapping parameter. */
+int ic_nurbs_knot_crossed(const ic_nurbs_patch *patch, int dir, double from, double to,
+                          double *knot);
+
 #endif

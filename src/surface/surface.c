@@ -161,6 +161,19 @@ ic_status ic_surface_new_nurbs(ic_surface **out, const ic_nurbs *nurbs, ic_error
     return IC_OK;
 }
 
+int ic_surface_knot_crossed(const ic_surface *s, int dir, double from, double to, double *knot)
+{
+    if (s->backend != BACKEND_NURBS || dir < 0 || dir > 1)
+        return 0;
+    return ic_nurbs_knot_crossed(s->nurbs, dir, from, to, knot);
+}
+
+void ic_surface_set_knot_side(ic_surface *s, const int side[2])
+{
+    for (int d = 0; d < 2; d++)
+        s->knot_side[d] = side ? (side[d] > 0) - (side[d] < 0) : 0;
+}
+
 void ic_surface_free(ic_surface *s)
 {
     if (!s)
@@ -327,8 +340,10 @@ static ic_status nurbs_taylor(ic_surface *s, double *out, const double *at, cons
     if (!w)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory evaluating a surface");
     ic_nurbs_side side[2] = {IC_NURBS_RIGHT, IC_NURBS_RIGHT};
-    for (int d = 0; heading && d < 2; d++)
-        side[d] = heading[d] < 0 ? IC_NURBS_LEFT : IC_NURBS_RIGHT;
+    for (int d = 0; d < 2; d++) {
+        const double way = s->knot_side[d] ? s->knot_side[d] : heading ? heading[d] : 0;
+        side[d] = way < 0 ? IC_NURBS_LEFT : IC_NURBS_RIGHT;
+    }
     return ic_nurbs_taylor(s->nurbs, out, at, side, sp, w, err);
 }
 

@@ -16,6 +16,7 @@ struct ic_surface {
     void *user;
     ic_primitive prim;             /* primitive */
     ic_nurbs_patch *nurbs;         /* NURBS patch */
+    int knot_side[2];              /* NURBS: -1, +1 a piece forced on knot lines; 0 by heading */
     double plane_frame[3][3];      /* plane: e1, e2, unit normal */
     double domain[2][2];
     int periodic[2];

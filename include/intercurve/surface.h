@@ -126,8 +126,34 @@ IC_API IC_NODISCARD ic_status ic_surface_new_callback(ic_surface **s, ic_surface
  *  (0, pi/2). Parametric primitives get their natural domain (docs). */
 IC_API IC_NODISCARD ic_status ic_surface_new_primitive(ic_surface **s, const ic_primitive *prim,
                                                        ic_surface_kind form, ic_error *err);
+/** A NURBS patch (copied). IC_ERR_INVALID names the field at fault in
+ *  err->path, relative to the patch ("knots[1][4]", "weights[2][0]"): a
+ *  degree outside 1..IC_NURBS_MAX_DEGREE, too few points, a knot that is not
+ *  finite or decreases, an empty domain, a weight that is not positive, a
+ *  coordinate that is not finite, a periodic flag the points do not close. */
+IC_API IC_NODISCARD ic_status ic_surface_new_nurbs(ic_surface **s, const ic_nurbs *nurbs,
+                                                   ic_error *err);
 /** Frees a surface; NULL is allowed. */
 IC_API void ic_surface_free(ic_surface *s);
+
+/**
+ * Knot lines of a NURBS patch, where its derivatives may jump (docs/nurbs.md):
+ * 1 and *knot if going from parameter value `from` to `to` along parameter
+ * `dir` (0: u, 1: v) meets one (from excluded, to included; the first met),
+ * else 0. Always 0 for other surfaces.
+ */
+IC_API int ic_surface_knot_crossed(const ic_surface *s, int dir, double from, double to,
+                                   double *knot);
+
+/**
+ * Which polynomial piece of a NURBS patch gives the derivatives at a point on
+ * a knot line: side[d] = -1 the piece below the knot along parameter d, +1
+ * the piece above, 0 (the default; also side = NULL) the piece a composed
+ * parameter jet heads into (ic_surface_taylor alone takes the piece above).
+ * A tracer sets it where a curve crosses a knot line, so the apparatus there
+ * is that of the side the curve goes to. No effect on other surfaces.
+ */
+IC_API void ic_surface_set_knot_side(ic_surface *s, const int side[2]);
 
 IC_API ic_surface_kind ic_surface_get_kind(const ic_surface *s);
 /** Number of variables: 2 for parametric (u, v), 3 for implicit (x, y, z). */

@@ -80,6 +80,12 @@ typedef struct {
     double kappa, tau;
     double angle;      /**< between the normals, radians */
     int frame_defined; /**< 0 where kappa = 0: n, b, tau undefined */
+    /** on a knot line of a NURBS surface: bit 0 (1) of A, bit 1 (2) of B
+     *  (docs/nurbs.md); 0 elsewhere */
+    int knot_line;
+    /** on a knot line, whose side the apparatus is: +1 the curve after the
+     *  point (larger s; where the tracer went), -1 the curve before it */
+    int knot_side;
 } ic_trace_point;
 
 /** Reverses a run of curve points in place: their order, their

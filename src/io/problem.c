@@ -9,6 +9,7 @@
 
 #include "intercurve/expr.h"
 #include "json_path.h"
+#include "problem_nurbs.h"
 
 #define MAX_SURFACES 2
 #define MAX_CONSTANTS 64
@@ -33,6 +34,7 @@ struct ic_problem {
     ic_constant consts[MAX_CONSTANTS];
     char const_names[MAX_CONSTANTS][NAME_LEN];
     int nconsts;
+    char base_dir[4096]; /* files a problem names are relative to this ("": here) */
 };
 
 typedef struct {
@@ -348,6 +350,26 @@ static ic_status read_primitive(ic_problem *p, ic_surface **s, const cJSON *js,
     return read_domain(p, *s, js, path, err);
 }
 
+/* "type": "nurbs" (inline) or "geomdl" (from a NURBS-Python file), each
+ * with an optional sub-"domain" (docs/nurbs.md). */
+static ic_status read_nurbs(ic_problem *p, ic_surface **s, const cJSON *js, int geomdl,
+                            const char *path, ic_error *err)
+{
+    static const char *const inline_keys[] = {"name",    "type",     "degree", "knots",
+                                              "control_points", "weights", "periodic",
+                                              "domain",  NULL};
+    static const char *const file_keys[] = {"name", "type", "file", "index", "periodic",
+                                            "domain", NULL};
+    ic_status st = ic_json_check_keys(js, path, geomdl ? file_keys : inline_keys, err);
+    if (st != IC_OK)
+        return st;
+    st = geomdl ? ic_problem_read_geomdl(s, js, path, p->base_dir, err)
+                : ic_problem_read_nurbs(s, js, path, p->consts, p->nconsts, err);
+    if (st != IC_OK)
+        return st;
+    return read_domain(p, *s, js, path, err);
+}
+
 static ic_status read_surface(ic_problem *p, int i, const cJSON *js, ic_error *err)
 {
     char path[IC_ERROR_PATH_LEN];
@@ -378,13 +400,16 @@ static ic_status read_surface(ic_problem *p, int i, const cJSON *js, ic_error *e
         return read_parametric(p, &p->surfaces[i], js, path, err);
     if (strcmp(type, "implicit") == 0)
         return read_implicit(p, &p->surfaces[i], js, path, err);
+    if (strcmp(type, "nurbs") == 0 || strcmp(type, "geomdl") == 0)
+        return read_nurbs(p, &p->surfaces[i], js, type[0] == 'g', path, err);
     for (size_t k = 0; k < sizeof PRIMITIVES / sizeof PRIMITIVES[0]; k++)
         if (strcmp(type, PRIMITIVES[k].name) == 0)
             return read_primitive(p, &p->surfaces[i], js, PRIMITIVES[k].kind, path, err);
     snprintf(path, sizeof path, "surfaces[%d].type", i);
     return invalid(err, path,
-                   "expected \"parametric\", \"implicit\", \"plane\", \"sphere\", "
-                   "\"cylinder\", \"cone\", \"torus\" or \"ellipsoid\"");
+                   "expected \"parametric\", \"implicit\", \"nurbs\", \"geomdl\", "
+                   "\"plane\", \"sphere\", \"cylinder\", \"cone\", \"torus\" or "
+                   "\"ellipsoid\"");
 }
 
 /* The "surfaces" array: two, or one for a self-intersection, or one
@@ -500,7 +525,7 @@ static ic_status parse_document(cJSON **root, const char *json, size_t len, ic_e
 
 /* ic_problem_parse with flags. */
 static ic_status parse_problem(ic_problem **out, const char *json, size_t len, unsigned flags,
-                               ic_error *err)
+                               const char *base_dir, ic_error *err)
 {
     *out = NULL;
     ic_error_clear(err);
@@ -513,6 +538,7 @@ static ic_status parse_problem(ic_problem **out, const char *json, size_t len, u
         cJSON_Delete(root);
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory reading a problem");
     }
+    snprintf(p->base_dir, sizeof p->base_dir, "%s", base_dir);
     st = read_problem(p, root, flags, err);
     cJSON_Delete(root);
     if (st != IC_OK) {
@@ -525,7 +551,7 @@ static ic_status parse_problem(ic_problem **out, const char *json, size_t len, u
 
 ic_status ic_problem_parse(ic_problem **out, const char *json, size_t len, ic_error *err)
 {
-    return parse_problem(out, json, len, 0, err);
+    return parse_problem(out, json, len, 0, "", err);
 }
 
 ic_status ic_problem_read(ic_problem **out, FILE *f, const char *name, unsigned flags,
@@ -536,6 +562,11 @@ ic_status ic_problem_read(ic_problem **out, FILE *f, const char *name, unsigned 
     char *buf = malloc(IC_PROBLEM_MAX_FILE + 1);
     if (!buf)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory reading %s", name);
+    /* the directory of a file name: what the problem's own files are relative to */
+    char dir[4096] = "";
+    const char *slash = name ? strrchr(name, '/') : NULL;
+    if (slash && (size_t)(slash - name) < sizeof dir)
+        snprintf(dir, sizeof dir, "%.*s", slash == name ? 1 : (int)(slash - name), name);
     /* one byte more than allowed tells a file that is too large */
     size_t len = fread(buf, 1, IC_PROBLEM_MAX_FILE + 1, f);
     ic_status st;
@@ -545,7 +576,7 @@ ic_status ic_problem_read(ic_problem **out, FILE *f, const char *name, unsigned 
         st = ic_error_set(err, IC_ERR_INVALID, 0, "%s is larger than %d bytes", name,
                           IC_PROBLEM_MAX_FILE);
     else
-        st = parse_problem(out, buf, len, flags, err);
+        st = parse_problem(out, buf, len, flags, dir, err);
     free(buf);
     return st;
 }

@@ -23,6 +23,16 @@ static cJSON *point_json(json_out *j, const ic_trace_point *p, const ic_trace_cu
     ic_json_out_add(j, o, "angle", ic_json_out_number(j, p->angle));
     ic_json_out_add(j, o, "type",
                  cJSON_CreateString(ic_point_type_name(ic_trace_point_type(res, c, p))));
+    if (p->knot_line) { /* docs/nurbs.md, "Knot lines" */
+        cJSON *k = cJSON_CreateObject();
+        cJSON *on = cJSON_CreateArray();
+        for (int s = 0; s < 2; s++)
+            ic_json_out_append(j, on, cJSON_CreateBool((p->knot_line >> s) & 1));
+        ic_json_out_add(j, k, "surfaces", on);
+        ic_json_out_add(j, k, "apparatus_of",
+                        cJSON_CreateString(p->knot_side < 0 ? "before" : "after"));
+        ic_json_out_add(j, o, "knot_line", k);
+    }
     return o;
 }
 

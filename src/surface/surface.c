@@ -2,6 +2,7 @@
 #include "surface_internal.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -42,6 +43,8 @@ static ic_status reserve(ic_surface *s, ic_error *err)
         eval = (size_t)ic_surface_num_vars(s) * n + ic_expr_jet_work_len(s->expr, sp);
     else if (s->backend == BACKEND_PRIMITIVE)
         eval = 7 * n; /* ic_primitive_taylor's */
+    else if (s->backend == BACKEND_NURBS)
+        eval = ic_nurbs_taylor_work_len((int)n);
     /* the fundamental forms' Taylor coefficients, order 2 */
     const size_t forms = 3 * (size_t)ic_jet_space_len(s->spaces[2]);
     if ((eval && !ic_surface_work(s, IC_WORK_EVAL, eval)) ||
@@ -133,10 +136,49 @@ ic_status ic_surface_new_primitive(ic_surface **out, const ic_primitive *prim, i
     return st;
 }
 
+ic_status ic_surface_new_nurbs(ic_surface **out, const ic_nurbs *nurbs, ic_error *err)
+{
+    *out = NULL;
+    ic_surface *s = surface_alloc(IC_PARAMETRIC, BACKEND_NURBS);
+    if (!s)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory creating a surface");
+    ic_status st = ic_nurbs_patch_new(&s->nurbs, nurbs, err);
+    if (st == IC_OK)
+        st = reserve(s, err); /* frees s on failure */
+    else
+        ic_surface_free(s);
+    if (st != IC_OK)
+        return st;
+    /* its natural domain; a periodic flag must be borne out by the points */
+    st = ic_surface_set_domain(s, s->nurbs->domain, nurbs->periodic, err);
+    if (st != IC_OK) {
+        ic_surface_free(s);
+        if (err && err->path[0] == '\0')
+            snprintf(err->path, sizeof err->path, "periodic");
+        return st;
+    }
+    *out = s;
+    return IC_OK;
+}
+
+int ic_surface_knot_crossed(const ic_surface *s, int dir, double from, double to, double *knot)
+{
+    if (s->backend != BACKEND_NURBS || dir < 0 || dir > 1)
+        return 0;
+    return ic_nurbs_knot_crossed(s->nurbs, dir, from, to, knot);
+}
+
+void ic_surface_set_knot_side(ic_surface *s, const int side[2])
+{
+    for (int d = 0; d < 2; d++)
+        s->knot_side[d] = side ? (side[d] > 0) - (side[d] < 0) : 0;
+}
+
 void ic_surface_free(ic_surface *s)
 {
     if (!s)
         return;
+    ic_nurbs_patch_free(s->nurbs);
     ic_expr_free(s->expr);
     for (int k = 0; k <= IC_JET_MAX_ORDER; k++)
         ic_jet_space_free(s->spaces[k]);
@@ -186,6 +228,26 @@ static ic_status check_period(ic_surface *s, const double domain[2][2], int i, i
     return IC_OK;
 }
 
+/* A NURBS patch is defined over its knots' domain: a domain set on it
+ * lies inside that, and a periodic parameter spans all of it (the patch
+ * wraps by that period). */
+static ic_status check_nurbs_domain(ic_surface *s, const double domain[2][2],
+                                    const int periodic[2], ic_error *err)
+{
+    const ic_nurbs_patch *pt = s->nurbs;
+    for (int i = 0; i < 2; i++) {
+        const int whole = domain[i][0] == pt->domain[i][0] && domain[i][1] == pt->domain[i][1];
+        if (domain[i][0] < pt->domain[i][0] || domain[i][1] > pt->domain[i][1] ||
+            (periodic && periodic[i] && !whole))
+            return ic_error_set(err, IC_ERR_INVALID, 0,
+                                "domain of parameter %d, [%g, %g], must lie in the NURBS patch's "
+                                "[%g, %g] (and be all of it where periodic)",
+                                i + 1, domain[i][0], domain[i][1], pt->domain[i][0],
+                                pt->domain[i][1]);
+    }
+    return IC_OK;
+}
+
 ic_status ic_surface_set_domain(ic_surface *s, const double domain[2][2], const int periodic[2],
                                 ic_error *err)
 {
@@ -199,9 +261,19 @@ ic_status ic_surface_set_domain(ic_surface *s, const double domain[2][2], const 
             return ic_error_set(err, IC_ERR_INVALID, 0,
                                 "periodic parameter %d needs a finite domain", i + 1);
     }
+    if (s->backend == BACKEND_NURBS && check_nurbs_domain(s, domain, periodic, err) != IC_OK)
+        return IC_ERR_INVALID;
+    for (int k = 0; s->backend == BACKEND_NURBS && k < 2; k++)
+        s->nurbs->periodic[k] = 0; /* no wrapping while the ends are compared */
     for (int i = 0; periodic && i < 2; i++)
-        if (periodic[i] && check_period(s, domain, i, err) != IC_OK)
+        if (periodic[i] && check_period(s, domain, i, err) != IC_OK) {
+            for (int k = 0; s->backend == BACKEND_NURBS && k < 2; k++)
+                s->nurbs->periodic[k] = s->periodic[k]; /* as before the call */
             return IC_ERR_INVALID;
+        }
+    if (s->backend == BACKEND_NURBS) /* the patch wraps its parameters from now on */
+        for (int i = 0; i < 2; i++)
+            s->nurbs->periodic[i] = periodic ? periodic[i] != 0 : 0;
     memcpy(s->domain, domain, sizeof s->domain);
     for (int i = 0; i < 2; i++)
         s->periodic[i] = periodic ? periodic[i] != 0 : 0;
@@ -259,6 +331,35 @@ static ic_status callback_taylor(ic_surface *s, double *out, const double *at,
     return IC_OK;
 }
 
+/* NURBS: on a knot line, the piece the direction `heading` (NULL: none)
+ * goes into; the right one without a direction. */
+static ic_status nurbs_taylor(ic_surface *s, double *out, const double *at, const double *heading,
+                              const ic_jet_space *sp, ic_error *err)
+{
+    double *w = ic_surface_work(s, IC_WORK_EVAL, ic_nurbs_taylor_work_len(ic_jet_space_len(sp)));
+    if (!w)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory evaluating a surface");
+    ic_nurbs_side side[2] = {IC_NURBS_RIGHT, IC_NURBS_RIGHT};
+    for (int d = 0; d < 2; d++) {
+        const double way = s->knot_side[d] ? s->knot_side[d] : heading ? heading[d] : 0;
+        side[d] = way < 0 ? IC_NURBS_LEFT : IC_NURBS_RIGHT;
+    }
+    return ic_nurbs_taylor(s->nurbs, out, at, side, sp, w, err);
+}
+
+/* The direction a parameter jet moves in: its first nonzero coefficient of
+ * degree 1 (in the order of the space's variables), 0 if it stands still. */
+static double jet_heading(const double *jet, const ic_jet_space *sp)
+{
+    if (ic_jet_space_order(sp) < 1)
+        return 0;
+    const int start = ic_jet_degree_start(sp, 1);
+    for (int i = 0; i < ic_jet_space_num_vars(sp); i++)
+        if (jet[start + i] != 0)
+            return jet[start + i];
+    return 0;
+}
+
 /* Formula: the tape on the coordinate jets of the point. */
 static ic_status formula_taylor(ic_surface *s, double *out, const double *at,
                                 const ic_jet_space *sp, ic_error *err)
@@ -293,6 +394,8 @@ ic_status ic_surface_taylor(ic_surface *s, double *out, const double *at, const 
         return callback_taylor(s, out, at, sp, err);
     case BACKEND_PRIMITIVE:
         return ic_primitive_taylor(s, out, at, sp, err);
+    case BACKEND_NURBS:
+        return nurbs_taylor(s, out, at, NULL, sp, err);
     }
     return ic_error_set(err, IC_ERR_INVALID, 0, "corrupt surface");
 }
@@ -310,7 +413,8 @@ ic_status ic_surface_compose(ic_surface *s, double *out, const double *const *in
     }
     if (s->backend == BACKEND_PRIMITIVE)
         return ic_primitive_compose(s, out, in, sp, err);
-    /* Callbacks: Taylor polynomial at the constant terms, then the chain rule. */
+    /* Callbacks and NURBS: Taylor polynomial at the constant terms, then the
+     * chain rule (a NURBS piece chosen by where the jets head). */
     const ic_jet_space *tsp = ic_surface_space(s, ic_jet_space_order(sp), err);
     if (!tsp)
         return err ? err->code : IC_ERR_NOMEM;
@@ -323,7 +427,9 @@ ic_status ic_surface_compose(ic_surface *s, double *out, const double *const *in
     if (!taylor)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory composing a surface");
     double *scratch = taylor + (size_t)nout * tn;
-    ic_status st = ic_surface_taylor(s, taylor, at, tsp, err);
+    const double heading[2] = {jet_heading(in[0], sp), nin > 1 ? jet_heading(in[1], sp) : 0};
+    ic_status st = s->backend == BACKEND_NURBS ? nurbs_taylor(s, taylor, at, heading, tsp, err)
+                                               : ic_surface_taylor(s, taylor, at, tsp, err);
     if (st != IC_OK)
         return st;
     for (int k = 0; k < nout; k++)
@@ -355,9 +461,11 @@ ic_status ic_surface_eval_interval_grad(ic_surface *s, ic_interval_grad *out, co
             ic_primitive_param_interval_grad(s, out, in);
         return IC_OK;
     }
+    if (s->backend == BACKEND_NURBS)
+        return ic_nurbs_interval_grad(s->nurbs, out, in, 1, err);
     if (s->backend != BACKEND_FORMULA)
         return ic_error_set(err, IC_ERR_UNABLE, 0,
-                            "interval evaluation needs a formula surface or a primitive");
+                            "interval evaluation needs a formula surface, a primitive or a NURBS");
     const int nin = s->kind == IC_PARAMETRIC ? 2 : 3;
     ic_interval_grad x[3];
     for (int i = 0; i < nin; i++) {
@@ -394,9 +502,16 @@ ic_status ic_surface_eval_interval(ic_surface *s, ic_interval *out, const ic_int
             out[k] = g[k].v;
         return IC_OK;
     }
+    if (s->backend == BACKEND_NURBS) {
+        ic_interval_grad g[3];
+        const ic_status st = ic_nurbs_interval_grad(s->nurbs, g, in, 0, err);
+        for (int k = 0; k < 3; k++)
+            out[k] = g[k].v;
+        return st;
+    }
     if (s->backend != BACKEND_FORMULA)
         return ic_error_set(err, IC_ERR_UNABLE, 0,
-                            "interval evaluation needs a formula surface or a primitive");
+                            "interval evaluation needs a formula surface, a primitive or a NURBS");
     ic_interval work[256];
     ic_interval *w = work;
     const size_t len = ic_expr_interval_work_len(s->expr);

@@ -4,8 +4,9 @@
 
 #include "intercurve/expr.h"
 #include "intercurve/surface.h"
+#include "nurbs.h"
 
-typedef enum { BACKEND_FORMULA, BACKEND_CALLBACK, BACKEND_PRIMITIVE } ic_backend;
+typedef enum { BACKEND_FORMULA, BACKEND_CALLBACK, BACKEND_PRIMITIVE, BACKEND_NURBS } ic_backend;
 
 struct ic_surface {
     ic_surface_kind kind;
@@ -14,6 +15,8 @@ struct ic_surface {
     ic_surface_callback fn;        /* callback */
     void *user;
     ic_primitive prim;             /* primitive */
+    ic_nurbs_patch *nurbs;         /* NURBS patch */
+    int knot_side[2];              /* NURBS: -1, +1 a piece forced on knot lines; 0 by heading */
     double plane_frame[3][3];      /* plane: e1, e2, unit normal */
     double domain[2][2];
     int periodic[2];

@@ -21,6 +21,7 @@ void ic_trace_points_reverse(ic_trace_point *p, int n)
         ic_scale3(p[i].t, p[i].t, -1.0);
         ic_scale3(p[i].b, p[i].b, -1.0);
         p[i].s = L - p[i].s;
+        p[i].knot_side = -p[i].knot_side;
     }
 }
 

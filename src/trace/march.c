@@ -28,6 +28,7 @@ struct ic_tracer {
     int n, cap;
     int done;
     int tcurve; /* marching along a tangential curve */
+    int knot_line; /* the point being recorded lies on knot lines: bit s for sheet s */
     double deadline; /* monotonic seconds; 0: none (ic_tracer_set_deadline) */
 };
 
@@ -143,6 +144,8 @@ static ic_status record(ic_tracer *tr, ic_error *err)
     p->tau = br->tau;
     p->angle = tr->res.angle;
     p->frame_defined = br->frame_defined;
+    p->knot_line = tr->knot_line;
+    p->knot_side = tr->knot_line ? 1 : 0;
     return IC_OK;
 }
 
@@ -511,6 +514,61 @@ static ic_status end_on_boundary(ic_tracer *tr, double h, boundary bd, ic_error 
     return record(tr, err);
 }
 
+/* The knot line of a NURBS sheet (docs/nurbs.md) the step from cur to
+ * next crosses first, as a boundary to land on. */
+static int crosses_knot_line(const ic_tracer *tr, const ic_local_point *next, boundary *b)
+{
+    int found = 0;
+    double first = INFINITY;
+    for (int s = 0; s < 2; s++)
+        for (int i = 0; tr->par[s] && i < 2; i++) {
+            const double a = tr->cur.params[s][i], z = next->params[s][i];
+            double knot;
+            if (!ic_surface_knot_crossed(ic_pair_surface(tr->pair, s), i, a, z, &knot))
+                continue;
+            const double f = (knot - a) / (z - a); /* how far along the step */
+            if (f < first)
+                first = f, *b = (boundary){s, i, knot}, found = 1;
+        }
+    return found;
+}
+
+static int regular_ahead(ic_tracer *tr, double h, const ic_local_point *next,
+                         const double t[3], ic_local_result *res, int *near_tangential);
+
+/* A step from cur to next crosses knot line bd: the curve gets a point on
+ * it, whose apparatus is that of the piece the curve goes into (the sheet's
+ * knot side set for the evaluation). 1 with *st when done; 0 where the
+ * landing fails (the step is then taken as it is). */
+static int step_onto_knot_line(ic_tracer *tr, double h, boundary bd, const ic_local_point *next,
+                               const double t[3], ic_status *st, ic_error *err)
+{
+    ic_local_point on;
+    double hb;
+    if (land_on_boundary(tr, h, bd, &on, &hb) != 0)
+        return 0;
+    int side[2] = {0, 0};
+    side[bd.index] = next->params[bd.sheet][bd.index] > bd.bound ? 1 : -1;
+    ic_surface *sheet = ic_pair_surface(tr->pair, bd.sheet);
+    ic_surface_set_knot_side(sheet, side);
+    ic_local_result res;
+    int near_tangential = 0;
+    const int ok = regular_ahead(tr, hb, &on, t, &res, &near_tangential);
+    ic_surface_set_knot_side(sheet, NULL);
+    if (!ok)
+        return 0;
+    double Xb[3], pb[2][2];
+    predict(tr, hb, Xb, pb);
+    const double ds = step_arc(tr, hb, Xb, on.xyz);
+    tr->cur = on;
+    tr->res = res;
+    tr->s += ds;
+    tr->knot_line = 1 << bd.sheet;
+    *st = record(tr, err);
+    tr->knot_line = 0;
+    return 1;
+}
+
 /* The apparatus at the corrected point `next`, oriented along the march;
  * 0 when the step is to be shortened: a tangential point ahead (or passed:
  * t = N_A x N_B flips across a branch point), which sets *near_tangential,
@@ -596,6 +654,9 @@ static ic_status step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
         boundary bd;
         if (outside(tr, &next, event, &bd))
             return end_on_boundary(tr, h, bd, err);
+        ic_status st;
+        if (crosses_knot_line(tr, &next, &bd) && step_onto_knot_line(tr, h, bd, &next, t, &st, err))
+            return st;
         ic_local_result res;
         if (!regular_ahead(tr, h, &next, t, &res, &near_tangential))
             continue;

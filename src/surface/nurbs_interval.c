@@ -1,0 +1,217 @@
+/* Sound enclosures of a NURBS patch and its first derivatives over a
+ * parameter box. On each span the box covers, the Bezier net of the piece
+ * restricted to the box comes straight from the blossom (Ramshaw 1989: the
+ * net of a degree-p polynomial over [a, b] is f(a^(p-k), b^k), k = 0..p);
+ * the patch lies in its convex hull, and a rational one in the hull of the
+ * projected net points (positive weights). Derivatives use the hodograph
+ * nets made at creation and the quotient rule x_u = (X_u - x W_u) / W. */
+#include "nurbs.h"
+
+#include <float.h>
+#include <math.h>
+
+enum { MAXP = IC_NURBS_MAX_DEGREE + 1, DIM = 4 };
+
+/* relative to the largest |coordinate| of a span's net: rounding of one
+ * blossom level is at most 3 eps (the products and the sum of a convex
+ * combination) plus 6 eps (alpha's own rounding times the spread, at most
+ * 2 max|P|), and a hodograph point's difference quotient adds 3 eps; the
+ * bound below is 16 eps per level, over the p + q levels plus one */
+#define NET_ROUNDING_PER_LEVEL (16 * DBL_EPSILON)
+
+/* out[k * ostride] = the blossom f(a^(deg-k), b^k) of the piece on span s
+ * of a degree-deg B-spline with knots kn, from its deg+1 control points
+ * ctrl[i * cstride] (DIM doubles each), by de Boor's triangle. */
+static void blossom_net(double *out, int ostride, const double *ctrl, int cstride, int deg,
+                        const double *kn, int s, double a, double b)
+{
+    for (int k = 0; k <= deg; k++) {
+        double d[MAXP][DIM];
+        for (int i = 0; i <= deg; i++)
+            for (int e = 0; e < DIM; e++)
+                d[i][e] = ctrl[i * cstride + e];
+        for (int j = 1; j <= deg; j++) {
+            const double x = j <= deg - k ? a : b;
+            for (int r = deg; r >= j; r--) {
+                const int i = s - deg + r;
+                const double h = kn[s + r - j + 1] - kn[i];
+                const double alpha = h > 0 ? (x - kn[i]) / h : 0.0;
+                for (int e = 0; e < DIM; e++)
+                    d[r][e] = (1 - alpha) * d[r - 1][e] + alpha * d[r][e];
+            }
+        }
+        for (int e = 0; e < DIM; e++)
+            out[k * ostride + e] = d[deg][e];
+    }
+}
+
+/* One tensor net: degrees (p, q), spans (su, sv) of knots (ku, kv), source
+ * net with rows of nv points; the piece over [ua, ub] x [va, vb] into hull. */
+typedef struct {
+    const double *net;
+    int nv, p, q;
+    const double *ku, *kv;
+} tensor_net;
+
+/* The Bezier net (p+1) x (q+1) of the piece on spans (su, sv) over the box,
+ * and the bound on its rounding error (absolute, every coordinate). */
+static double sub_net(const tensor_net *tn, int su, int sv, const double box[2][2],
+                      double net[MAXP * MAXP * DIM])
+{
+    const int p = tn->p, q = tn->q;
+    double tmp[MAXP * MAXP * DIM];
+    for (int j = 0; j <= q; j++) /* along u, column by column */
+        blossom_net(tmp + j * DIM, (q + 1) * DIM,
+                    tn->net + DIM * ((su - p) * tn->nv + sv - q + j), tn->nv * DIM, p, tn->ku, su,
+                    box[0][0], box[0][1]);
+    for (int i = 0; i <= p; i++) /* then along v, row by row */
+        blossom_net(net + i * (q + 1) * DIM, DIM, tmp + i * (q + 1) * DIM, DIM, q, tn->kv, sv,
+                    box[1][0], box[1][1]);
+    double big = 0;
+    for (int i = 0; i <= p; i++)
+        for (int j = 0; j <= q; j++)
+            for (int e = 0; e < DIM; e++)
+                big = fmax(big, fabs(tn->net[DIM * ((su - p + i) * tn->nv + sv - q + j) + e]));
+    return NET_ROUNDING_PER_LEVEL * (p + q + 1) * big;
+}
+
+static ic_interval hull_with(ic_interval h, ic_interval x)
+{
+    return (ic_interval){fmin(h.lo, x.lo), fmax(h.hi, x.hi)};
+}
+
+static ic_interval widened(double x, double err) { return (ic_interval){x - err, x + err}; }
+
+/* (x, y, z) over the piece: the hull of the projected net points. */
+static ic_status piece_values(const ic_nurbs_patch *pt, int su, int sv, const double box[2][2],
+                              ic_interval out[3], ic_interval *weight)
+{
+    for (int e = 0; e < 3; e++)
+        out[e] = (ic_interval){INFINITY, -INFINITY};
+    *weight = (ic_interval){INFINITY, -INFINITY};
+    const tensor_net tn = {pt->hom, pt->n[1], pt->p[0], pt->p[1], pt->knots[0], pt->knots[1]};
+    double net[MAXP * MAXP * DIM];
+    const double err = sub_net(&tn, su, sv, box, net);
+    for (int k = 0; k < (tn.p + 1) * (tn.q + 1); k++) {
+        const ic_interval w = widened(net[k * DIM + 3], err);
+        if (!(w.lo > 0))
+            return IC_ERR_UNABLE; /* weights far below the net's size: no bound */
+        *weight = hull_with(*weight, w);
+        for (int e = 0; e < 3; e++)
+            out[e] = hull_with(out[e], ic_interval_div(widened(net[k * DIM + e], err), w));
+    }
+    return IC_OK;
+}
+
+/* The hull of the hodograph net along dir over the piece: X_dir, Y_dir,
+ * Z_dir, W_dir. The hodograph has degree p - 1 along dir over the knots
+ * without their first, so its span there is one less. */
+static void piece_hodograph(const ic_nurbs_patch *pt, int dir, int su, int sv,
+                            const double box[2][2], ic_interval hull[DIM])
+{
+    tensor_net tn = {pt->hodo[dir], pt->n[1], pt->p[0], pt->p[1], pt->knots[0], pt->knots[1]};
+    if (dir == 0) {
+        tn.p--, tn.ku++, su--;
+    } else {
+        tn.q--, tn.kv++, tn.nv--, sv--;
+    }
+    double net[MAXP * MAXP * DIM];
+    const double err = sub_net(&tn, su, sv, box, net);
+    for (int e = 0; e < DIM; e++)
+        hull[e] = (ic_interval){INFINITY, -INFINITY};
+    for (int k = 0; k < (tn.p + 1) * (tn.q + 1); k++)
+        for (int e = 0; e < DIM; e++)
+            hull[e] = hull_with(hull[e], widened(net[k * DIM + e], err));
+}
+
+/* Values and (with_grad) derivatives over one piece, joined into out. */
+static ic_status piece_enclose(const ic_nurbs_patch *pt, int su, int sv, const double box[2][2],
+                               ic_interval_grad out[3], int with_grad)
+{
+    ic_interval val[3], w;
+    if (piece_values(pt, su, sv, box, val, &w) != IC_OK)
+        return IC_ERR_UNABLE;
+    for (int e = 0; e < 3; e++)
+        out[e].v = hull_with(out[e].v, val[e]);
+    for (int dir = 0; with_grad && dir < 2; dir++) {
+        ic_interval h[DIM];
+        piece_hodograph(pt, dir, su, sv, box, h);
+        for (int e = 0; e < 3; e++) {
+            /* x_dir = (X_dir - x W_dir) / W (the quotient rule) */
+            const ic_interval num = pt->rational
+                                        ? ic_interval_sub(h[e], ic_interval_mul(val[e], h[3]))
+                                        : h[e];
+            out[e].d[dir] = hull_with(out[e].d[dir], ic_interval_div(num, w));
+        }
+    }
+    return IC_OK;
+}
+
+/* The parts of [lo, hi] along dir inside the natural domain: one, or two
+ * across the seam of a wrapping parameter. 0 where the box leaves the
+ * domain of a parameter that does not wrap (or is not a box). */
+static int domain_parts(const ic_nurbs_patch *pt, int dir, ic_interval in, double part[2][2])
+{
+    const double d0 = pt->domain[dir][0], d1 = pt->domain[dir][1];
+    if (!(in.lo <= in.hi))
+        return 0;
+    if (!pt->periodic[dir]) {
+        if (in.lo < d0 || in.hi > d1)
+            return 0;
+        part[0][0] = in.lo, part[0][1] = in.hi;
+        return 1;
+    }
+    if (in.hi - in.lo >= d1 - d0) {
+        part[0][0] = d0, part[0][1] = d1;
+        return 1;
+    }
+    /* one ulp of the domain's size either way covers the rounding of the shift */
+    const double ulp = 4 * DBL_EPSILON * fmax(fabs(d0), fabs(d1));
+    const double lo = ic_nurbs_wrap(pt, dir, in.lo), hi = lo + (in.hi - in.lo);
+    part[0][0] = fmax(d0, lo - ulp), part[0][1] = fmin(d1, hi + ulp);
+    if (hi + ulp <= d1)
+        return 1;
+    part[1][0] = d0, part[1][1] = fmin(d1, d0 + (hi - d1) + ulp);
+    return 2;
+}
+
+ic_status ic_nurbs_interval_grad(const ic_nurbs_patch *pt, ic_interval_grad *out,
+                                 const ic_interval in[2], int with_grad, ic_error *err)
+{
+    double parts[2][2][2];
+    int nparts[2];
+    for (int d = 0; d < 2; d++)
+        if (!(nparts[d] = domain_parts(pt, d, in[d], parts[d])))
+            return ic_error_set(err, IC_ERR_DOMAIN, 0,
+                                "the box leaves the NURBS patch's parameter domain");
+    for (int e = 0; e < 3; e++) {
+        out[e].v = (ic_interval){INFINITY, -INFINITY};
+        out[e].d[0] = out[e].d[1] = out[e].v;
+    }
+    for (int a = 0; a < nparts[0]; a++)
+        for (int b = 0; b < nparts[1]; b++) {
+            const double *pu = parts[0][a], *pv = parts[1][b];
+            const int u0 = ic_nurbs_find_span(pt, 0, pu[0], IC_NURBS_RIGHT),
+                      u1 = ic_nurbs_find_span(pt, 0, pu[1], IC_NURBS_LEFT),
+                      v0 = ic_nurbs_find_span(pt, 1, pv[0], IC_NURBS_RIGHT),
+                      v1 = ic_nurbs_find_span(pt, 1, pv[1], IC_NURBS_LEFT);
+            /* a box of zero width on a knot: its LEFT span is below its RIGHT one */
+            const int u1c = u1 < u0 ? u0 : u1, v1c = v1 < v0 ? v0 : v1;
+            for (int su = u0; su <= u1c; su++)
+                for (int sv = v0; sv <= v1c; sv++) {
+                    const double *ku = pt->knots[0], *kv = pt->knots[1];
+                    if (ku[su] == ku[su + 1] || kv[sv] == kv[sv + 1])
+                        continue; /* an empty span */
+                    const double box[2][2] = {{fmax(pu[0], ku[su]), fmin(pu[1], ku[su + 1])},
+                                              {fmax(pv[0], kv[sv]), fmin(pv[1], kv[sv + 1])}};
+                    if (piece_enclose(pt, su, sv, box, out, with_grad) != IC_OK)
+                        return ic_error_set(err, IC_ERR_UNABLE, 0,
+                                            "NURBS patch: weights too small to bound a piece");
+                }
+        }
+    for (int e = 0; e < 3; e++) /* never an empty enclosure: callers read that as excluded */
+        if (ic_interval_is_empty(out[e].v) ||
+            (with_grad && (ic_interval_is_empty(out[e].d[0]) || ic_interval_is_empty(out[e].d[1]))))
+            return ic_error_set(err, IC_ERR_UNABLE, 0, "NURBS patch: no piece covers the box");
+    return IC_OK;
+}

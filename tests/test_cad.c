@@ -11,6 +11,7 @@
 
 #include "common/mathconst.h"
 #include "harness.h"
+#include "intercurve/problem.h"
 #include "io/cad.h"
 
 /* The writers' digits: OpenCASCADE writes STEP reals to 12 significant
@@ -597,7 +598,7 @@ static void test_bad_files(void)
     size_t len;
     char *step = slurp("small.step", &len);
     CHECK(step && ic_cad_read_buffer(step, len, IC_CAD_IGES, 10, &s, &err) == IC_ERR_INVALID &&
-              strstr(err.message, "not a IGES file: it is a STEP file"),
+              strstr(err.message, "not an IGES file: it is a STEP file"),
           "a STEP file read as IGES: '%s'", err.message);
     free(step);
     char *iges = slurp("small.igs", &len);
@@ -613,6 +614,128 @@ static void test_bad_files(void)
     CHECK(read_one("no-such-file.step", 1, &s, &err) == IC_ERR_IO &&
               strstr(err.message, "no-such-file.step"),
           "a missing file: '%s'", err.message);
+}
+
+/* ---- problem files naming CAD surfaces ---- */
+
+/* A problem of one surface `entry` (JSON) loaded from text; files are named
+ * by absolute paths under the source directory. */
+static ic_status load_one(ic_problem **p, const char *entry, ic_error *err)
+{
+    char json[2048];
+    snprintf(json, sizeof json, "{\"surfaces\": [%s, {\"type\": \"sphere\", \"radius\": 1}]}",
+             entry);
+    return ic_problem_parse(p, json, strlen(json), err);
+}
+
+static void test_problem_file(void)
+{
+    char path[600];
+    snprintf(path, sizeof path, "%s/tests/data/cad/problem-step-iges.json", source_dir);
+    ic_problem *p = NULL;
+    ic_error err;
+    if (!REQUIRE(ic_problem_load(&p, path, &err) == IC_OK, "problem-step-iges.json: %s: %s",
+                 err.path, err.message))
+        return;
+    double worst = 0, x[3], want[3];
+    for (int a = 0; a <= 4; a++) {
+        const double at[2] = {a / 4.0, 2 - a / 3.0};
+        if (ic_surface_eval(ic_problem_surface(p, 0), x, at, &err) == IC_OK) {
+            bicubic_point(at[0], at[1], want);
+            worst = fmax(worst, dist3(x, want));
+        } else {
+            worst = INFINITY;
+        }
+    }
+    CHECK(worst <= TIER_ROUNDING * 40, "the problem's STEP patch is the bicubic: off by %g", worst);
+    double domain[2][2];
+    int periodic[2];
+    ic_surface_get_domain(ic_problem_surface(p, 1), domain, periodic);
+    const shape sphere = nurbs_sphere();
+    worst = 0;
+    for (int a = 0; a <= 6; a++) {
+        const double at[2] = {a, -1.5 + a / 2.0};
+        worst = ic_surface_eval(ic_problem_surface(p, 1), x, at, &err) == IC_OK
+                    ? fmax(worst, off_shape(x, &sphere))
+                    : INFINITY;
+    }
+    CHECK(worst <= IGES_DIGITS * 7.5 && periodic[0] &&
+              fabs(domain[0][1] - 2 * IC_PI) <= IGES_DIGITS * 2 * IC_PI,
+          "the problem's IGES sphere: off by %g, periodic along u", worst);
+    ic_problem_free(p);
+}
+
+static void test_problem_primitives(void)
+{
+    char entry[1024];
+    ic_problem *p = NULL;
+    ic_error err;
+    snprintf(entry, sizeof entry,
+             "{\"type\": \"step\", \"file\": \"%s/tests/data/cad/small.step\", \"entity\": 15}",
+             source_dir);
+    if (REQUIRE(load_one(&p, entry, &err) == IC_OK, "small.step #15: %s", err.message)) {
+        double x[3];
+        const double at[2] = {1.0, 0.75}; /* location (1, -2, 3.5), radius 1.5, standard axes */
+        const double want[3] = {1 + 1.5 * cos(1.0), -2 + 1.5 * sin(1.0), 3.5 + 0.75};
+        CHECK(ic_surface_eval(ic_problem_surface(p, 0), x, at, &err) == IC_OK &&
+                  dist3(x, want) <= TIER_ROUNDING * 8,
+              "small.step #15: the cylinder's point (%g, %g, %g)", x[0], x[1], x[2]);
+    }
+    ic_problem_free(p);
+    p = NULL;
+    /* rotated: the library's primitives follow it, or the load says they do not */
+    snprintf(entry, sizeof entry,
+             "{\"type\": \"step\", \"file\": \"%s/tests/data/cad/small.step\", \"entity\": 10}",
+             source_dir);
+    if (load_one(&p, entry, &err) == IC_OK) {
+        double x[3];
+        const double at[2] = {0, 0.5}, r = 2.5 / sqrt(2.0);
+        const double want[3] = {1 + r, -2 + r, 4};
+        CHECK(ic_surface_eval(ic_problem_surface(p, 0), x, at, &err) == IC_OK &&
+                  dist3(x, want) <= TIER_ROUNDING * 8,
+              "small.step #10: the seam along ref_direction (1, 1, 0)");
+    } else {
+        CHECK(strcmp(err.path, "surfaces[0].entity") == 0 && strstr(err.message, "#10") &&
+                  strstr(err.message, "do not follow"),
+              "small.step #10: a placement not followed is refused: %s: %s", err.path,
+              err.message);
+    }
+    ic_problem_free(p);
+}
+
+/* A problem naming a CAD surface wrongly: the JSON path and a message
+ * naming the file and the entity. */
+static void check_problem_refused(const char *type, const char *file, int entity,
+                                  const char *where, const char *w1, const char *w2)
+{
+    char entry[1024];
+    snprintf(entry, sizeof entry,
+             "{\"type\": \"%s\", \"file\": \"%s/tests/data/cad/%s\", \"entity\": %d}", type,
+             source_dir, file, entity);
+    ic_problem *p = NULL;
+    ic_error err;
+    const ic_status st = load_one(&p, entry, &err);
+    const int names_file = entity > 0; /* a bad entity number is the problem file's alone */
+    CHECK(st != IC_OK && !p && strcmp(err.path, where) == 0 &&
+              (!names_file || strstr(err.message, file)) &&
+              strstr(err.message, w1) && (!w2 || strstr(err.message, w2)),
+          "%s %s %d: %s: %s", type, file, entity, err.path, err.message);
+    ic_problem_free(p);
+}
+
+static void test_problem_errors(void)
+{
+    check_problem_refused("step", "small.step", 9999, "surfaces[0].entity", "#9999",
+                          "no such instance");
+    check_problem_refused("step", "small.step", 33, "surfaces[0].entity", "#33 (OFFSET_SURFACE)",
+                          "not supported");
+    check_problem_refused("iges", "small.igs", 7, "surfaces[0].entity", "DE 7 (entity 108)",
+                          "not read");
+    check_problem_refused("iges", "small.step", 10, "surfaces[0].file", "not an IGES file",
+                          NULL);
+    check_problem_refused("step", "missing.step", 10, "surfaces[0].file", "cannot read", NULL);
+    check_problem_refused("step", "small.step", 0, "surfaces[0].entity", "expected the entity",
+                          NULL);
 }
 
 int main(int argc, char **argv)
@@ -633,5 +756,8 @@ int main(int argc, char **argv)
     test_truncated("small.step", 1);
     test_truncated("small.igs", 0);
     test_bad_files();
+    test_problem_file();
+    test_problem_primitives();
+    test_problem_errors();
     return harness_finish("test_cad");
 }

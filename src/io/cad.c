@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "cad_internal.h"
 
@@ -39,12 +40,14 @@ static ic_status format_of(const char *data, size_t len, ic_cad_format want, ic_
                             "neither a STEP file (it would begin with ISO-10303-21;) nor an IGES "
                             "file (its first record would have S in column 73)");
     if (*got == IC_CAD_ANY)
-        return ic_error_set(err, IC_ERR_PARSE, 0, "not a %s file (%s)", ic_cad_format_name(want),
+        return ic_error_set(err, IC_ERR_PARSE, 0, "not %s file (%s)",
+                            want == IC_CAD_STEP ? "a STEP" : "an IGES",
                             want == IC_CAD_STEP ? "it does not begin with ISO-10303-21;"
                                                 : "its first record has no S in column 73");
     if (want != IC_CAD_ANY && *got != want)
-        return ic_error_set(err, IC_ERR_INVALID, 0, "not a %s file: it is a %s file",
-                            ic_cad_format_name(want), ic_cad_format_name(*got));
+        return ic_error_set(err, IC_ERR_INVALID, 0, "not %s file: it is %s file",
+                            want == IC_CAD_STEP ? "a STEP" : "an IGES",
+                            *got == IC_CAD_STEP ? "a STEP" : "an IGES");
     return IC_OK;
 }
 
@@ -83,10 +86,12 @@ ic_status ic_cad_list_buffer(const char *data, size_t len, ic_cad_format format,
     return st;
 }
 
-ic_status ic_cad_read_buffer(const char *data, size_t len, ic_cad_format format, int entity,
-                             ic_cad_surface *out, ic_error *err)
+/* ic_cad_read_buffer, saying whose fault a failure is. */
+static ic_status read_buffer(const char *data, size_t len, ic_cad_format format, int entity,
+                             ic_cad_surface *out, int *entity_fault, ic_error *err)
 {
     memset(out, 0, sizeof *out);
+    *entity_fault = 0;
     ic_cad_format got;
     ic_status st = format_of(data, len, format, &got, err);
     if (st != IC_OK)
@@ -96,15 +101,24 @@ ic_status ic_cad_read_buffer(const char *data, size_t len, ic_cad_format format,
         if ((st = ic_step_parse(&f, data, len, err)) != IC_OK)
             return st;
         st = ic_step_read(&f, entity, out, err);
+        *entity_fault = st != IC_OK;
         ic_step_free(&f);
     } else {
         ic_iges_file f;
         if ((st = ic_iges_parse(&f, data, len, err)) != IC_OK)
             return st;
         st = ic_iges_read(&f, entity, out, err);
+        *entity_fault = st != IC_OK;
         ic_iges_free(&f);
     }
     return st;
+}
+
+ic_status ic_cad_read_buffer(const char *data, size_t len, ic_cad_format format, int entity,
+                             ic_cad_surface *out, ic_error *err)
+{
+    int entity_fault;
+    return read_buffer(data, len, format, entity, out, &entity_fault, err);
 }
 
 /* The whole file into a new buffer (*data NULL for an empty file). */
@@ -115,6 +129,11 @@ static ic_status slurp(const char *path, char **data, size_t *len, ic_error *err
     FILE *fp = fopen(path, "rb");
     if (!fp)
         return ic_error_set(err, IC_ERR_IO, 0, "cannot read %s: %s", path, strerror(errno));
+    struct stat info;
+    if (fstat(fileno(fp), &info) != 0 || !S_ISREG(info.st_mode)) { /* not a FIFO, a device */
+        fclose(fp);
+        return ic_error_set(err, IC_ERR_IO, 0, "cannot read %s: not a regular file", path);
+    }
     size_t cap = 0;
     ic_status st = IC_OK;
     while (st == IC_OK && *len <= IC_CAD_MAX_FILE) {
@@ -172,17 +191,25 @@ ic_status ic_cad_list(const char *path, ic_cad_format format, ic_cad_surface **l
     return with_path(st, path, err);
 }
 
-ic_status ic_cad_read(const char *path, ic_cad_format format, int entity, ic_cad_surface *out,
-                      ic_error *err)
+ic_status ic_cad_read_entity(const char *path, ic_cad_format format, int entity,
+                             ic_cad_surface *out, int *entity_fault, ic_error *err)
 {
     char *data;
     size_t len;
     memset(out, 0, sizeof *out);
+    *entity_fault = 0;
     ic_status st = slurp(path, &data, &len, err);
     if (st == IC_OK)
-        st = ic_cad_read_buffer(data ? data : "", len, format, entity, out, err);
+        st = read_buffer(data ? data : "", len, format, entity, out, entity_fault, err);
     free(data);
     return with_path(st, path, err);
+}
+
+ic_status ic_cad_read(const char *path, ic_cad_format format, int entity, ic_cad_surface *out,
+                      ic_error *err)
+{
+    int entity_fault;
+    return ic_cad_read_entity(path, format, entity, out, &entity_fault, err);
 }
 
 void ic_cad_surface_clear(ic_cad_surface *s)

@@ -67,6 +67,11 @@ ic_status ic_cad_list_buffer(const char *data, size_t len, ic_cad_format format,
  * that is absent, not a surface, or of an unsupported kind is an error. */
 ic_status ic_cad_read_buffer(const char *data, size_t len, ic_cad_format format, int entity,
                              ic_cad_surface *out, ic_error *err);
+/* The same; on failure *entity_fault is 1 when the file was read and the
+ * entity is at fault (absent, not a surface, not supported, malformed), 0
+ * when the file is (unreadable, of another format, malformed). */
+ic_status ic_cad_read_entity(const char *path, ic_cad_format format, int entity,
+                             ic_cad_surface *out, int *entity_fault, ic_error *err);
 
 /* The same from a file (at most IC_CAD_MAX_FILE bytes); messages begin with
  * the path. */

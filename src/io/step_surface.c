@@ -142,7 +142,7 @@ static ic_status placement(const ic_step_file *f, int v, ic_primitive *prim, con
         return ic_cad_fail(err, who, "its placement #%d has ref_direction along its axis",
                            (int)in->id);
     for (int k = 0; k < 3; k++)
-        x[k] /= len;
+        x[k] = x[k] / len + 0.0; /* + 0: no -0 */
     return IC_OK;
 }
 

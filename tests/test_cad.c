@@ -587,6 +587,47 @@ static void test_truncated(const char *name, int step)
     free(data);
 }
 
+/* small.igs with "\r\n" line ends, and as fixed 80-byte records without
+ * line ends: the same surfaces. */
+static void test_iges_layouts(void)
+{
+    size_t len;
+    char *text = slurp("small.igs", &len);
+    if (!REQUIRE(text && len > 0, "small.igs read"))
+        return;
+    char *crlf = malloc(2 * len), *fixed = malloc(2 * len);
+    size_t ncrlf = 0, nfixed = 0, column = 0;
+    for (size_t k = 0; k < len; k++) {
+        if (text[k] == '\n') {
+            crlf[ncrlf++] = '\r';
+            for (; column < 80; column++)
+                fixed[nfixed++] = ' ';
+            column = 0;
+        } else {
+            fixed[nfixed++] = text[k];
+            column++;
+        }
+        crlf[ncrlf++] = text[k];
+    }
+    const char *variants[2] = {crlf, fixed};
+    const size_t lengths[2] = {ncrlf, nfixed};
+    for (int v = 0; v < 2; v++) {
+        ic_cad_surface *list = NULL;
+        int n = 0;
+        ic_error err;
+        const ic_status st = ic_cad_list_buffer(variants[v], lengths[v], IC_CAD_IGES, &list, &n,
+                                                NULL, &err);
+        CHECK(st == IC_OK && n == 4 && list[0].supported && list[0].entity == 3 &&
+                  list[0].nurbs.points[3 * 3 + 2] == 1,
+              "small.igs %s: status %d, %d surfaces (%s)", v ? "in 80-byte records" : "with CRLF",
+              (int)st, n, st == IC_OK ? "" : err.message);
+        ic_cad_list_free(list, n);
+    }
+    free(crlf);
+    free(fixed);
+    free(text);
+}
+
 static void test_bad_files(void)
 {
     ic_cad_surface s;
@@ -755,6 +796,7 @@ int main(int argc, char **argv)
     test_small_iges();
     test_truncated("small.step", 1);
     test_truncated("small.igs", 0);
+    test_iges_layouts();
     test_bad_files();
     test_problem_file();
     test_problem_primitives();

@@ -36,12 +36,12 @@ static ic_status add_line(ic_iges_file *f, int *cap, size_t at, size_t len, ic_e
     return IC_OK;
 }
 
-/* Records end at line ends ("\n" or "\r\n"); a file whose first 81 bytes
- * hold no line end is read as fixed 80-byte records. Blank lines are
- * passed over. */
+/* Records end at line ends ("\n" or "\r\n"); a file whose first 82 bytes
+ * (a record and "\r\n") hold no line end is read as fixed 80-byte records.
+ * Blank lines are passed over. */
 static ic_status split_records(ic_iges_file *f, ic_error *err)
 {
-    const char *nl = memchr(f->text, '\n', f->len < RECORD + 1 ? f->len : RECORD + 1);
+    const char *nl = memchr(f->text, '\n', f->len < RECORD + 2 ? f->len : RECORD + 2);
     int cap = 0;
     ic_status st = IC_OK;
     for (size_t at = 0; at < f->len && st == IC_OK;) {

@@ -148,7 +148,7 @@ ic_status ic_problem_read_cad(ic_surface **s, const cJSON *js, const char *path,
 {
     *s = NULL;
     char file[4096], sub[IC_ERROR_PATH_LEN];
-    int entity;
+    int entity = 0;
     ic_status st = file_and_entity(file, sizeof file, &entity, js, path, base_dir, err);
     if (st != IC_OK)
         return st;

@@ -8,6 +8,7 @@
 
 #include "intercurve/problem.h"
 #include "intercurve/surface.h"
+#include "traced_example.h"
 
 /* ---- an independent evaluator: N_i,p(t) by the defining recursion
  * (de Boor 1972, Cox 1972), each basis function on its own, with the
@@ -325,11 +326,75 @@ static void test_problem_errors(void)
     }
 }
 
-int main(void)
+/* The points of a curve marked as on knot lines: each flagged sheet's
+ * parameters put it on one of the knots, within the tracer's snap (1e-13 of
+ * the domain's width 10: the landed sheet exactly, the other within
+ * rounding). Returns how many there are. */
+static int knot_points_on_knots(const ic_trace_curve *c, const double *ku, int nku,
+                                const double *kv, int nkv)
+{
+    const double snap = 1e-13 * 10;
+    int n = 0;
+    for (int i = 0; i < c->npoints; i++) {
+        const ic_trace_point *p = &c->points[i];
+        if (!p->knot_line)
+            continue;
+        for (int s = 0; s < 2; s++) {
+            if (!((p->knot_line >> s) & 1))
+                continue;
+            int on = 0;
+            for (int k = 0; k < nku; k++)
+                on |= fabs(p->params[s][0] - ku[k]) <= snap;
+            for (int k = 0; k < nkv; k++)
+                on |= fabs(p->params[s][1] - kv[k]) <= snap;
+            CHECK(on, "knot-line point %d, sheet %d at (%.17g, %.17g) is on no knot", i, s,
+                  p->params[s][0], p->params[s][1]);
+        }
+        n++;
+    }
+    return n;
+}
+
+/* The Enneper-type surface of Hassan and Badr (2016), Example 2, written
+ * exactly as a bicubic B-spline with interior knots
+ * (tests/truth/gen_enneper_nurbs.py) crosses itself along two curves of
+ * length 131.07476547127208 each (tests/truth/gen_enneper_length.py, from
+ * the formula, not from intercurve). */
+static void test_enneper_self(const char *dir)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/tests/data/nurbs/enneper-nurbs.json", dir);
+    traced t;
+    if (trace_file(&t, path) != 0)
+        return;
+    const double L = 131.07476547127208;
+    const double ku[] = {-2, 0, 2.5}, kv[] = {-1, 1.5};
+    const int n = ic_trace_result_num_curves(t.res);
+    const ic_trace_report *rep = ic_trace_result_report(t.res);
+    CHECK(n == 2 && rep->complete, "%d curves, complete %d", n, rep->complete);
+    int crossings = 0;
+    for (int c = 0; c < n; c++) {
+        const ic_trace_curve *curve = ic_trace_result_curve(t.res, c);
+        CHECK_CLOSE(curve->length, L, TIER_LENGTH, "double curve length");
+        crossings += knot_points_on_knots(curve, ku, 3, kv, 2);
+    }
+    /* the crossings, from the preimages' ranges: one curve's sheets run
+     * u in [-5, -2] and [2, 5] with v from 2.7 to -2.7 (u = -2 twice, u = 2.5
+     * twice, v = 1.5 and v = -1 once, met by both sheets at one point): 6;
+     * the other's run u from 2.7 to -2.7 on both sheets with |v| >= sqrt(3)
+     * (u = 2.5, 0, -2, each met by both sheets at one point): 3 */
+    CHECK(crossings == 9, "the double curves cross knot lines: %d points on them, want 9",
+          crossings);
+    release(&t);
+}
+
+int main(int argc, char **argv)
 {
     test_points_against_definition();
     test_side_on_knot_line();
     test_enclosures();
     test_problem_errors();
+    if (REQUIRE(argc > 1, "usage: test_nurbs SOURCE_DIR"))
+        test_enneper_self(argv[1]);
     return harness_finish("nurbs");
 }

@@ -15,10 +15,9 @@ typedef struct {
     ic_trace_result *res;
 } traced;
 
-static inline int trace_example(traced *t, const char *dir, const char *name)
+/* Any problem file, traced with the default options (and its box). */
+static inline int trace_file(traced *t, const char *path)
 {
-    char path[512];
-    snprintf(path, sizeof path, "%s/examples/%s", dir, name);
     ic_error err;
     ic_trace_options opt;
     ic_trace_defaults(&opt);
@@ -32,8 +31,15 @@ static inline int trace_example(traced *t, const char *dir, const char *name)
     }
     if (st == IC_OK)
         st = ic_trace(&t->res, t->pair, &opt, &err);
-    CHECK(st == IC_OK, "%s: %s", name, err.message);
+    CHECK(st == IC_OK, "%s: %s", path, err.message);
     return st == IC_OK ? 0 : -1;
+}
+
+static inline int trace_example(traced *t, const char *dir, const char *name)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/examples/%s", dir, name);
+    return trace_file(t, path);
 }
 
 static inline void release(traced *t)

@@ -3,6 +3,7 @@
 
 #include <errno.h>
 #include <stdio.h>
+#include <sys/stat.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -315,6 +316,11 @@ static ic_status geomdl_surface(owned_nurbs *o, const cJSON *js, const char *pat
 static ic_status slurp(char **text, size_t *len, const char *file, ic_error *err)
 {
     *text = NULL;
+    struct stat info;
+    if (stat(file, &info) != 0)
+        return ic_error_set(err, IC_ERR_IO, 0, "cannot open %s: %s", file, strerror(errno));
+    if (!S_ISREG(info.st_mode)) /* a pipe or a device could block or never end */
+        return ic_error_set(err, IC_ERR_IO, 0, "%s is not a regular file", file);
     FILE *f = fopen(file, "rb");
     if (!f)
         return ic_error_set(err, IC_ERR_IO, 0, "cannot open %s: %s", file, strerror(errno));

@@ -514,8 +514,23 @@ static ic_status end_on_boundary(ic_tracer *tr, double h, boundary bd, ic_error 
     return record(tr, err);
 }
 
+/* Within IC_TRACE_KNOT_SNAP_REL of sheet s's domain width. */
+static double knot_snap(const ic_tracer *tr, int s, int i)
+{
+    return IC_TRACE_KNOT_SNAP_REL * (tr->domain[s][i][1] - tr->domain[s][i][0]);
+}
+
+/* Whether parameter i of sheet s at x stands on a knot line. */
+static int on_knot_line(const ic_tracer *tr, int s, int i, double x)
+{
+    const double snap = knot_snap(tr, s, i);
+    double knot;
+    return ic_surface_knot_crossed(ic_pair_surface(tr->pair, s), i, x - snap, x + snap, &knot);
+}
+
 /* The knot line of a NURBS sheet (docs/nurbs.md) the step from cur to
- * next crosses first, as a boundary to land on. */
+ * next crosses first, as a boundary to land on; one cur stands on is not
+ * crossed again. */
 static int crosses_knot_line(const ic_tracer *tr, const ic_local_point *next, boundary *b)
 {
     int found = 0;
@@ -524,13 +539,43 @@ static int crosses_knot_line(const ic_tracer *tr, const ic_local_point *next, bo
         for (int i = 0; tr->par[s] && i < 2; i++) {
             const double a = tr->cur.params[s][i], z = next->params[s][i];
             double knot;
-            if (!ic_surface_knot_crossed(ic_pair_surface(tr->pair, s), i, a, z, &knot))
+            if (!ic_surface_knot_crossed(ic_pair_surface(tr->pair, s), i, a, z, &knot) ||
+                fabs(knot - a) <= knot_snap(tr, s, i))
                 continue;
             const double f = (knot - a) / (z - a); /* how far along the step */
             if (f < first)
                 first = f, *b = (boundary){s, i, knot}, found = 1;
         }
     return found;
+}
+
+/* Sets the knot side of every sheet parameter of `on` on a knot line to
+ * the way the step heads (the landed one's first: two sheets of one
+ * surface share the setting); returns which sheets are on one. */
+static int set_knot_sides(const ic_tracer *tr, const ic_local_point *on, const ic_local_point *next,
+                          boundary landed)
+{
+    int side[2][2] = {{0, 0}, {0, 0}}, sheets = 0;
+    for (int s = 0; s < 2; s++)
+        for (int i = 0; tr->par[s] && i < 2; i++)
+            if (on_knot_line(tr, s, i, on->params[s][i])) {
+                sheets |= 1 << s;
+                side[s][i] = next->params[s][i] > on->params[s][i] ? 1 : -1;
+            }
+    side[landed.sheet][landed.index] = next->params[landed.sheet][landed.index] > landed.bound ? 1 : -1;
+    for (int s = 1; s >= 0; s--) /* sheet 0 last: it wins where the sheets share a surface */
+        if (tr->par[s])
+            ic_surface_set_knot_side(ic_pair_surface(tr->pair, s), side[s]);
+    if (tr->par[0] && tr->par[1] && ic_pair_surface(tr->pair, 0) == ic_pair_surface(tr->pair, 1))
+        ic_surface_set_knot_side(ic_pair_surface(tr->pair, 0), side[landed.sheet]);
+    return sheets | 1 << landed.sheet;
+}
+
+static void clear_knot_sides(const ic_tracer *tr)
+{
+    for (int s = 0; s < 2; s++)
+        if (tr->par[s])
+            ic_surface_set_knot_side(ic_pair_surface(tr->pair, s), NULL);
 }
 
 static int regular_ahead(ic_tracer *tr, double h, const ic_local_point *next,
@@ -547,14 +592,11 @@ static int step_onto_knot_line(ic_tracer *tr, double h, boundary bd, const ic_lo
     double hb;
     if (land_on_boundary(tr, h, bd, &on, &hb) != 0)
         return 0;
-    int side[2] = {0, 0};
-    side[bd.index] = next->params[bd.sheet][bd.index] > bd.bound ? 1 : -1;
-    ic_surface *sheet = ic_pair_surface(tr->pair, bd.sheet);
-    ic_surface_set_knot_side(sheet, side);
+    const int sheets = set_knot_sides(tr, &on, next, bd);
     ic_local_result res;
     int near_tangential = 0;
     const int ok = regular_ahead(tr, hb, &on, t, &res, &near_tangential);
-    ic_surface_set_knot_side(sheet, NULL);
+    clear_knot_sides(tr);
     if (!ok)
         return 0;
     double Xb[3], pb[2][2];
@@ -563,7 +605,7 @@ static int step_onto_knot_line(ic_tracer *tr, double h, boundary bd, const ic_lo
     tr->cur = on;
     tr->res = res;
     tr->s += ds;
-    tr->knot_line = 1 << bd.sheet;
+    tr->knot_line = sheets;
     *st = record(tr, err);
     tr->knot_line = 0;
     return 1;

@@ -94,6 +94,13 @@
  * rule itself is pinned (test_trust, "tangential arc cut by the domain"). */
 #define IC_TRACE_EDGE_REL 1e-9
 
+/* relative to a NURBS sheet's domain width: a parameter this close to a
+ * knot stands on that knot line (docs/nurbs.md). Two sheets of one curve
+ * reach a common knot line within rounding of each other (measured 9e-16
+ * of the width on the Enneper patch); landing on one then puts the other
+ * on it too, rather than a second point 1e-15 further. */
+#define IC_TRACE_KNOT_SNAP_REL 1e-13
+
 /* units in the last place of L: how well a located tangential point's place
  * is known at best (the locator stops at steps of 1e-15 of the unknowns'
  * size); coefficients a shift this small makes are no contact terms

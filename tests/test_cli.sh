@@ -237,6 +237,13 @@ check "surfaces --format json: ten entities, IGES, unit mm" $?
 expect_error 1 "surfaces $c/missing.step" "missing.step" "cannot read"
 expect_error 1 "surfaces $src/examples/viviani.json" "viviani.json" "neither a STEP file"
 expect_error 1 "surfaces $c/small.step --format xml" "--format"
+# a STEP file's rational sphere traced against a plane through its centre: one
+# circle of length 15 pi (radius 7.5), to the 12 digits the file holds
+"$bin" trace "$c/problem-sphere-plane.json" --format text >"$out" 2>"$errf"
+check "trace problem-sphere-plane.json exits 0 ($(cat "$errf"))" $?
+grep -E '^ +1 +yes +transversal ' "$out" | awk -v pi=3.14159265358979324 \
+    '{ n++; d = $4 - 15 * pi; if (d < 0) d = -d; ok = $5 > 0 && d < 1e-9 } END { exit !(n == 1 && ok) }'
+check "problem-sphere-plane.json: one closed circle of length 15 pi within 1e-9" $?
 expect_error 1 "eval $c/problem-bad-entity.json --at 0,0" "problem-bad-entity.json" "surfaces[0].entity" "bspline.step" "#58" "not a surface"
 
 echo "test_cli: $pass passed, $fail failed"

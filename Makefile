@@ -83,13 +83,15 @@ install: all
 
 fuzz: deps
 	cmake -S . -B build-fuzz -DCMAKE_C_COMPILER=clang -DIC_FUZZ=ON -DIC_BUILD_TESTS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
-	cmake --build build-fuzz -j2 --target fuzz_expr fuzz_problem fuzz_trace
-	mkdir -p fuzz/corpus/expr fuzz/corpus/problem fuzz/corpus/trace
+	cmake --build build-fuzz -j2 --target fuzz_expr fuzz_problem fuzz_trace fuzz_cad
+	mkdir -p fuzz/corpus/expr fuzz/corpus/problem fuzz/corpus/trace fuzz/corpus/cad
 	./build-fuzz/fuzz/fuzz_expr -max_total_time=$(FUZZ_SECONDS) -max_len=256 fuzz/corpus/expr fuzz/seeds/expr
 	./build-fuzz/fuzz/fuzz_problem -max_total_time=$(FUZZ_SECONDS) -max_len=4096 \
 	  -dict=fuzz/problem.dict -artifact_prefix=fuzz/ fuzz/corpus/problem fuzz/seeds/problem
 	./build-fuzz/fuzz/fuzz_trace -max_total_time=$(FUZZ_SECONDS) -max_len=4096 -timeout=10 \
 	  -dict=fuzz/problem.dict -artifact_prefix=fuzz/ fuzz/corpus/trace fuzz/seeds/trace
+	./build-fuzz/fuzz/fuzz_cad -max_total_time=$(FUZZ_SECONDS) -max_len=8192 \
+	  -dict=fuzz/cad.dict -artifact_prefix=fuzz/ fuzz/corpus/cad fuzz/seeds/cad
 
 clean:
 	rm -rf build build-asan build-fuzz build-gcc-release build-clang-release

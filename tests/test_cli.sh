@@ -221,6 +221,31 @@ check "--help lists eval" $?
 "$bin" eval --help | grep -q "example:"
 check "eval --help has an example" $?
 
+# intercurve surfaces: every surface of a CAD file, text and JSON; bad files exit 1
+c="$src/tests/data/cad"
+"$bin" surfaces "$c/small.step" >"$out" 2>"$errf"
+check "surfaces small.step exits 0 ($(cat "$errf"))" $?
+grep -q 'length unit inch (0.0254 m), 11 surfaces (9 readable)' "$out" &&
+    grep -q '^#10  CYLINDRICAL_SURFACE  "it'"'"'s a cylinder"  cylinder  u \[0, 6.283185307\] periodic  v unbounded' "$out" &&
+    grep -q '^#33  OFFSET_SURFACE  ""  not read: #33 (OFFSET_SURFACE): this surface type is not supported' "$out"
+check "surfaces small.step lists the cylinder #10 and says why #33 is not read" $?
+"$bin" surfaces "$c/primitives.igs" --format json >"$out" 2>"$errf"
+check "surfaces primitives.igs --format json exits 0 ($(cat "$errf"))" $?
+[ "$(grep -c '"entity":' "$out")" -eq 10 ] && grep -q '"unit":	"mm"' "$out" &&
+    grep -q '"format":	"IGES"' "$out"
+check "surfaces --format json: ten entities, IGES, unit mm" $?
+expect_error 1 "surfaces $c/missing.step" "missing.step" "cannot read"
+expect_error 1 "surfaces $src/examples/viviani.json" "viviani.json" "neither a STEP file"
+expect_error 1 "surfaces $c/small.step --format xml" "--format"
+# a STEP file's rational sphere traced against a plane through its centre: one
+# circle of length 15 pi (radius 7.5), to the 12 digits the file holds
+"$bin" trace "$c/problem-sphere-plane.json" --format text >"$out" 2>"$errf"
+check "trace problem-sphere-plane.json exits 0 ($(cat "$errf"))" $?
+grep -E '^ +1 +yes +transversal ' "$out" | awk -v pi=3.14159265358979324 \
+    '{ n++; d = $4 - 15 * pi; if (d < 0) d = -d; ok = $5 > 0 && d < 1e-9 } END { exit !(n == 1 && ok) }'
+check "problem-sphere-plane.json: one closed circle of length 15 pi within 1e-9" $?
+expect_error 1 "eval $c/problem-bad-entity.json --at 0,0" "problem-bad-entity.json" "surfaces[0].entity" "bspline.step" "#58" "not a surface"
+
 echo "test_cli: $pass passed, $fail failed"
 # a failure, or no check run at all, fails the test
 [ "$fail" -eq 0 ] && [ "$pass" -gt 0 ]

@@ -20,7 +20,7 @@ trap 'rm -rf "$tmp"' EXIT
 
 # From each help: "cmd|option|range|default" (range and default may be
 # empty); the range without its value's name ("K in ", "one of ").
-for cmd in eval point trace plot; do
+for cmd in eval point trace plot surfaces; do
     "$bin" $cmd --help >"$tmp/help.$cmd"
     check "$cmd --help exits 0" $?
     opt="" meta="" range="" default=""
@@ -56,7 +56,7 @@ for cmd in eval point trace plot; do
     flush
 done
 [ "$(grep -c . "$tmp/help.table")" -ge 20 ]
-check "the options of the four commands read from their help ($(wc -l <"$tmp/help.table"))" $?
+check "the options of the five commands read from their help ($(wc -l <"$tmp/help.table"))" $?
 
 # docs/cli.md: "cmd|option|range|default" from the table under
 # "### intercurve CMD" (the option's name is the first word in backquotes).

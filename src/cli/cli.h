@@ -17,6 +17,7 @@ int ic_cmd_eval(int argc, char **argv);
 int ic_cmd_point(int argc, char **argv);
 int ic_cmd_trace(int argc, char **argv);
 int ic_cmd_plot(int argc, char **argv);
+int ic_cmd_surfaces(int argc, char **argv);
 
 /* What messages call the problem file: "<stdin>" for "-", else its name. */
 const char *ic_cli_file_name(const char *file);

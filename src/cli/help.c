@@ -47,7 +47,7 @@ static void usage_word(FILE *f, const char *word, int *column, int indent)
 
 static void print_usage(const ic_cli_command *cmd, FILE *f)
 {
-    int column = fprintf(f, "usage: intercurve %s PROBLEM.json", cmd->name);
+    int column = fprintf(f, "usage: intercurve %s %s", cmd->name, ic_cli_file_arg(cmd));
     const int indent = (int)strlen("usage: intercurve ") + (int)strlen(cmd->name) + 1;
     char item[256];
     int one_of_done = 0;
@@ -119,6 +119,11 @@ static void print_option(FILE *f, const ic_cli_option *opt, int column)
         fprintf(f, "%*s%s\n", column, "", range);
 }
 
+const char *ic_cli_file_arg(const ic_cli_command *cmd)
+{
+    return cmd->file ? cmd->file : "PROBLEM.json";
+}
+
 void ic_cli_print_help(const ic_cli_command *cmd, FILE *f)
 {
     print_usage(cmd, f);
@@ -134,10 +139,16 @@ void ic_cli_print_help(const ic_cli_command *cmd, FILE *f)
     for (int k = 0; k < cmd->noptions; k++)
         print_option(f, &cmd->options[k], column);
     fprintf(f, "  %-*s%s\n", column - 2, "-h, --help", "print this help");
-    fputs("\nPROBLEM.json is a problem file (docs/problem-files.md), or - for standard input.\n"
-          "A value follows its option as the next argument or after '=' (--order 3 or\n"
-          "--order=3); after -- every argument is taken as the problem file.\n",
-          f);
+    if (cmd->file)
+        fprintf(f, "\n%s is a STEP or IGES file (docs/cad-files.md).\n"
+                   "A value follows its option as the next argument or after '=' (--format json or\n"
+                   "--format=json); after -- every argument is taken as the file.\n",
+                cmd->file);
+    else
+        fputs("\nPROBLEM.json is a problem file (docs/problem-files.md), or - for standard input.\n"
+              "A value follows its option as the next argument or after '=' (--order 3 or\n"
+              "--order=3); after -- every argument is taken as the problem file.\n",
+              f);
     if (cmd->notes)
         fprintf(f, "\n%s", cmd->notes);
 }

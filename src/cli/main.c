@@ -17,6 +17,9 @@ static const char USAGE[] =
     "          its shape and the tangential points met\n"
     "  plot    draw the surfaces, the curves coloured by curvature, Frenet frames,\n"
     "          singular points, and a chart of curvature and torsion (SVG, PNG, PDF)\n"
+    "  surfaces\n"
+    "          list the surfaces of a STEP or IGES file (intercurve surfaces\n"
+    "          FILE.step|FILE.igs), so that a problem file can name them\n"
     "\n"
     "example:\n"
     "  intercurve eval examples/viviani.json --surface sphere --at 0.3,0.4\n"
@@ -46,6 +49,8 @@ int main(int argc, char **argv)
         return ic_cmd_trace(argc - 1, argv + 1);
     if (strcmp(argv[1], "plot") == 0)
         return ic_cmd_plot(argc - 1, argv + 1);
+    if (strcmp(argv[1], "surfaces") == 0)
+        return ic_cmd_surfaces(argc - 1, argv + 1);
     fprintf(stderr, "intercurve: unknown command '%s' (try 'intercurve --help')\n", argv[1]);
     return EXIT_INPUT;
 }

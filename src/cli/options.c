@@ -99,9 +99,9 @@ static int one_of_text(char *out, size_t size, const ic_cli_command *cmd)
 static int check_needs(const ic_cli_command *cmd, const char *file, const ic_cli_value *values)
 {
     char needs[512], missing[256] = "";
-    size_t used = (size_t)snprintf(needs, sizeof needs, "PROBLEM.json");
+    size_t used = (size_t)snprintf(needs, sizeof needs, "%s", ic_cli_file_arg(cmd));
     if (!file)
-        snprintf(missing, sizeof missing, "PROBLEM.json");
+        snprintf(missing, sizeof missing, "%s", ic_cli_file_arg(cmd));
     for (int k = 0; k < cmd->noptions; k++) {
         const ic_cli_option *opt = &cmd->options[k];
         if (opt->need != IC_OPT_REQUIRED || used >= sizeof needs)
@@ -152,8 +152,8 @@ int ic_cli_parse(const ic_cli_command *cmd, int argc, char **argv, const char **
         } else if (!*file) {
             *file = arg; /* "-": standard input */
         } else {
-            fprintf(stderr, "intercurve %s: unexpected argument '%s' (the problem file is '%s')\n",
-                    cmd->name, arg, *file);
+            fprintf(stderr, "intercurve %s: unexpected argument '%s' (the %s file is '%s')\n",
+                    cmd->name, arg, cmd->file ? "CAD" : "problem", *file);
             return input_error(cmd);
         }
     }

@@ -40,6 +40,7 @@ typedef struct {
 
 typedef struct {
     const char *name;    /* "trace" */
+    const char *file;    /* the file argument in the help: NULL for "PROBLEM.json" */
     const char *summary; /* what the command does, after the usage line */
     const ic_cli_option *options;
     int noptions;
@@ -76,6 +77,9 @@ int ic_cli_parse(const ic_cli_command *cmd, int argc, char **argv, const char **
 /* Prints the command's help: usage, summary, every option with its range
  * and default, notes. */
 void ic_cli_print_help(const ic_cli_command *cmd, FILE *f);
+
+/* The file argument's name in the help and messages ("PROBLEM.json"). */
+const char *ic_cli_file_arg(const ic_cli_command *cmd);
 
 /* Reads one option's value from text into *v; 0, or -1 after a message
  * "intercurve CMD: OPTION ..." on stderr. */

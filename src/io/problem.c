@@ -9,6 +9,7 @@
 
 #include "intercurve/expr.h"
 #include "json_path.h"
+#include "problem_cad.h"
 #include "problem_nurbs.h"
 
 #define MAX_SURFACES 2
@@ -370,6 +371,23 @@ static ic_status read_nurbs(ic_problem *p, ic_surface **s, const cJSON *js, int 
     return read_domain(p, *s, js, path, err);
 }
 
+/* "type": "step" or "iges": a surface of a CAD file (docs/cad-files.md),
+ * with an optional "domain" and "periodic" as the other parametric ones. */
+static ic_status read_cad(ic_problem *p, ic_surface **s, const cJSON *js, int iges,
+                          const char *path, ic_error *err)
+{
+    static const char *const keys[] = {"name", "type", "file", "entity", "form",
+                                       "domain", "periodic", NULL};
+    ic_status st = ic_json_check_keys(js, path, keys, err);
+    if (st == IC_OK)
+        st = ic_problem_read_cad(s, js, path, p->base_dir, iges, err);
+    if (st == IC_OK && ic_surface_get_kind(*s) != IC_PARAMETRIC &&
+        (cJSON_GetObjectItemCaseSensitive(js, "domain") ||
+         cJSON_GetObjectItemCaseSensitive(js, "periodic")))
+        return invalid(err, path, "\"domain\" and \"periodic\" need the parametric form");
+    return st == IC_OK ? read_domain(p, *s, js, path, err) : st;
+}
+
 static ic_status read_surface(ic_problem *p, int i, const cJSON *js, ic_error *err)
 {
     char path[IC_ERROR_PATH_LEN];
@@ -402,14 +420,16 @@ static ic_status read_surface(ic_problem *p, int i, const cJSON *js, ic_error *e
         return read_implicit(p, &p->surfaces[i], js, path, err);
     if (strcmp(type, "nurbs") == 0 || strcmp(type, "geomdl") == 0)
         return read_nurbs(p, &p->surfaces[i], js, type[0] == 'g', path, err);
+    if (strcmp(type, "step") == 0 || strcmp(type, "iges") == 0)
+        return read_cad(p, &p->surfaces[i], js, type[0] == 'i', path, err);
     for (size_t k = 0; k < sizeof PRIMITIVES / sizeof PRIMITIVES[0]; k++)
         if (strcmp(type, PRIMITIVES[k].name) == 0)
             return read_primitive(p, &p->surfaces[i], js, PRIMITIVES[k].kind, path, err);
     snprintf(path, sizeof path, "surfaces[%d].type", i);
     return invalid(err, path,
                    "expected \"parametric\", \"implicit\", \"nurbs\", \"geomdl\", "
-                   "\"plane\", \"sphere\", \"cylinder\", \"cone\", \"torus\" or "
-                   "\"ellipsoid\"");
+                   "\"step\", \"iges\", \"plane\", \"sphere\", \"cylinder\", \"cone\", "
+                   "\"torus\" or \"ellipsoid\"");
 }
 
 /* The "surfaces" array: two, or one for a self-intersection, or one

@@ -19,10 +19,8 @@ static ic_interval local_value(const ic_primitive *p, const ic_interval d[3])
         /* (|d|^2 + R^2 - r^2)^2 - 4 R^2 (dx^2 + dy^2) */
         const double R = p->major_radius, r = p->radius;
         const ic_interval rho = ic_interval_add(sq[0], sq[1]);
-        const ic_interval sum =
-            ic_interval_add(ic_interval_add(rho, sq[2]), cst(R * R - r * r));
-        return ic_interval_sub(ic_interval_pow_int(sum, 2),
-                               ic_interval_mul(cst(4 * R * R), rho));
+        const ic_interval sum = ic_interval_add(ic_interval_add(rho, sq[2]), cst(R * R - r * r));
+        return ic_interval_sub(ic_interval_pow_int(sum, 2), ic_interval_mul(cst(4 * R * R), rho));
     }
     double A[3], B[3], C;
     ic_primitive_quadric_coefficients(p, A, B, &C);

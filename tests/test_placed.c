@@ -260,8 +260,8 @@ static void check_case(const placed_case *c, const placement *pl, int implicit, 
     const ic_primitive prim = placed(c, pl);
     ic_surface *p = NULL, *q = twin(c, pl, implicit);
     ic_error err;
-    if (REQUIRE(ic_surface_new_primitive(&p, &prim, implicit ? IC_IMPLICIT : IC_PARAMETRIC,
-                                         &err) == IC_OK,
+    if (REQUIRE(ic_surface_new_primitive(&p, &prim, implicit ? IC_IMPLICIT : IC_PARAMETRIC, &err) ==
+                    IC_OK,
                 "%s: %s", what, err.message) &&
         q) {
         check_taylor(what, p, q, sp->taylor[implicit], rng);

@@ -5,7 +5,10 @@
  * linear functions, so their Taylor coefficients are products of the
  * one-variable ones: d^i/du^i cos u = cos(u + i pi/2). Implicit quadrics
  * sum_i A_i d_i^2 + B_i d_i + C (d = x - center) have a constant Hessian;
- * the torus is expanded with jet arithmetic (a quartic, exact).
+ * the torus is expanded with jet arithmetic (a quartic, exact). A placed
+ * primitive (placement.c) is evaluated in its local frame: the parametric
+ * jets are rotated to space, the implicit form is evaluated by jet
+ * arithmetic on the jets of the local coordinates Q^T (x - center).
  */
 #include "surface_internal.h"
 #include "common/mathconst.h"

@@ -60,6 +60,11 @@ check "eval a file of one surface: f = z is 3 at (1, 2, 3)" $?
 expect_error 1 "point $d/one-surface.json --at 1,2,3" "surfaces" "exactly two surfaces"
 expect_error 1 "eval $d/bad-radius.json --at 1,2,3" "surfaces[0]" "radius must be positive"
 expect_error 1 "eval $d/unknown-key.json --at 1,2,3" "(root)" "unknown key \"boxx\""
+# placed primitives: a bad axis or ref_direction named by its JSON path
+expect_error 1 "trace $d/bad-axis-zero.json" "bad-axis-zero.json" "surfaces[1].axis" "the axis is zero"
+expect_error 1 "trace $d/bad-ref-parallel.json" "surfaces[1].ref_direction" "parallel to the axis" "1e-06 radians"
+expect_error 1 "eval $d/bad-plane-axis.json --at 1,2,3" "surfaces[1].axis" "a plane takes no axis"
+expect_error 1 "eval $d/bad-axis-size.json --at 1,2,3" "surfaces[0].axis" "expected an array of 3 numbers"
 expect_error 1 "eval $d/bad-json.json --at 1,2,3" "invalid JSON near line 2"
 expect_error 1 "eval $d/bad-domain.json --at 1,2" "surfaces[0].domain[1][1]" "exponent has no digits"
 expect_error 1 "eval $d/bad-type.json --at 1,2,3" "surfaces[0].type" "expected \"parametric\""

@@ -41,8 +41,12 @@ typedef enum {
 } ic_primitive_kind;
 
 /**
- * A primitive in standard position, axis along z, moved to `center`
- * (docs/surfaces.md gives both forms of each):
+ * A primitive, given in its standard position (axis along z) and placed by
+ * `center`, `axis` and `ref_direction` (docs/surfaces.md gives both forms of
+ * each): with the local frame (e1, e2, e3) of ic_primitive_frame and Q the
+ * matrix of columns e1, e2, e3, the placed surface is R = center +
+ * Q R_local(u, v) and f(x) = f_local(Q^T (x - center)), where R_local and
+ * f_local are the forms below with c = 0 (all placement fields zero: Q = I):
  *  - plane:     point `center`, normal `normal`;
  *               R = center + u e1 + v e2 with (e1, e2, normal/|normal|) a
  *               right-handed orthonormal frame; f = normal . (x - center);
@@ -63,14 +67,37 @@ typedef struct {
     double major_radius;  /**< torus: R */
     double half_angle;    /**< cone, radians, in (0, pi/2) */
     double axes[3];       /**< ellipsoid semi-axes */
-    /** Placement (not for the plane, whose `normal` places it): the local z
-     *  axis and the local x direction (the parametrisation's u = 0 seam),
-     *  both in space. All zero: z and x, the standard position above. A
+    /** Placement (the plane has no axis, its `normal` places it, but it
+     *  takes a ref_direction for its e1): the local z axis and the local x
+     *  direction (the parametrisation's u = 0 seam), both in space, any
+     *  length. All zero: z and x, the standard position above; an axis with
+     *  a zero ref_direction gets the default e1 of ic_primitive_frame. A
      *  ref_direction not normal to the axis is made normal to it (its
      *  component along the axis removed); parallel to it is an error. */
     double axis[3];
     double ref_direction[3];
 } ic_primitive;
+
+/** Smallest angle, in radians, between a primitive's ref_direction (or a
+ *  plane's) and its axis (or the plane's normal), either way round: closer
+ *  to parallel is an error, as the seam would be set by rounding rather
+ *  than by the direction given. */
+#define IC_PRIMITIVE_REF_MIN_ANGLE 1e-6
+
+/**
+ * The local frame of a primitive as its surface uses it: frame[0..2] = e1,
+ * e2, e3, a right-handed orthonormal frame. e3 is the normalised axis (the
+ * plane's normal; z when the axis is zero); e1 is the normalised
+ * ref_direction with its component along e3 removed, or, when ref_direction
+ * is zero, the coordinate axis least aligned with e3 (the first in a tie)
+ * made normal to it, which is x for the axis z; e2 = e3 x e1.
+ * IC_ERR_INVALID, saying what, on non-finite placement numbers, an axis
+ * that is zero while ref_direction is not, a ref_direction within
+ * IC_PRIMITIVE_REF_MIN_ANGLE of the axis, a plane given an axis (its normal
+ * places it), or a plane's zero normal.
+ */
+IC_API IC_NODISCARD ic_status ic_primitive_frame(const ic_primitive *prim, double frame[3][3],
+                                                 ic_error *err);
 
 /** Largest degree of a NURBS patch in either parameter. */
 #define IC_NURBS_MAX_DEGREE 9
@@ -123,7 +150,8 @@ IC_API IC_NODISCARD ic_status ic_surface_new_callback(ic_surface **s, ic_surface
                                                       ic_error *err);
 /** A primitive in its parametric or implicit form. IC_ERR_INVALID on
  *  non-positive radii or axes, a zero plane normal, a cone angle outside
- *  (0, pi/2). Parametric primitives get their natural domain (docs). */
+ *  (0, pi/2), a bad placement (ic_primitive_frame). Parametric
+ *  primitives get their natural domain (docs). */
 IC_API IC_NODISCARD ic_status ic_surface_new_primitive(ic_surface **s, const ic_primitive *prim,
                                                        ic_surface_kind form, ic_error *err);
 /** A NURBS patch (copied). IC_ERR_INVALID names the field at fault in
@@ -197,8 +225,8 @@ IC_API IC_NODISCARD ic_status ic_surface_eval(ic_surface *s, double *out, const 
 /**
  * Encloses the surface over a box of its inputs: out[3] (parametric: x, y, z
  * over the parameter box) or out[1] (implicit: f over the space box), with
- * outward rounding (expr.h). Formula surfaces only: IC_ERR_UNABLE for
- * callbacks and primitives (the caller then samples instead of proving).
+ * outward rounding (expr.h). Formula surfaces and primitives: IC_ERR_UNABLE
+ * for callbacks (the caller then samples instead of proving).
  */
 IC_API IC_NODISCARD ic_status ic_surface_eval_interval(ic_surface *s, ic_interval *out,
                                                        const ic_interval *in, ic_error *err);

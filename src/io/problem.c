@@ -293,12 +293,53 @@ static ic_status prim_field(ic_problem *p, double *out, int count, int is_length
     return check_magnitudes(out, count, is_length, sub, err);
 }
 
+static int all_zero(const double v[3]) { return v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0; }
+
+/* The optional placement keys "axis" and "ref_direction" (after the kind's
+ * own keys: a plane's ref_direction is checked against its normal). An
+ * absent axis is z; an absent ref_direction gets the default of
+ * ic_primitive_frame. */
+static ic_status read_placement(ic_problem *p, ic_primitive *prim, const cJSON *js,
+                                const char *path, ic_error *err)
+{
+    char sub[IC_ERROR_PATH_LEN];
+    const int has_axis = cJSON_GetObjectItemCaseSensitive(js, "axis") != NULL;
+    const int has_ref = cJSON_GetObjectItemCaseSensitive(js, "ref_direction") != NULL;
+    snprintf(sub, sizeof sub, "%s.axis", path);
+    if (has_axis && prim->kind == IC_PRIM_PLANE)
+        return invalid(err, sub, "a plane takes no axis: its \"normal\" places it");
+    ic_status st = prim_field(p, prim->axis, 3, 0, js, "axis", path, 0, err);
+    if (st != IC_OK)
+        return st;
+    if (has_axis && all_zero(prim->axis))
+        return invalid(err, sub, "the axis is zero: give a direction, or leave \"axis\" out for z");
+    snprintf(sub, sizeof sub, "%s.ref_direction", path);
+    if ((st = prim_field(p, prim->ref_direction, 3, 0, js, "ref_direction", path, 0, err)))
+        return st;
+    if (!has_ref)
+        return IC_OK;
+    if (all_zero(prim->ref_direction))
+        return invalid(err, sub,
+                       "the ref_direction is zero: give a direction, or leave the key out for "
+                       "the default");
+    if (!has_axis && prim->kind != IC_PRIM_PLANE)
+        prim->axis[2] = 1.0;
+    if (prim->kind == IC_PRIM_PLANE && all_zero(prim->normal))
+        return IC_OK; /* the plane's own message */
+    double frame[3][3];
+    st = ic_primitive_frame(prim, frame, err); /* the axis is valid: the ref is at fault */
+    if (st != IC_OK)
+        ic_error_set_path(err, "%s", sub);
+    return st;
+}
+
 static ic_status read_primitive(ic_problem *p, ic_surface **s, const cJSON *js,
                                 ic_primitive_kind kind, const char *path, ic_error *err)
 {
-    static const char *const keys[] = {"name",   "type",         "form",         "center",
-                                       "normal", "radius",       "major_radius", "minor_radius",
-                                       "half_angle", "axes", "domain", "periodic", NULL};
+    static const char *const keys[] = {
+        "name",   "type",         "form",         "center",        "normal",
+        "radius", "major_radius", "minor_radius", "half_angle",    "axes",
+        "domain", "periodic",     "axis",         "ref_direction", NULL};
     ic_status st = ic_json_check_keys(js, path, keys, err);
     if (st != IC_OK)
         return st;
@@ -337,6 +378,8 @@ static ic_status read_primitive(ic_problem *p, ic_surface **s, const cJSON *js,
         st = prim_field(p, prim.axes, 3, 1, js, "axes", path, 1, err);
         break;
     }
+    if (st == IC_OK)
+        st = read_placement(p, &prim, js, path, err);
     if (st != IC_OK)
         return st;
     st = ic_surface_new_primitive(s, &prim, form, err);

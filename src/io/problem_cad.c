@@ -110,8 +110,8 @@ static ic_status make_primitive(ic_surface **s, const ic_cad_surface *d, ic_surf
         snprintf(msg, sizeof msg, "%s", err ? err->message : "");
         return ic_error_set(err, st, 0, "%s: %s", who, msg);
     }
-    /* a plane is placed by its point and normal; the others must follow the
-     * file's frame, which a build without placed primitives ignores */
+    /* a plane is placed by its point and normal; the others must give the
+     * file's own points (a check of the mapping of the file's placement) */
     if (d->prim.kind == IC_PRIM_PLANE || follows_placement(*s, &d->prim, form))
         return IC_OK;
     ic_surface_free(*s);
@@ -119,8 +119,8 @@ static ic_status make_primitive(ic_surface **s, const ic_cad_surface *d, ic_surf
     const double *a = d->prim.axis, *r = d->prim.ref_direction;
     return ic_error_set(err, IC_ERR_INVALID, 0,
                         "%s: placed with axis (%g, %g, %g) and ref_direction (%g, %g, %g), "
-                        "which this build's primitives do not follow (they are placed along z "
-                        "with the seam along x only)",
+                        "the primitive made from it does not give the file's points (an "
+                        "internal error: please report it with the file)",
                         who, a[0], a[1], a[2], r[0], r[1], r[2]);
 }
 

@@ -5,7 +5,10 @@
  * linear functions, so their Taylor coefficients are products of the
  * one-variable ones: d^i/du^i cos u = cos(u + i pi/2). Implicit quadrics
  * sum_i A_i d_i^2 + B_i d_i + C (d = x - center) have a constant Hessian;
- * the torus is expanded with jet arithmetic (a quartic, exact).
+ * the torus is expanded with jet arithmetic (a quartic, exact). A placed
+ * primitive (placement.c) is evaluated in its local frame: the parametric
+ * jets are rotated to space, the implicit form is evaluated by jet
+ * arithmetic on the jets of the local coordinates Q^T (x - center).
  */
 #include "surface_internal.h"
 #include "common/mathconst.h"
@@ -17,41 +20,45 @@
 
 static int positive(double x) { return isfinite(x) && x > 0.0; }
 
+/* Whether a frame is exactly the standard one (x, y, z): then the
+ * primitive keeps the fast path of its standard position. */
+static int is_identity(const double f[3][3])
+{
+    for (int j = 0; j < 3; j++)
+        for (int k = 0; k < 3; k++)
+            if (f[j][k] != (j == k ? 1.0 : 0.0))
+                return 0;
+    return 1;
+}
+
+/* The placement: the plane's frame, or the frame of the others. */
+static ic_status place(ic_surface *s, ic_error *err)
+{
+    double frame[3][3];
+    const ic_status st = ic_primitive_frame(&s->prim, frame, err);
+    if (st != IC_OK)
+        return st;
+    if (s->prim.kind == IC_PRIM_PLANE) {
+        memcpy(s->plane_frame, frame, sizeof frame);
+        return IC_OK;
+    }
+    memcpy(s->frame, frame, sizeof frame);
+    s->placed = !is_identity(frame);
+    return IC_OK;
+}
+
 ic_status ic_primitive_check(ic_surface *s, ic_error *err)
 {
     const ic_primitive *p = &s->prim;
     for (int i = 0; i < 3; i++)
         if (!isfinite(p->center[i]))
             return ic_error_set(err, IC_ERR_INVALID, 0, "primitive: center is not finite");
+    const ic_status st = place(s, err);
+    if (st != IC_OK)
+        return st;
     switch (p->kind) {
-    case IC_PRIM_PLANE: {
-        const double len = sqrt(p->normal[0] * p->normal[0] + p->normal[1] * p->normal[1] +
-                                p->normal[2] * p->normal[2]);
-        if (!positive(len))
-            return ic_error_set(err, IC_ERR_INVALID, 0, "plane: the normal is zero");
-        double *e1 = s->plane_frame[0], *e2 = s->plane_frame[1], *e3 = s->plane_frame[2];
-        for (int i = 0; i < 3; i++)
-            e3[i] = p->normal[i] / len;
-        /* e1: the coordinate axis least aligned with e3, made orthogonal */
-        int k = 0;
-        for (int i = 1; i < 3; i++)
-            if (fabs(e3[i]) < fabs(e3[k]))
-                k = i;
-        double a[3] = {0, 0, 0};
-        a[k] = 1.0;
-        double dot = e3[k], norm = 0.0;
-        for (int i = 0; i < 3; i++) {
-            e1[i] = a[i] - dot * e3[i];
-            norm += e1[i] * e1[i];
-        }
-        norm = sqrt(norm);
-        for (int i = 0; i < 3; i++)
-            e1[i] /= norm;
-        e2[0] = e3[1] * e1[2] - e3[2] * e1[1];
-        e2[1] = e3[2] * e1[0] - e3[0] * e1[2];
-        e2[2] = e3[0] * e1[1] - e3[1] * e1[0];
+    case IC_PRIM_PLANE:
         return IC_OK;
-    }
     case IC_PRIM_SPHERE:
     case IC_PRIM_CYLINDER:
         if (!positive(p->radius))
@@ -149,6 +156,17 @@ static void add_tensor(double *out, const ic_jet_space *sp, double scale, const 
     }
 }
 
+/* Local coordinates (three jets) to space: rotated by the frame when
+ * placed, then moved to the center. */
+static void to_space(const ic_surface *s, double *xyz, const ic_jet_space *sp)
+{
+    const int n = ic_jet_space_len(sp);
+    if (s->placed)
+        ic_placement_jets_to_space(s->frame, xyz, n);
+    for (int k = 0; k < 3; k++)
+        xyz[k * n] += s->prim.center[k];
+}
+
 static void parametric_taylor(const ic_surface *s, double *out, const double *at,
                               const ic_jet_space *sp)
 {
@@ -199,8 +217,7 @@ static void parametric_taylor(const ic_surface *s, double *out, const double *at
         add_tensor(z, sp, p->radius, one, sv);
         break;
     }
-    for (int k = 0; k < 3; k++)
-        out[k * n] += p->center[k];
+    to_space(s, out, sp);
 }
 
 /* sum_i A_i d_i^2 + B_i d_i + C with d = x - center. */
@@ -244,22 +261,7 @@ static void torus_on_jets(const ic_primitive *p, double *out, double *const d[3]
     ic_jet_add(out, tmp, rho, sp);
 }
 
-static ic_status torus_taylor(ic_surface *s, double *out, const double *at, const ic_jet_space *sp,
-                              ic_error *err)
-{
-    const int n = ic_jet_space_len(sp);
-    double *w = ic_surface_work(s, IC_WORK_EVAL, 7 * (size_t)n);
-    if (!w)
-        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory evaluating a torus");
-    double *d[3] = {w, w + n, w + 2 * n};
-    for (int i = 0; i < 3; i++)
-        ic_jet_set_var(d[i], at[i] - s->prim.center[i], i, sp);
-    torus_on_jets(&s->prim, out, d, sp, w + 3 * n);
-    return IC_OK;
-}
-
-/* Diagonal quadric coefficients of the implicit primitives (not the torus). */
-static void quadric_coefficients(const ic_primitive *p, double A[3], double B[3], double *C)
+void ic_primitive_quadric_coefficients(const ic_primitive *p, double A[3], double B[3], double *C)
 {
     for (int i = 0; i < 3; i++)
         A[i] = B[i] = 0.0;
@@ -341,8 +343,30 @@ static void parametric_on_jets(const ic_surface *s, double *out, const double *u
         ic_jet_scale(z, sv, p->radius, sp);
         break;
     }
-    for (int k = 0; k < 3; k++)
-        out[k * n] += p->center[k];
+    to_space(s, out, sp);
+}
+
+/* f_local on the jets d of the local coordinates (w: 4 jets of workspace). */
+static void implicit_on_jets(const ic_primitive *p, double *out, double *const d[3],
+                             const ic_jet_space *sp, double *w)
+{
+    if (p->kind == IC_PRIM_TORUS) {
+        torus_on_jets(p, out, d, sp, w);
+        return;
+    }
+    const int n = ic_jet_space_len(sp);
+    double A[3], B[3], C, *sq = w;
+    ic_primitive_quadric_coefficients(p, A, B, &C);
+    ic_jet_set_const(out, C, sp);
+    for (int i = 0; i < 3; i++) {
+        if (A[i] != 0.0) {
+            ic_jet_mul(sq, d[i], d[i], sp);
+            for (int j = 0; j < n; j++)
+                out[j] += A[i] * sq[j];
+        }
+        for (int j = 0; j < n; j++)
+            out[j] += B[i] * d[i][j];
+    }
 }
 
 ic_status ic_primitive_compose(ic_surface *s, double *out, const double *const *in,
@@ -361,22 +385,27 @@ ic_status ic_primitive_compose(ic_surface *s, double *out, const double *const *
         ic_jet_copy(d[i], in[i], sp);
         d[i][0] -= s->prim.center[i];
     }
-    if (s->prim.kind == IC_PRIM_TORUS) {
-        torus_on_jets(&s->prim, out, d, sp, w + 3 * n);
-        return IC_OK;
-    }
-    double A[3], B[3], C, *sq = w + 3 * n;
-    quadric_coefficients(&s->prim, A, B, &C);
-    ic_jet_set_const(out, C, sp);
-    for (int i = 0; i < 3; i++) {
-        if (A[i] != 0.0) {
-            ic_jet_mul(sq, d[i], d[i], sp);
-            for (int j = 0; j < n; j++)
-                out[j] += A[i] * sq[j];
-        }
-        for (int j = 0; j < n; j++)
-            out[j] += B[i] * d[i][j];
-    }
+    if (s->placed)
+        ic_placement_jets_to_local(s->frame, d, n);
+    implicit_on_jets(&s->prim, out, d, sp, w + 3 * n);
+    return IC_OK;
+}
+
+/* The implicit torus, and every placed implicit primitive, at a point: f_local
+ * on the jets of the local coordinates, linear in x, y, z. */
+static ic_status taylor_on_jets(ic_surface *s, double *out, const double *at,
+                                const ic_jet_space *sp, ic_error *err)
+{
+    const int n = ic_jet_space_len(sp);
+    double *w = ic_surface_work(s, IC_WORK_EVAL, 7 * (size_t)n);
+    if (!w)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory evaluating a primitive");
+    double *d[3] = {w, w + n, w + 2 * n};
+    for (int i = 0; i < 3; i++)
+        ic_jet_set_var(d[i], at[i] - s->prim.center[i], i, sp);
+    if (s->placed)
+        ic_placement_jets_to_local(s->frame, d, n);
+    implicit_on_jets(&s->prim, out, d, sp, w + 3 * n);
     return IC_OK;
 }
 
@@ -387,69 +416,10 @@ ic_status ic_primitive_taylor(ic_surface *s, double *out, const double *at, cons
         parametric_taylor(s, out, at, sp);
         return IC_OK;
     }
-    if (s->prim.kind == IC_PRIM_TORUS)
-        return torus_taylor(s, out, at, sp, err);
+    if (s->prim.kind == IC_PRIM_TORUS || s->placed)
+        return taylor_on_jets(s, out, at, sp, err);
     double A[3], B[3], C;
-    quadric_coefficients(&s->prim, A, B, &C);
+    ic_primitive_quadric_coefficients(&s->prim, A, B, &C);
     quadric_taylor(s, out, at, sp, A, B, C);
     return IC_OK;
-}
-
-ic_status ic_primitive_interval(ic_surface *s, ic_interval *out, const ic_interval *in,
-                                ic_error *err)
-{
-    const ic_primitive *p = &s->prim;
-    ic_interval d[3], sq[3];
-    for (int i = 0; i < 3; i++) {
-        d[i] = ic_interval_sub(in[i], (ic_interval){p->center[i], p->center[i]});
-        sq[i] = ic_interval_pow_int(d[i], 2);
-    }
-    if (p->kind == IC_PRIM_TORUS) {
-        /* (|d|^2 + R^2 - r^2)^2 - 4 R^2 (dx^2 + dy^2) */
-        const double R = p->major_radius, r = p->radius;
-        const ic_interval rho = ic_interval_add(sq[0], sq[1]);
-        const ic_interval sum = ic_interval_add(ic_interval_add(rho, sq[2]),
-                                                (ic_interval){R * R - r * r, R * R - r * r});
-        out[0] = ic_interval_sub(ic_interval_pow_int(sum, 2),
-                                 ic_interval_mul((ic_interval){4 * R * R, 4 * R * R}, rho));
-        return IC_OK;
-    }
-    double A[3], B[3], C;
-    quadric_coefficients(p, A, B, &C);
-    ic_interval f = {C, C};
-    for (int i = 0; i < 3; i++) {
-        f = ic_interval_add(f, ic_interval_mul((ic_interval){A[i], A[i]}, sq[i]));
-        f = ic_interval_add(f, ic_interval_mul((ic_interval){B[i], B[i]}, d[i]));
-    }
-    out[0] = f;
-    (void)err;
-    return IC_OK;
-}
-
-void ic_primitive_interval_grad(ic_surface *s, ic_interval_grad *out, const ic_interval *in)
-{
-    const ic_primitive *p = &s->prim;
-    ic_interval d[3];
-    for (int i = 0; i < 3; i++)
-        d[i] = ic_interval_sub(in[i], (ic_interval){p->center[i], p->center[i]});
-    ic_primitive_interval(s, &out->v, in, NULL);
-    if (p->kind == IC_PRIM_TORUS) {
-        /* grad of (|d|^2 + R^2 - r^2)^2 - 4 R^2 (dx^2 + dy^2):
-         * 4 sum d - 8 R^2 (dx, dy, 0) */
-        const double R = p->major_radius, r = p->radius;
-        ic_interval sum = {R * R - r * r, R * R - r * r};
-        for (int i = 0; i < 3; i++)
-            sum = ic_interval_add(sum, ic_interval_pow_int(d[i], 2));
-        for (int i = 0; i < 3; i++) {
-            const ic_interval k =
-                i < 2 ? ic_interval_sub(sum, (ic_interval){2 * R * R, 2 * R * R}) : sum;
-            out->d[i] = ic_interval_mul(ic_interval_mul((ic_interval){4, 4}, d[i]), k);
-        }
-        return;
-    }
-    double A[3], B[3], C;
-    quadric_coefficients(p, A, B, &C);
-    for (int i = 0; i < 3; i++) /* 2 A_i d_i + B_i */
-        out->d[i] = ic_interval_add(ic_interval_mul((ic_interval){2 * A[i], 2 * A[i]}, d[i]),
-                                    (ic_interval){B[i], B[i]});
 }

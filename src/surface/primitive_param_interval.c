@@ -2,8 +2,9 @@
  * Interval enclosures of the parametric primitives and of their first
  * derivatives over a (u, v) box: the same formulas as their jets
  * (primitive.c) in interval arithmetic, each component a sum of products of
- * cos/sin/identity enclosures, so a parametric primitive is searched with
- * proofs like a formula surface (docs/tracing.md, "Completeness").
+ * cos/sin/identity enclosures (rotated to space when placed), so a
+ * parametric primitive is searched with proofs like a formula surface
+ * (docs/tracing.md, "Completeness").
  */
 #include "surface_internal.h"
 
@@ -46,6 +47,20 @@ static void torus(ic_interval_grad *o, double R, double r, ic_interval cu, ic_in
     set(&o[2], scaled(r, sv), cst(0), scaled(r, cv));
 }
 
+/* A placed primitive: the local (x, y, z) and their (u, v) derivatives
+ * rotated to space, R - center = Q R_local. */
+static void to_space(const double frame[3][3], ic_interval_grad *o)
+{
+    for (int d = -1; d < 2; d++) { /* the value, then d/du and d/dv */
+        ic_interval v[3];
+        for (int k = 0; k < 3; k++)
+            v[k] = d < 0 ? o[k].v : o[k].d[d];
+        ic_placement_interval_to_space(frame, v);
+        for (int k = 0; k < 3; k++)
+            *(d < 0 ? &o[k].v : &o[k].d[d]) = v[k];
+    }
+}
+
 void ic_primitive_param_interval_grad(const ic_surface *s, ic_interval_grad *o,
                                       const ic_interval *in)
 {
@@ -83,6 +98,8 @@ void ic_primitive_param_interval_grad(const ic_surface *s, ic_interval_grad *o,
         torus(o, p->major_radius, p->radius, cu, su, cv, sv);
         break;
     }
+    if (s->placed)
+        to_space(s->frame, o);
     for (int k = 0; k < 3; k++)
         o[k].v = add(o[k].v, cst(p->center[k]));
 }

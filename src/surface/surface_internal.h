@@ -18,6 +18,8 @@ struct ic_surface {
     ic_nurbs_patch *nurbs;         /* NURBS patch */
     int knot_side[2];              /* NURBS: -1, +1 a piece forced on knot lines; 0 by heading */
     double plane_frame[3][3];      /* plane: e1, e2, unit normal */
+    int placed;                    /* primitive not in standard position: uses frame */
+    double frame[3][3];            /* placed primitive: rows e1, e2, e3 (placement.c) */
     double domain[2][2];
     int periodic[2];
     /* Spaces of the surface's own inputs (2 or 3 variables), by order,
@@ -47,7 +49,12 @@ ic_status ic_primitive_taylor(ic_surface *s, double *out, const double *at,
 ic_status ic_primitive_compose(ic_surface *s, double *out, const double *const *in,
                                const ic_jet_space *sp, ic_error *err);
 
-/* An implicit primitive over a box (interval arithmetic, outward rounded). */
+/* The implicit primitives other than the torus, in local coordinates d:
+ * f = sum_i A_i d_i^2 + B_i d_i + C (zeros for the torus). */
+void ic_primitive_quadric_coefficients(const ic_primitive *p, double A[3], double B[3], double *C);
+
+/* An implicit primitive over a box (interval arithmetic, outward rounded;
+ * primitive_implicit_interval.c). */
 ic_status ic_primitive_interval(ic_surface *s, ic_interval *out, const ic_interval *in,
                                 ic_error *err);
 /* The same with the gradient of f (out->d[0..2]). */
@@ -56,5 +63,17 @@ void ic_primitive_interval_grad(ic_surface *s, ic_interval_grad *out, const ic_i
  * box `in` (primitive_param_interval.c). */
 void ic_primitive_param_interval_grad(const ic_surface *s, ic_interval_grad *out,
                                       const ic_interval *in);
+
+/* Placement of a primitive (placement.c): frame rows e1, e2, e3; local
+ * coordinates L and space x are related by x = center + sum_j L_j e_j. */
+/* Rotates 3 consecutive jets of length n (x, y, z) in place from local
+ * coordinates to space: out_k = sum_j e_j[k] in_j. */
+void ic_placement_jets_to_space(const double frame[3][3], double *xyz, int n);
+/* Rotates 3 jets in place from space to local coordinates: L_j = e_j . d. */
+void ic_placement_jets_to_local(const double frame[3][3], double *const d[3], int n);
+/* The same on intervals, outward rounded: a box of space offsets to an
+ * enclosure of its local coordinates, and a local vector to space. */
+void ic_placement_interval_to_local(const double frame[3][3], ic_interval d[3]);
+void ic_placement_interval_to_space(const double frame[3][3], ic_interval v[3]);
 
 #endif

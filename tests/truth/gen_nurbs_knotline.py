@@ -149,8 +149,8 @@ def curvature_exact(P, uu, vv, forms):
     return sp.sqrt(cr.dot(cr)) / n1**3, g1 / n1, vals
 
 
-def root_v(P, uu, near):
-    """The root v in [0, 1] of x(uu, v) = c (exact algebraic), nearest to near."""
+def root_v(P, uu):
+    """The root v in [0, 1] of x(uu, v) = c (exact algebraic; it is unique)."""
     poly = sp.Poly(sp.expand(P[0].subs(u, uu) - PLANE_C), v)
     roots = [r for r in sp.real_roots(poly) if 0 <= r <= 1]
     assert len(roots) == 1, (uu, roots)
@@ -255,7 +255,8 @@ def main():
     # C^1 but not C^2 across the knot line
     for c in range(3):
         for a in range(2):
-            assert sp.expand((sp.diff(P1[-1][c], u, a) - sp.diff(P1[1][c], u, a)).subs(u, KNOT)) == 0
+            gap = (sp.diff(P1[-1][c], u, a) - sp.diff(P1[1][c], u, a)).subs(u, KNOT)
+            assert sp.expand(gap) == 0
     jump = [sp.expand((sp.diff(P1[-1][c], u, 2) - sp.diff(P1[1][c], u, 2)).subs(u, KNOT))
             for c in range(3)]
     assert any(j != 0 for j in jump)
@@ -268,7 +269,7 @@ def main():
     L = length(P1)
     lines.append("length 0 %s" % mp.nstr(L, DIGITS))
     for uu, side in ((R(0), -1), (R(1), 1)):
-        vv = root_v(P1[side], uu, None)
+        vv = root_v(P1[side], uu)
         lines.append("end_point %s %s %s" % (fmt(uu), fmt(vv),
                                              " ".join(fmt(e.subs({u: uu, v: vv}))
                                                       for e in P1[side])))
@@ -277,7 +278,7 @@ def main():
     cases.sort(key=lambda c: (c[0], c[1]))
     for uu, side in cases:
         P = P1[side]
-        vv = root_v(P, uu, None)
+        vv = root_v(P, uu)
         Fv = sp.diff(P[0], v).subs({u: uu, v: vv})
         assert sp.N(Fv) > 0.1, (uu, Fv)  # the curve is a graph over u
         kappa, tangent, _ = curvature_exact(P, uu, vv, forms)

@@ -42,9 +42,18 @@ sphere, 4 of the cylinder and the cone, 16 of the torus). It also checks
 exactly where the landmarks named below are: the torus's v = 1/2 is its outer
 equator, v = 0 its inner one; the contact point is at (u, v) = (3/4, 1/2)
 of the axis-x sphere; Viviani's branch point (1, 0, 0) is at (0, 1/2) on the
-axis-z unit sphere and at (1/4, 1/2) on the axis-y one. The JSON holds the doubles nearest to the exact
-values (Python repr, which reads back to the same double), so the C forms
-lie on the quadrics to rounding (about 1e-16).
+axis-z unit sphere and at (1/4, 1/2) on the axis-y one; the axis-z sphere's
+edge v = 0 is its south pole.
+
+The JSON holds the doubles nearest to the exact values, each written as
+Python's repr (at most 17 significant digits, the shortest text that reads
+back to the same double: 0.7071067811865476 for sqrt(2)/2, 0.5 for its
+square), so the C forms lie on the quadrics to rounding (about 1e-16).
+Surface fragments: surface-NAME.json (NURBS) and surface-NAME-implicit.json
+(the same quadric as {"type": "implicit", "f": ...}), NAME one of sphere
+(axis z), sphere-axis-x, unit-sphere (axis z), unit-sphere-axis-y, cylinder,
+cone, torus. Problems: problem-NAME.json, NAME one of the cases below (the
+NURBS surface first, the implicit one second).
 
 Closed-form truth (derivations):
   sphere-plane-circle: sphere |p - c| = 1.5, c = (0.2, -0.1, 0.3), and the

@@ -71,7 +71,6 @@ derivatives have 30 significant digits (an exact 0 is printed "0").
 
 Run:  python3 tests/truth/gen_nurbs_derivs.py   (about a minute)
 """
-import itertools
 import math
 import os
 import sys

@@ -1,0 +1,366 @@
+/* NURBS surfaces traced against closed-form truth:
+ *  - the exact rational NURBS forms of the sphere, cylinder, cone and torus
+ *    in eight problems (tests/truth/nurbs_quadrics_truth.txt, made with the
+ *    problem files by gen_nurbs_quadrics.py, the forms checked exactly on
+ *    their quadrics): curve counts, lengths, constant curvature and torsion
+ *    all along the curves, branch and contact points, and kappa, tau at
+ *    chosen points of every branch;
+ *  - a bicubic patch with a C^1 knot line crossed by a plane
+ *    (nurbs_knotline_truth.txt, gen_nurbs_knotline.py): the length, a point
+ *    on the knot line with the curvature of the side the curve goes into,
+ *    one-sided curvatures by the point analysis. */
+#include "harness.h"
+
+#include <string.h>
+
+#include "traced_example.h"
+
+/* relative: lengths of curves that avoid the parametric poles (measured
+ * worst 4e-14): the issue's bound, 1e-12 */
+#define LENGTH_TOL 1e-12
+/* relative: a curve through a sphere's poles, where the parametrisation is
+ * degenerate (measured 1.8e-12; the same sphere as formulas: 1.3e-11): the
+ * tracers' documented arc-length tier */
+#define LENGTH_POLES_TOL TIER_LENGTH
+/* relative to max(1, |value|): curvature and torsion along the traced
+ * curves and at chosen points (measured worst 1.3e-15, printed at the end);
+ * the issue asks 1e-10, the point analysis is held to 1e-12 elsewhere */
+#define APPARATUS_TOL 1e-12
+/* length: a contact located at a regular point of both surfaces */
+#define CONTACT_TOL TIER_LOCATED
+/* length: a contact at a sphere's pole, which the parametrisation does not
+ * resolve (both the NURBS and the formula sphere leave 1.1e-8, approximate) */
+#define CONTACT_POLE_TOL 1e-7
+
+static char source_dir[400];
+/* the largest relative curvature or torsion error seen, for the record */
+static double worst_apparatus;
+
+static int trace_named(traced *t, const char *file)
+{
+    char path[600];
+    snprintf(path, sizeof path, "%s/tests/data/nurbs/%s", source_dir, file);
+    return trace_file(t, path);
+}
+
+static double dist3(const double *a, const double *b)
+{
+    return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+/* The curve (not yet matched) whose length is nearest L. */
+static int match_curve(const ic_trace_result *res, double L, const int *used)
+{
+    int best = -1;
+    for (int i = 0; i < ic_trace_result_num_curves(res); i++)
+        if (!used[i] && (best < 0 || fabs(ic_trace_result_curve(res, i)->length - L) <
+                                         fabs(ic_trace_result_curve(res, best)->length - L)))
+            best = i;
+    return best;
+}
+
+/* Every point of the curve has curvature K (and torsion T where the frame
+ * is defined); with a centre, every point lies at 1/K from it. */
+static void check_constant(const ic_trace_curve *c, const char *name, double K, double T,
+                           const double *centre)
+{
+    double worst = 0;
+    for (int i = 0; i < c->npoints; i++) {
+        const ic_trace_point *p = &c->points[i];
+        worst = fmax(worst, fabs(p->kappa - K) / fmax(1, K));
+        if (p->frame_defined)
+            worst = fmax(worst, fabs(p->tau - T) / fmax(1, fabs(T)));
+        if (centre)
+            worst = fmax(worst, fabs(dist3(p->xyz, centre) - 1 / K) / fmax(1, 1 / K));
+    }
+    worst_apparatus = fmax(worst_apparatus, worst);
+    CHECK(worst <= APPARATUS_TOL, "%s: kappa %g, tau %g along the curve: worst relative %g", name,
+          K, T, worst);
+}
+
+/* The branch through the located point with tangent +-t: kappa and tau.
+ * At a pole of a sphere's parametrisation (`at_pole`) no apparatus exists
+ * from that sheet: the analysis must say the surface is singular there. */
+static void check_at(ic_pair *pair, const char *name, const double v[8], int at_pole)
+{
+    ic_local_options opt;
+    ic_local_defaults(&opt);
+    ic_local_point pt;
+    ic_local_result res;
+    ic_error err;
+    if (at_pole) {
+        const int refused = ic_local_locate(pair, &pt, v, &opt, &err) != IC_OK ||
+                            ic_local_apparatus(pair, &res, &pt, 4, IC_METHOD_AUTO, &opt, &err) !=
+                                IC_OK;
+        CHECK(refused && strstr(err.message, "singular"),
+              "%s at the pole (%g, %g, %g): the degenerate parametrisation is reported", name,
+              v[0], v[1], v[2]);
+        return;
+    }
+    if (!REQUIRE(ic_local_locate(pair, &pt, v, &opt, &err) == IC_OK &&
+                     ic_local_apparatus(pair, &res, &pt, 4, IC_METHOD_AUTO, &opt, &err) == IC_OK,
+                 "%s at (%g, %g, %g): %s", name, v[0], v[1], v[2], err.message))
+        return;
+    int found = 0;
+    for (int b = 0; b < res.nbranches && !found; b++) {
+        const ic_branch *br = &res.branches[b];
+        const double along = fabs(br->t[0] * v[3] + br->t[1] * v[4] + br->t[2] * v[5]);
+        if (along < 1 - 1e-6)
+            continue;
+        found = 1;
+        const double sign = br->t[0] * v[3] + br->t[1] * v[4] + br->t[2] * v[5] > 0 ? 1 : -1;
+        worst_apparatus = fmax(worst_apparatus, fmax(fabs(br->kappa - v[6]) / fmax(1, v[6]),
+                                                     fabs(br->tau - v[7]) / fmax(1, fabs(v[7]))));
+        CHECK(fabs(br->kappa - v[6]) <= APPARATUS_TOL * fmax(1, v[6]),
+              "%s at (%g, %g, %g): kappa %.17g, want %.17g", name, v[0], v[1], v[2], br->kappa,
+              v[6]);
+        /* torsion does not change with the orientation of the branch */
+        CHECK(br->tau_defined && fabs(br->tau - v[7]) <= APPARATUS_TOL * fmax(1, fabs(v[7])),
+              "%s at (%g, %g, %g): tau %.17g, want %.17g (t sign %g)", name, v[0], v[1], v[2],
+              br->tau, v[7], sign);
+    }
+    CHECK(found, "%s at (%g, %g, %g): no branch along the truth's tangent", name, v[0], v[1], v[2]);
+}
+
+/* A special point of the kind within tol of x. */
+static void check_special(const ic_trace_result *res, const char *name, const char *kind,
+                          const double *x, double tol)
+{
+    const ic_point_type want =
+        strcmp(kind, "branch") == 0 ? IC_POINT_BRANCH : IC_POINT_ISOLATED_CONTACT;
+    int found = 0;
+    for (int i = 0; i < ic_trace_result_num_specials(res); i++) {
+        const ic_trace_special *s = ic_trace_result_special(res, i);
+        found |= s->type == want && dist3(s->xyz, x) <= tol;
+    }
+    CHECK(found, "%s: no %s point within %g of (%g, %g, %g)", name, kind, tol, x[0], x[1], x[2]);
+}
+
+typedef struct {
+    traced t;
+    char name[128];
+    int used[8];
+    double K[8], T[8], centre[8][3];
+    int has_K[8], has_T[8], has_centre[8], truth_of[8];
+} problem_check;
+
+/* The curve whose first point lies at distance r from centre (circles of
+ * equal length told apart by their centres). */
+static int match_centre(const ic_trace_result *res, const double *centre, double r)
+{
+    int best = -1;
+    double off = INFINITY;
+    for (int i = 0; i < ic_trace_result_num_curves(res); i++) {
+        const double d = fabs(dist3(ic_trace_result_curve(res, i)->points[0].xyz, centre) - r);
+        if (d < off)
+            off = d, best = i;
+    }
+    return best;
+}
+
+static void finish_problem(problem_check *pc)
+{
+    for (int i = 0; i < 8; i++) {
+        const int c = pc->has_centre[i] && pc->has_K[i]
+                          ? match_centre(pc->t.res, pc->centre[i], 1 / pc->K[i])
+                          : pc->truth_of[i] - 1;
+        if (c < 0 || !pc->has_K[i])
+            continue;
+        check_constant(ic_trace_result_curve(pc->t.res, c), pc->name, pc->K[i],
+                       pc->has_T[i] ? pc->T[i] : 0, pc->has_centre[i] ? pc->centre[i] : NULL);
+    }
+    release(&pc->t);
+}
+
+/* One line of a problem's truth. */
+static void truth_line(problem_check *pc, const char *line)
+{
+    const ic_trace_result *res = pc->t.res;
+    int i, n, flag;
+    double L, x[8];
+    char kind[16];
+    const int poles = strcmp(pc->name, "problem-viviani.json") == 0;
+    const int pole_contact = strcmp(pc->name, "problem-sphere-plane-contact.json") == 0;
+    if (sscanf(line, "curves %d", &n) == 1) {
+        CHECK(ic_trace_result_num_curves(res) == n && ic_trace_result_report(res)->complete,
+              "%s: %d curves (want %d), complete %d", pc->name, ic_trace_result_num_curves(res),
+              n, ic_trace_result_report(res)->complete);
+    } else if (sscanf(line, "length %d %lf", &i, &L) == 2 && i >= 0 && i < 8) {
+        const int c = match_curve(res, L, pc->used);
+        if (!REQUIRE(c >= 0, "%s: no curve for length %g", pc->name, L))
+            return;
+        pc->used[c] = 1;
+        pc->truth_of[i] = c + 1;
+        CHECK_CLOSE(ic_trace_result_curve(res, c)->length, L,
+                    poles ? LENGTH_POLES_TOL : LENGTH_TOL, pc->name);
+    } else if (sscanf(line, "closed %d %d", &i, &flag) == 2 && i >= 0 && i < 8 &&
+               pc->truth_of[i]) {
+        CHECK(ic_trace_result_curve(res, pc->truth_of[i] - 1)->closed == flag, "%s: closed",
+              pc->name);
+    } else if (sscanf(line, "tangential %d %d", &i, &flag) == 2 && i >= 0 && i < 8 &&
+               pc->truth_of[i]) {
+        CHECK(ic_trace_result_curve(res, pc->truth_of[i] - 1)->tangential == flag,
+              "%s: tangential", pc->name);
+    } else if (sscanf(line, "kappa %d %lf", &i, &L) == 2 && i >= 0 && i < 8) {
+        pc->K[i] = L, pc->has_K[i] = 1;
+    } else if (sscanf(line, "tau %d %lf", &i, &L) == 2 && i >= 0 && i < 8) {
+        pc->T[i] = L, pc->has_T[i] = 1;
+    } else if (sscanf(line, "centre %d %lf %lf %lf", &i, &x[0], &x[1], &x[2]) == 4 && i >= 0 &&
+               i < 8) {
+        memcpy(pc->centre[i], x, sizeof pc->centre[i]);
+        pc->has_centre[i] = 1;
+    } else if (sscanf(line, "point %15s %lf %lf %lf", kind, &x[0], &x[1], &x[2]) == 4) {
+        check_special(res, pc->name, kind, x, pole_contact ? CONTACT_POLE_TOL : CONTACT_TOL);
+    } else if (sscanf(line, "at %lf %lf %lf %lf %lf %lf %lf %lf", &x[0], &x[1], &x[2], &x[3],
+                      &x[4], &x[5], &x[6], &x[7]) == 8) {
+        check_at(pc->t.pair, pc->name, x, poles && fabs(fabs(x[2]) - 1) < 1e-12);
+    }
+}
+
+static void test_quadrics(void)
+{
+    char path[600], line[512];
+    snprintf(path, sizeof path, "%s/tests/truth/nurbs_quadrics_truth.txt", source_dir);
+    FILE *f = fopen(path, "r");
+    if (!REQUIRE(f, "cannot open %s", path))
+        return;
+    static problem_check pc;
+    int open = 0, problems = 0;
+    while (fgets(line, sizeof line, f)) {
+        if (strncmp(line, "problem ", 8) == 0) {
+            memset(&pc, 0, sizeof pc);
+            sscanf(line + 8, "%127s", pc.name);
+            open = trace_named(&pc.t, pc.name) == 0;
+            problems++;
+        } else if (strncmp(line, "end", 3) == 0 && open) {
+            finish_problem(&pc);
+            open = 0;
+        } else if (open) {
+            truth_line(&pc, line);
+        }
+    }
+    fclose(f);
+    CHECK(problems == 8, "%d problems in the truth file, want 8", problems);
+}
+
+/* The knot-line truth: the crossing and one-sided curvatures. */
+typedef struct {
+    double length, crossing[3], kappa_left, kappa_right;
+    double at[16][6]; /* u v x y z side ... kappa in [5] */
+    double kappa_at[16];
+    int nat;
+} knot_truth;
+
+static int read_knot_truth(knot_truth *k)
+{
+    char path[600], line[512];
+    snprintf(path, sizeof path, "%s/tests/truth/nurbs_knotline_truth.txt", source_dir);
+    FILE *f = fopen(path, "r");
+    if (!REQUIRE(f, "cannot open %s", path))
+        return 0;
+    memset(k, 0, sizeof *k);
+    double v[8];
+    int i;
+    while (fgets(line, sizeof line, f)) {
+        if (sscanf(line, "length %d %lf", &i, &v[0]) == 2)
+            k->length = v[0];
+        else if (sscanf(line, "crossing %lf %lf %lf %lf %lf", &v[0], &v[1], &v[2], &v[3],
+                        &v[4]) == 5)
+            memcpy(k->crossing, v + 2, sizeof k->crossing);
+        else if (sscanf(line, "kappa_at %lf %lf %lf %lf %lf %lf %lf", &v[0], &v[1], &v[2], &v[3],
+                        &v[4], &v[5], &v[6]) == 7 &&
+                 k->nat < 16) {
+            if (v[0] == 0.5)
+                *(v[5] < 0 ? &k->kappa_left : &k->kappa_right) = v[6];
+            memcpy(k->at[k->nat], v, sizeof k->at[0]);
+            k->kappa_at[k->nat++] = v[6];
+        }
+    }
+    fclose(f);
+    return REQUIRE(k->length > 0 && k->kappa_left > 0 && k->kappa_right > 0 && k->nat >= 8,
+                   "incomplete knot-line truth");
+}
+
+/* The traced curve's point on the knot line u = 1/2: at the crossing, with
+ * the curvature of the piece its apparatus is said to be of. */
+static void check_knot_point(const ic_trace_curve *c, const knot_truth *k)
+{
+    int found = 0;
+    for (int i = 0; i < c->npoints; i++) {
+        const ic_trace_point *p = &c->points[i];
+        if (!(p->knot_line & 1))
+            continue;
+        found++;
+        const int j = p->knot_side > 0 ? i + 1 : i - 1; /* a neighbour on that side */
+        if (!REQUIRE(j >= 0 && j < c->npoints, "the knot point is an end"))
+            continue;
+        const double want = c->points[j].params[0][0] > 0.5 ? k->kappa_right : k->kappa_left;
+        CHECK(p->params[0][0] == 0.5 && dist3(p->xyz, k->crossing) <= TIER_LOCATED,
+              "the knot point (%.17g, %.17g, %.17g), u = %.17g", p->xyz[0], p->xyz[1], p->xyz[2],
+              p->params[0][0]);
+        CHECK(fabs(p->kappa - want) <= APPARATUS_TOL * want,
+              "the knot point's kappa %.17g, want %.17g (the side it says)", p->kappa, want);
+        worst_apparatus = fmax(worst_apparatus, fabs(p->kappa - want) / want);
+    }
+    CHECK(found == 1, "%d points on the knot line, want 1", found);
+}
+
+/* The point analysis at the truth's points, each side of the knot forced
+ * where the point is on it. */
+static void check_knot_analysis(ic_pair *pair, const knot_truth *k)
+{
+    ic_local_options opt;
+    ic_local_defaults(&opt);
+    for (int a = 0; a < k->nat; a++) {
+        const double *v = k->at[a];
+        ic_local_point pt;
+        ic_local_result res;
+        ic_error err;
+        const int side[2] = {(int)v[5], 0};
+        ic_surface_set_knot_side(ic_pair_surface(pair, 0), side);
+        const int ok = ic_local_locate_params(pair, &pt, v, 2, &opt, &err) == IC_OK &&
+                       ic_local_apparatus(pair, &res, &pt, 4, IC_METHOD_AUTO, &opt, &err) == IC_OK;
+        ic_surface_set_knot_side(ic_pair_surface(pair, 0), NULL);
+        if (!REQUIRE(ok, "knot-line patch at u = %g: %s", v[0], err.message))
+            continue;
+        const double kappa = res.branches[0].kappa;
+        worst_apparatus = fmax(worst_apparatus, fabs(kappa - k->kappa_at[a]) / k->kappa_at[a]);
+        CHECK(fabs(kappa - k->kappa_at[a]) <= APPARATUS_TOL * k->kappa_at[a] &&
+                  fabs(res.branches[0].tau) <= APPARATUS_TOL,
+              "knot-line patch at u = %g (side %g): kappa %.17g tau %g, want %.17g, 0", v[0],
+              v[5], kappa, res.branches[0].tau, k->kappa_at[a]);
+    }
+}
+
+/* The plane written both ways round: its normal, and so the branch's
+ * tangent N_A x N_B, is reversed, so in one of the two the tracer meets
+ * the knot line marching against the tangent, where only the knot side it
+ * sets picks the piece the curve goes into. */
+static void test_knot_line(const char *file)
+{
+    knot_truth k;
+    traced t;
+    if (!read_knot_truth(&k) || trace_named(&t, file) != 0)
+        return;
+    const int n = ic_trace_result_num_curves(t.res);
+    if (REQUIRE(n == 1 && ic_trace_result_report(t.res)->complete, "%d curves", n)) {
+        const ic_trace_curve *c = ic_trace_result_curve(t.res, 0);
+        CHECK_CLOSE(c->length, k.length, LENGTH_TOL, "the arc across the knot line");
+        check_knot_point(c, &k);
+    }
+    check_knot_analysis(t.pair, &k);
+    release(&t);
+}
+
+int main(int argc, char **argv)
+{
+    if (!REQUIRE(argc > 1, "usage: test_nurbs_traces SOURCE_DIR"))
+        return harness_finish("nurbs_traces");
+    snprintf(source_dir, sizeof source_dir, "%s", argv[1]);
+    test_quadrics();
+    test_knot_line("problem-knotline-plane.json");
+    test_knot_line("problem-knotline-plane-reversed.json");
+    printf("largest relative curvature or torsion error: %.3g\n", worst_apparatus);
+    return harness_finish("nurbs_traces");
+}

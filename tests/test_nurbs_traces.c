@@ -353,12 +353,35 @@ static void test_knot_line(const char *file)
     release(&t);
 }
 
+/* Viviani's curve (length 4 sqrt(2) E(1/2), branch point (1, 0, 0); the
+ * truth of problem-viviani-axis-y.json) from the NURBS sphere with the
+ * cylinder as a NURBS (the pairing of two NURBS, the cylinder's seam through
+ * the branch point) and as formulas (tests/truth/gen_nurbs_pairings.py). */
+static void test_viviani_pairings(void)
+{
+    static const char *const files[] = {"problem-viviani-nurbs-nurbs.json",
+                                        "problem-viviani-nurbs-formula.json"};
+    const double L = 7.64039557805542403580952416434, branch[3] = {1, 0, 0};
+    for (int k = 0; k < 2; k++) {
+        traced t;
+        if (trace_named(&t, files[k]) != 0)
+            continue;
+        const int n = ic_trace_result_num_curves(t.res);
+        if (REQUIRE(n == 1 && ic_trace_result_report(t.res)->complete, "%s: %d curves, complete %d",
+                    files[k], n, ic_trace_result_report(t.res)->complete))
+            CHECK_CLOSE(ic_trace_result_curve(t.res, 0)->length, L, LENGTH_TOL, files[k]);
+        check_special(t.res, files[k], "branch", branch, CONTACT_TOL);
+        release(&t);
+    }
+}
+
 int main(int argc, char **argv)
 {
     if (!REQUIRE(argc > 1, "usage: test_nurbs_traces SOURCE_DIR"))
         return harness_finish("nurbs_traces");
     snprintf(source_dir, sizeof source_dir, "%s", argv[1]);
     test_quadrics();
+    test_viviani_pairings();
     test_knot_line("problem-knotline-plane.json");
     test_knot_line("problem-knotline-plane-reversed.json");
     printf("largest relative curvature or torsion error: %.3g\n", worst_apparatus);

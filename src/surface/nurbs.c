@@ -241,16 +241,14 @@ int ic_nurbs_knot_crossed(const ic_nurbs_patch *pt, int dir, double from, double
         return 0;
     const double d0 = pt->domain[dir][0], d1 = pt->domain[dir][1];
     const int up = to > from;
-    double a = ic_nurbs_wrap(pt, dir, from);
-    if (!up && pt->periodic[dir] && a == d0)
-        a = d1; /* the seam seen from below: its left side */
+    const double a = ic_nurbs_wrap(pt, dir, from);
     const double shift = from - a, b = to - shift;
     /* the nearest knot beyond a that way: the end of a's span that way */
     const int s = ic_nurbs_find_span(pt, dir, a, up ? IC_NURBS_RIGHT : IC_NURBS_LEFT);
     const double c = pt->knots[dir][up ? s + 1 : s];
     const int met = up ? c <= b : c >= b;
-    /* an interior knot, or the seam of a wrapping parameter */
-    if (!met || (!pt->periodic[dir] && !(c > d0 && c < d1)))
+    /* an interior knot (the seam of a wrapping parameter is not one) */
+    if (!met || !(c > d0 && c < d1))
         return 0;
     *knot = c + shift;
     return 1;

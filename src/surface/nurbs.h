@@ -54,7 +54,8 @@ double ic_nurbs_wrap(const ic_nurbs_patch *patch, int dir, double t);
 
 /* The first knot line of the patch met going from `from` to `to` along
  * dir (from itself excluded, to included): 1 and *knot, or 0. Knot lines
- * are the distinct interior knots, and the seam of a wrapping parameter. */
+ * are the distinct knots inside the domain (a wrapping parameter's seam is
+ * not one: parameters jump there). from and to on one side of the seam. */
 int ic_nurbs_knot_crossed(const ic_nurbs_patch *patch, int dir, double from, double to,
                           double *knot);
 

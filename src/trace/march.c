@@ -538,8 +538,12 @@ static int crosses_knot_line(const ic_tracer *tr, const ic_local_point *next, bo
     for (int s = 0; s < 2; s++)
         for (int i = 0; tr->par[s] && i < 2; i++) {
             const double a = tr->cur.params[s][i], z = next->params[s][i];
+            const double *d = tr->domain[s][i];
             double knot;
-            if (!ic_surface_knot_crossed(ic_pair_surface(tr->pair, s), i, a, z, &knot) ||
+            /* a step across a periodic seam has its parameter wrapped: the
+             * knots between its ends in the domain are not the ones it met */
+            if ((tr->periodic[s][i] && fabs(z - a) > 0.5 * (d[1] - d[0])) ||
+                !ic_surface_knot_crossed(ic_pair_surface(tr->pair, s), i, a, z, &knot) ||
                 fabs(knot - a) <= knot_snap(tr, s, i))
                 continue;
             const double f = (knot - a) / (z - a); /* how far along the step */

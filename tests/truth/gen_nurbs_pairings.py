@@ -13,7 +13,12 @@ The curve is Viviani's, of length 4 sqrt(2) E(1/2) = 7.6403955780554240358095241
 (tests/truth/nurbs_quadrics_truth.txt, problem-viviani-axis-y.json), with its
 branch point at (1, 0, 0).
 
-Run: python3 tests/truth/gen_nurbs_pairings.py  (writes the two problem files)
+It also writes the knot-line patch of gen_nurbs_knotline.py as NURBS-Python
+(geomdl) writes it, geomdl-knotline.json (points flattened with v fastest,
+weights alongside), and problem-geomdl-knotline.json, the knot-line problem
+reading it: its truth is that of problem-knotline-plane.json.
+
+Run: python3 tests/truth/gen_nurbs_pairings.py  (writes the four files)
 """
 import json
 import os
@@ -46,8 +51,25 @@ def main():
                                      "xyz": ["0.5 + 0.5*cos(u)", "0.5*sin(u)", "v"],
                                      "domain": [[0, "2*pi"], [-2, 2]],
                                      "periodic": [True, False]}]}
+    patch = load("surface-knotline.json")
+    geomdl = {"shape": {"type": "surface", "count": 1, "data": [{
+        "type": "spline", "rational": "weights" in patch, "dimension": 3,
+        "degree_u": patch["degree"][0], "degree_v": patch["degree"][1],
+        "knotvector_u": patch["knots"][0], "knotvector_v": patch["knots"][1],
+        "size_u": len(patch["control_points"]), "size_v": len(patch["control_points"][0]),
+        "control_points": {"points": [p for row in patch["control_points"] for p in row]},
+        "delta": 0.05}]}}
+    if "weights" in patch:
+        geomdl["shape"]["data"][0]["control_points"]["weights"] = [
+            w for row in patch["weights"] for w in row]
+    knot_problem = load("problem-knotline-plane.json")
+    knot_problem["title"] = "The knot-line patch read from a geomdl file, and the plane x = 0.75"
+    knot_problem["surfaces"][0] = {"name": "knotline", "type": "geomdl",
+                                   "file": "geomdl-knotline.json"}
     for name, doc in (("problem-viviani-nurbs-nurbs.json", both),
-                      ("problem-viviani-nurbs-formula.json", formula)):
+                      ("problem-viviani-nurbs-formula.json", formula),
+                      ("geomdl-knotline.json", geomdl),
+                      ("problem-geomdl-knotline.json", knot_problem)):
         with open(os.path.join(DATA, name), "w") as f:
             json.dump(doc, f)
             f.write("\n")

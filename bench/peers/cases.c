@@ -1,9 +1,11 @@
-/* The five cases (issue 12, item 6), all in the standard placement a CAD
- * kernel gives by default: axes along z (or x, y), seams on the reference
- * direction. So Viviani's curve passes through both poles of the sphere's
+/* The five cases (issue 12, item 6) and a variant of the last, all in the
+ * standard placement a CAD kernel gives by default: axes along z (or x, y),
+ * seams on the reference direction. So Viviani's curve passes through both poles of the sphere's
  * net and its branch point lies on both seams, the tangential circle of
  * case 4 on the torus' tube seam, and the contact point of case 5 at the
- * sphere's pole: what a CAD file would hold (docs/peers.md). */
+ * sphere's pole: what a CAD file would hold (docs/peers.md). The sixth case
+ * turns the sphere of the fifth so that its contact point is a regular point
+ * of the net. */
 #include <math.h>
 #include <string.h>
 
@@ -95,6 +97,16 @@ int bench_cases_build(bench_case cases[BENCH_NUM_CASES])
     c->name = "sphere-touch";
     c->title = "sphere r = 1 centred (0, 0, 1) on the plane z = 0: one contact point";
     c->A = sphere(1, 1), c->B = plane_z(0);
+    c->truth = TRUTH_NONE, c->expect_points = 1;
+    c++;
+
+    /* case 5 again with the sphere's poles on the x axis: the contact point
+     * is then a regular point of the net, not its degenerate pole */
+    c->name = "sphere-touch-x";
+    c->title = "as sphere-touch, the sphere's net turned: pole axis x, contact off the poles";
+    c->A = placed(EXACT_SPHERE, 0, 0, 1, X, Y);
+    c->A.radius = 1;
+    c->B = plane_z(0);
     c->truth = TRUTH_NONE, c->expect_points = 1;
     c++;
 

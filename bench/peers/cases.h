@@ -57,7 +57,7 @@ typedef struct {
     double expect_point[3];           /* the isolated point, if any */
 } bench_case;
 
-#define BENCH_NUM_CASES 5
+#define BENCH_NUM_CASES 6
 
 /* Fills the cases (nets built from the exact surfaces); returns how many. */
 int bench_cases_build(bench_case cases[BENCH_NUM_CASES]);
@@ -72,10 +72,16 @@ int truth_num_curves(const bench_case *c);
 double truth_period(const bench_case *c);
 void truth_derivs(const bench_case *c, int k, double t, double d[4][3]);
 
-/* Nearest point of the exact curves to p: its distance and the curvature and
- * torsion there (closed forms). Returns -1 when the case has no curve. */
-int truth_nearest(const bench_case *c, const double p[3], double *dist, double *kappa,
-                  double *tau);
+/* nearest points of the exact curves this close (length units) to the
+ * nearest are ties: at a crossing the sample may belong to either branch */
+#define TRUTH_TIE 1e-12
+#define TRUTH_MAX_TIES 4
+
+/* Distance of p from the exact curves, and the curvature and torsion (closed
+ * forms) at the nearest point and at every tie. Returns how many (0: the
+ * case has no curve). */
+int truth_nearest(const bench_case *c, const double p[3], double *dist,
+                  double kappa[TRUTH_MAX_TIES], double tau[TRUTH_MAX_TIES]);
 
 /* Curvature and torsion from the first three derivatives of a space curve in
  * any parametrisation; *has_tau = 0 where c' x c'' vanishes (no binormal). */

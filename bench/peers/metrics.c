@@ -17,16 +17,23 @@ static void score_samples(const bench_case *c, const peer_output *out, peer_summ
     for (int i = 0; i < out->nsamples; i++) {
         const peer_sample *s = out->samples + i;
         sum->max_surface_dist = fmax(sum->max_surface_dist, surface_dist(c, s->xyz));
-        double dist, kappa, tau;
-        if (truth_nearest(c, s->xyz, &dist, &kappa, &tau) != 0)
+        double dist, kappa[TRUTH_MAX_TIES], tau[TRUTH_MAX_TIES];
+        const int ties = truth_nearest(c, s->xyz, &dist, kappa, tau);
+        if (ties == 0)
             continue; /* curves where there are none: seen in the counts and distances */
         sum->max_curve_dist = fmax(sum->max_curve_dist, dist);
+        /* at a crossing, the branch that fits best */
+        double kappa_err = INFINITY, tau_err = INFINITY;
+        for (int t = 0; t < ties; t++) {
+            kappa_err = fmin(kappa_err, fabs(s->kappa - kappa[t]));
+            tau_err = fmin(tau_err, fabs(s->tau - tau[t]));
+        }
         if (s->has_kappa) {
-            sum->max_kappa_err = fmax(sum->max_kappa_err, fabs(s->kappa - kappa));
+            sum->max_kappa_err = fmax(sum->max_kappa_err, kappa_err);
             sum->kappa_count++;
         }
         if (s->has_tau) {
-            sum->max_tau_err = fmax(sum->max_tau_err, fabs(s->tau - tau));
+            sum->max_tau_err = fmax(sum->max_tau_err, tau_err);
             sum->tau_count++;
         }
     }
@@ -59,5 +66,6 @@ void peer_summarize(const bench_case *c, const peer_output *out, peer_summary *s
     sum->kappa_count = sum->tau_count = 0;
     score_samples(c, out, sum);
     score_points(c, out, sum);
+    sum->stationary = out->stationary;
     memcpy(sum->note, out->note, sizeof sum->note);
 }

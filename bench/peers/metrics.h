@@ -23,6 +23,7 @@ typedef struct {
     double max_kappa_err;    /* largest |kappa - exact| over samples with a curvature */
     double max_tau_err;      /* largest |tau - exact| over samples with a torsion */
     int kappa_count, tau_count;
+    int stationary; /* samples without curvature: the parametrisation stands still */
     double point_err; /* distance of the nearest isolated point found from the exact one */
     char note[200];
 } peer_summary;

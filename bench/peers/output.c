@@ -1,4 +1,5 @@
 /* peer_output: the samples an engine found, grown as it adds them. */
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -31,6 +32,20 @@ int peer_output_add(peer_output *out, const double xyz[3], double kappa, double 
     memcpy(s->xyz, xyz, sizeof s->xyz);
     s->kappa = kappa, s->tau = tau, s->has_kappa = has_kappa, s->has_tau = has_tau;
     return 0;
+}
+
+int peer_output_add_derivs(peer_output *out, const double xyz[3], const double d[3][3],
+                           double mean_speed)
+{
+    const double speed = sqrt(d[0][0] * d[0][0] + d[0][1] * d[0][1] + d[0][2] * d[0][2]);
+    if (!(speed > PEER_STATIONARY_SPEED * mean_speed)) {
+        out->stationary++;
+        return peer_output_add(out, xyz, 0.0, 0.0, 0, 0);
+    }
+    double kappa, tau;
+    int has_tau;
+    frenet_from_derivs(d[0], d[1], d[2], &kappa, &tau, &has_tau);
+    return peer_output_add(out, xyz, kappa, tau, 1, has_tau);
 }
 
 void peer_output_note(peer_output *out, const char *fmt, ...)

@@ -1,6 +1,7 @@
 /* intercurve on a case: the two nets as NURBS surfaces (ic_surface_new_nurbs),
  * the whole intersection traced with the default options (ic_trace), its
  * own curvature and torsion at every traced point. */
+#include <stdio.h>
 #include <time.h>
 
 #include "intercurve.h"
@@ -54,7 +55,9 @@ static int collect(const ic_trace_result *res, peer_output *out)
     const ic_trace_report *rep = ic_trace_result_report(res);
     peer_output_note(out, "complete=%d", rep->complete);
     if (rep->nfailures > 0)
-        peer_output_note(out, " (%d undecided: %.80s)", rep->nfailures, rep->failures[0]);
+        peer_output_note(out, " (%d undecided regions, listed on stderr)", rep->nfailures);
+    for (int i = 0; i < rep->nfailures; i++)
+        fprintf(stderr, "intercurve: undecided: %s\n", rep->failures[i]);
     return 0;
 }
 

@@ -22,6 +22,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
+#include <string>
 #include <vector>
 
 #include "peers.h"
@@ -100,32 +102,33 @@ int sample_curve(const Handle(Geom_Curve) &cv, peer_output *out)
         peer_output_note(out, "an unbounded curve; ");
         return 0;
     }
+    const double length = GCPnts_AbscissaPoint::Length(GeomAdaptor_Curve(cv));
+    out->length += length;
     for (int i = 0; i <= samples_per_curve; i++) {
         gp_Pnt p;
         gp_Vec d1, d2, d3;
         cv->D3(t0 + (t1 - t0) * i / samples_per_curve, p, d1, d2, d3);
         const double xyz[3] = {p.X(), p.Y(), p.Z()};
-        const double v1[3] = {d1.X(), d1.Y(), d1.Z()}, v2[3] = {d2.X(), d2.Y(), d2.Z()},
-                     v3[3] = {d3.X(), d3.Y(), d3.Z()};
-        double kappa, tau;
-        int has_tau;
-        frenet_from_derivs(v1, v2, v3, &kappa, &tau, &has_tau);
-        if (peer_output_add(out, xyz, kappa, tau, 1, has_tau) != 0)
+        const double d[3][3] = {{d1.X(), d1.Y(), d1.Z()}, {d2.X(), d2.Y(), d2.Z()},
+                                {d3.X(), d3.Y(), d3.Z()}};
+        if (peer_output_add_derivs(out, xyz, d, length / (t1 - t0)) != 0)
             return -1;
     }
-    out->length += GCPnts_AbscissaPoint::Length(GeomAdaptor_Curve(cv));
     return 0;
 }
 
 int collect(const GeomInt_IntSS &inter, peer_output *out)
 {
     out->ncurves = inter.NbLines();
+    std::map<std::string, int> kinds; // curve types returned, for the note
     for (int i = 1; i <= inter.NbLines(); i++) {
         const Handle(Geom_Curve) &cv = inter.Line(i);
-        peer_output_note(out, "%s; ", cv->DynamicType()->Name());
+        kinds[cv->DynamicType()->Name()]++;
         if (sample_curve(cv, out) != 0)
             return -1;
     }
+    for (const auto &kind : kinds)
+        peer_output_note(out, "%d %s; ", kind.second, kind.first.c_str());
     out->npoints = inter.NbPoints();
     for (int i = 1; i <= inter.NbPoints() && i <= PEER_MAX_POINTS; i++) {
         const gp_Pnt p = inter.Point(i);

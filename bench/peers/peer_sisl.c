@@ -73,20 +73,19 @@ static int sample_curve(SISLCurve *cv, peer_output *out)
 {
     const double t0 = cv->et[cv->ik - 1], t1 = cv->et[cv->in];
     int left = 0, stat = 0;
+    double len = 0.0;
+    s1240(cv, SISL_GEOMETRY_TOL, &len, &stat);
+    out->length += len;
     for (int i = 0; i <= SISL_SAMPLES_PER_CURVE; i++) {
         double der[12];
         s1221(cv, 3, t0 + (t1 - t0) * i / SISL_SAMPLES_PER_CURVE, &left, der, &stat);
         if (stat < 0)
             return -1;
-        double kappa, tau;
-        int has_tau;
-        frenet_from_derivs(der + 3, der + 6, der + 9, &kappa, &tau, &has_tau);
-        if (peer_output_add(out, der, kappa, tau, 1, has_tau) != 0)
+        const double d[3][3] = {{der[3], der[4], der[5]}, {der[6], der[7], der[8]},
+                                {der[9], der[10], der[11]}};
+        if (peer_output_add_derivs(out, der, d, len / (t1 - t0)) != 0)
             return -1;
     }
-    double len = 0.0;
-    s1240(cv, SISL_GEOMETRY_TOL, &len, &stat);
-    out->length += len;
     return 0;
 }
 

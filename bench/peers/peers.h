@@ -29,6 +29,7 @@ typedef struct {
     double length;                     /* total length of the curves */
     peer_sample *samples;              /* along every curve, owned */
     int nsamples, cap;
+    int stationary; /* samples where the curve's parametrisation stands still */
     int failed;     /* 1: the engine reported an error (note says which) */
     char note[200]; /* what the engine said beyond the counts */
 } peer_output;
@@ -38,6 +39,15 @@ void peer_output_free(peer_output *out);
 /* Appends a sample; returns 0, or -1 when out of memory. */
 int peer_output_add(peer_output *out, const double xyz[3], double kappa, double tau,
                     int has_kappa, int has_tau);
+/* A fraction of the mean speed of the parametrisation below which a curve
+ * counts as standing still: no curvature or torsion there. */
+#define PEER_STATIONARY_SPEED 1e-6
+
+/* Appends a sample of a parametrised curve from its first three derivatives
+ * d[0..2]: curvature and torsion by frenet_from_derivs, none where the speed
+ * is at most PEER_STATIONARY_SPEED * mean_speed (counted in out->stationary). */
+int peer_output_add_derivs(peer_output *out, const double xyz[3], const double d[3][3],
+                           double mean_speed);
 void peer_output_note(peer_output *out, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));
 

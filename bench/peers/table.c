@@ -44,7 +44,7 @@ void table_net_check(FILE *f, const bench_case *c, double devA, double devB)
 void table_start(FILE *f)
 {
     fprintf(f, "\n| case | engine | status | curves | points | length error | time (s) | "
-               "distance to surfaces | distance to curve | kappa error | tau error | notes |\n");
+               "distance to surfaces | distance to curve (point) | kappa error | tau error | notes |\n");
     fprintf(f, "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
 }
 
@@ -90,7 +90,10 @@ void table_row(FILE *f, const bench_case *c, const char *engine, const peer_summ
     else
         fprintf(f, " - |");
     cell(f, ran && s->nsamples + s->npoints > 0, s->max_surface_dist);
-    cell(f, ran && s->nsamples > 0 && c->expect_curves > 0, s->max_curve_dist);
+    if (c->expect_curves > 0)
+        cell(f, ran && s->nsamples > 0, s->max_curve_dist);
+    else /* the isolated point found nearest to the exact one */
+        cell(f, ran && s->npoints > 0, s->point_err);
     cell(f, ran && s->kappa_count > 0, s->max_kappa_err);
     cell(f, ran && s->tau_count > 0, s->max_tau_err);
     char note[sizeof s->note];
@@ -98,5 +101,8 @@ void table_row(FILE *f, const bench_case *c, const char *engine, const peer_summ
     for (char *p = note; *p; p++)
         if (*p == '|' || *p == '\n')
             *p = ' ';
+    if (s->stationary > 0)
+        fprintf(f, " %d samples where the parametrisation stands still (no kappa there);",
+                s->stationary);
     fprintf(f, " %s |\n", note);
 }

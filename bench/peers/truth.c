@@ -116,7 +116,7 @@ static double distance_at(const bench_case *c, int k, double t, const double p[3
     return sqrt(dot3(q, q));
 }
 
-/* Newton on g(t) = (c(t) - p) . c'(t), from the best sample. */
+/* Newton on g(t) = (c(t) - p) . c'(t), from a sample. */
 static double polish(const bench_case *c, int k, double t, const double p[3])
 {
     for (int it = 0; it < NEAREST_NEWTON_STEPS; it++) {
@@ -131,29 +131,56 @@ static double polish(const bench_case *c, int k, double t, const double p[3])
     return t;
 }
 
-int truth_nearest(const bench_case *c, const double p[3], double *dist, double *kappa,
-                  double *tau)
+/* A local minimum of the sampled distance at sample i (cyclic). */
+static int local_minimum(const double *dist, int i)
+{
+    const int prev = (i + NEAREST_SAMPLES - 1) % NEAREST_SAMPLES, next = (i + 1) % NEAREST_SAMPLES;
+    return dist[i] <= dist[prev] && dist[i] <= dist[next];
+}
+
+int truth_nearest(const bench_case *c, const double p[3], double *dist,
+                  double kappa[TRUTH_MAX_TIES], double tau[TRUTH_MAX_TIES])
 {
     const int n = truth_num_curves(c);
     if (n == 0)
-        return -1;
-    double best = INFINITY, best_t = 0.0;
-    int best_k = 0;
+        return 0;
+    /* every local minimum polished: near a crossing the best sample may sit on
+     * the other branch */
+    double found_t[2 * TRUTH_MAX_TIES], found_d[2 * TRUTH_MAX_TIES], sampled[NEAREST_SAMPLES];
+    int found_k[2 * TRUTH_MAX_TIES], nfound = 0;
     const double period = truth_period(c);
-    for (int k = 0; k < n; k++)
+    for (int k = 0; k < n; k++) {
+        for (int i = 0; i < NEAREST_SAMPLES; i++)
+            sampled[i] = distance_at(c, k, period * i / NEAREST_SAMPLES, p);
         for (int i = 0; i < NEAREST_SAMPLES; i++) {
-            const double t = period * i / NEAREST_SAMPLES, dist_t = distance_at(c, k, t, p);
-            if (dist_t < best)
-                best = dist_t, best_t = t, best_k = k;
+            if (!local_minimum(sampled, i))
+                continue;
+            const double t = polish(c, k, period * i / NEAREST_SAMPLES, p);
+            const double d = fmin(distance_at(c, k, t, p), sampled[i]);
+            const double t_best = d < sampled[i] ? t : period * i / NEAREST_SAMPLES;
+            /* keep the 2 * TRUTH_MAX_TIES nearest */
+            int slot = nfound < 2 * TRUTH_MAX_TIES ? nfound++ : -1;
+            if (slot < 0)
+                for (int j = 0; j < nfound; j++)
+                    if (found_d[j] > d && (slot < 0 || found_d[j] > found_d[slot]))
+                        slot = j;
+            if (slot >= 0)
+                found_t[slot] = t_best, found_d[slot] = d, found_k[slot] = k;
         }
-    const double t = polish(c, best_k, best_t, p);
-    const double dist_t = distance_at(c, best_k, t, p);
-    if (dist_t < best)
-        best = dist_t, best_t = t;
-    double d[4][3];
-    int has_tau;
-    truth_derivs(c, best_k, best_t, d);
-    frenet_from_derivs(d[1], d[2], d[3], kappa, tau, &has_tau);
+    }
+    double best = INFINITY;
+    for (int j = 0; j < nfound; j++)
+        best = fmin(best, found_d[j]);
+    int ties = 0;
+    for (int j = 0; j < nfound && ties < TRUTH_MAX_TIES; j++) {
+        if (found_d[j] > best + TRUTH_TIE)
+            continue;
+        double d[4][3];
+        int has_tau;
+        truth_derivs(c, found_k[j], found_t[j], d);
+        frenet_from_derivs(d[1], d[2], d[3], kappa + ties, tau + ties, &has_tau);
+        ties++;
+    }
     *dist = best;
-    return 0;
+    return ties;
 }

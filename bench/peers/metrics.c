@@ -3,6 +3,8 @@
  * exact curves, and the curvature and torsion errors at the nearest point of
  * the exact curve. */
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "metrics.h"
@@ -12,8 +14,31 @@ static double surface_dist(const bench_case *c, const double p[3])
     return fmax(exact_distance(&c->A, p), exact_distance(&c->B, p));
 }
 
-static void score_samples(const bench_case *c, const peer_output *out, peer_summary *sum)
+static int compare_doubles(const void *a, const void *b)
 {
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* the median of v[0..n-1] (sorted in place); NaN for none */
+static double median(double *v, int n)
+{
+    if (n == 0)
+        return NAN;
+    qsort(v, n, sizeof v[0], compare_doubles);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/* Returns -1 when out of memory. */
+static int score_samples(const bench_case *c, const peer_output *out, peer_summary *sum)
+{
+    double *kappa_errs = malloc(sizeof(double) * (out->nsamples + 1));
+    double *tau_errs = malloc(sizeof(double) * (out->nsamples + 1));
+    if (!kappa_errs || !tau_errs) {
+        free(kappa_errs);
+        free(tau_errs);
+        return -1;
+    }
     for (int i = 0; i < out->nsamples; i++) {
         const peer_sample *s = out->samples + i;
         sum->max_surface_dist = fmax(sum->max_surface_dist, surface_dist(c, s->xyz));
@@ -30,13 +55,18 @@ static void score_samples(const bench_case *c, const peer_output *out, peer_summ
         }
         if (s->has_kappa) {
             sum->max_kappa_err = fmax(sum->max_kappa_err, kappa_err);
-            sum->kappa_count++;
+            kappa_errs[sum->kappa_count++] = kappa_err;
         }
         if (s->has_tau) {
             sum->max_tau_err = fmax(sum->max_tau_err, tau_err);
-            sum->tau_count++;
+            tau_errs[sum->tau_count++] = tau_err;
         }
     }
+    sum->median_kappa_err = median(kappa_errs, sum->kappa_count);
+    sum->median_tau_err = median(tau_errs, sum->tau_count);
+    free(kappa_errs);
+    free(tau_errs);
+    return 0;
 }
 
 static void score_points(const bench_case *c, const peer_output *out, peer_summary *sum)
@@ -64,8 +94,11 @@ void peer_summarize(const bench_case *c, const peer_output *out, peer_summary *s
     sum->max_surface_dist = sum->max_curve_dist = 0.0;
     sum->max_kappa_err = sum->max_tau_err = 0.0;
     sum->kappa_count = sum->tau_count = 0;
-    score_samples(c, out, sum);
+    sum->note[0] = 0;
+    if (score_samples(c, out, sum) != 0)
+        snprintf(sum->note, sizeof sum->note, "out of memory scoring the samples; ");
     score_points(c, out, sum);
     sum->stationary = out->stationary;
-    memcpy(sum->note, out->note, sizeof sum->note);
+    const size_t used = strlen(sum->note);
+    snprintf(sum->note + used, sizeof sum->note - used, "%s", out->note);
 }

@@ -22,6 +22,7 @@ typedef struct {
     double max_curve_dist;   /* largest distance of a sample from the exact curves */
     double max_kappa_err;    /* largest |kappa - exact| over samples with a curvature */
     double max_tau_err;      /* largest |tau - exact| over samples with a torsion */
+    double median_kappa_err, median_tau_err; /* over the same samples */
     int kappa_count, tau_count;
     int stationary; /* samples without curvature: the parametrisation stands still */
     double point_err; /* distance of the nearest isolated point found from the exact one */

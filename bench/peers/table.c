@@ -44,7 +44,7 @@ void table_net_check(FILE *f, const bench_case *c, double devA, double devB)
 void table_start(FILE *f)
 {
     fprintf(f, "\n| case | engine | status | curves | points | length error | time (s) | "
-               "distance to surfaces | distance to curve (point) | kappa error | tau error | notes |\n");
+               "distance to surfaces | distance to curve (point) | kappa error (median) | tau error (median) | notes |\n");
     fprintf(f, "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
 }
 
@@ -72,6 +72,15 @@ static void cell(FILE *f, int shown, double v)
         fprintf(f, " - |");
 }
 
+/* "largest (median)" */
+static void error_cell(FILE *f, int shown, double largest, double median)
+{
+    if (shown)
+        fprintf(f, " %.1e (%.0e) |", largest, median);
+    else
+        fprintf(f, " - |");
+}
+
 void table_row(FILE *f, const bench_case *c, const char *engine, const peer_summary *s)
 {
     const int ran = s->status == RUN_OK || s->status == RUN_ERROR;
@@ -94,8 +103,8 @@ void table_row(FILE *f, const bench_case *c, const char *engine, const peer_summ
         cell(f, ran && s->nsamples > 0, s->max_curve_dist);
     else /* the isolated point found nearest to the exact one */
         cell(f, ran && s->npoints > 0, s->point_err);
-    cell(f, ran && s->kappa_count > 0, s->max_kappa_err);
-    cell(f, ran && s->tau_count > 0, s->max_tau_err);
+    error_cell(f, ran && s->kappa_count > 0, s->max_kappa_err, s->median_kappa_err);
+    error_cell(f, ran && s->tau_count > 0, s->max_tau_err, s->median_tau_err);
     char note[sizeof s->note];
     memcpy(note, s->note, sizeof note);
     for (char *p = note; *p; p++)

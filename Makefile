@@ -96,7 +96,9 @@ bench-peers:
 	cmake -S . -B $(PEERS_BUILD) -DIC_BUILD_PEERS=ON -DIC_BUILD_TESTS=OFF -DIC_BUILD_BENCH=OFF \
 	  -DCMAKE_INSTALL_PREFIX=$(PREFIX) $(CMAKE_FLAGS)
 	cmake --build $(PEERS_BUILD) -j2 --target bench_peers
-	./$(PEERS_BUILD)/bench/peers/bench_peers --timeout $(PEERS_TIMEOUT) | tee $(PEERS_BUILD)/peers.md
+	{ ./$(PEERS_BUILD)/bench/peers/bench_peers --timeout $(PEERS_TIMEOUT); \
+	  echo $$? > $(PEERS_BUILD)/peers.status; } | tee $(PEERS_BUILD)/peers.md; \
+	  exit $$(cat $(PEERS_BUILD)/peers.status)
 
 install: all
 	cmake --install $(BUILD) --prefix $(PREFIX)

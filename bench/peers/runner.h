@@ -16,4 +16,8 @@
 int peer_run(const peer_engine *e, const bench_case *c, unsigned time_limit,
              peer_summary *sum);
 
+/* The same runs in this process, without a time limit: for a debugger or the
+ * sanitizers (a forked child leaves by _exit, unchecked for leaks). */
+void peer_run_here(const peer_engine *e, const bench_case *c, peer_summary *sum);
+
 #endif

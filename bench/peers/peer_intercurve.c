@@ -1,11 +1,16 @@
 /* intercurve on a case: the two nets as NURBS surfaces (ic_surface_new_nurbs),
  * the whole intersection traced with the default options (ic_trace), its
  * own curvature and torsion at every traced point. */
+#include <math.h>
 #include <stdio.h>
 #include <time.h>
 
 #include "intercurve.h"
 #include "peers.h"
+
+/* a surface that differs from our own evaluation of the net by more than this
+ * (length units) means the conversion is wrong */
+#define CONVERSION_TOL 1e-12
 
 static double now_seconds(void)
 {
@@ -25,6 +30,28 @@ static ic_status make_surface(ic_surface **s, const case_net *net, ic_error *err
         .periodic = {net->periodic[0], net->periodic[1]},
     };
     return ic_surface_new_nurbs(s, &nurbs, err);
+}
+
+/* Largest difference between intercurve's surface and our evaluation of the
+ * net, on the 5 x 5 parameter points the other engines are checked on. */
+static double conversion_error(ic_surface *s, const case_net *net)
+{
+    double worst = 0.0;
+    for (int a = 0; a <= 4; a++)
+        for (int b = 0; b <= 4; b++) {
+            double par[2], theirs[3], ours[3];
+            for (int d = 0; d < 2; d++) {
+                const double lo = net->knots[d][net->degree[d]], hi = net->knots[d][net->count[d]];
+                par[d] = lo + (hi - lo) * (0.1 + 0.2 * (d ? b : a));
+            }
+            ic_error err;
+            if (ic_surface_eval(s, theirs, par, &err) != IC_OK)
+                return INFINITY;
+            net_eval(net, par[0], par[1], ours);
+            for (int k = 0; k < 3; k++)
+                worst = fmax(worst, fabs(theirs[k] - ours[k]));
+        }
+    return worst;
 }
 
 static int collect(const ic_trace_result *res, peer_output *out)
@@ -71,6 +98,11 @@ int peer_intercurve(const bench_case *c, peer_output *out, double *seconds)
     if (make_surface(&A, &c->netA, &err) != IC_OK || make_surface(&B, &c->netB, &err) != IC_OK ||
         ic_pair_new(&pair, A, B, &err) != IC_OK) {
         peer_output_note(out, "setup: %s", err.message);
+        goto done;
+    }
+    const double conv = fmax(conversion_error(A, &c->netA), conversion_error(B, &c->netB));
+    if (!(conv <= CONVERSION_TOL)) {
+        peer_output_note(out, "the intercurve surfaces are not the nets (off by %.1e)", conv);
         goto done;
     }
     ic_trace_options opt;

@@ -4,6 +4,8 @@
 #   make demo     run the main job on a bundled example (writes demo.png)
 #   make gallery  draw every bundled example into docs/gallery/
 #   make bench    build and run the benchmarks
+#   make bench-peers  install OpenCASCADE and SISL, run the benchmark against them
+#                 (docs/peers.md)
 #   make install  install both libraries, headers, pkg-config file, CMake package and
 #                 command (PREFIX)
 #   make fuzz     build the libFuzzer targets with clang and run each (FUZZ_SECONDS)
@@ -16,8 +18,15 @@ CMAKE_FLAGS ?=
 DEB_PACKAGES = cmake pkg-config g++ libcjson-dev libcairo2-dev libxml2-dev poppler-utils
 # more, for one run: .ci/run adds clang
 EXTRA_DEB_PACKAGES ?=
+# the peers of `make bench-peers` (docs/peers.md), never needed by the build or CI
+PEER_DEB_PACKAGES = libocct-modeling-algorithms-dev libocct-modeling-data-dev \
+                    libocct-foundation-dev libsisl-dev
+PEERS_BUILD ?= build-peers
+PEERS_TIMEOUT ?= 60
+# seconds apt-get waits for a dpkg lock another install holds
+APT_LOCK_WAIT ?= 600
 
-.PHONY: all deps configure test demo gallery bench install fuzz sanitize clean
+.PHONY: all deps configure test demo gallery bench bench-peers install fuzz sanitize clean
 
 all: configure
 	cmake --build $(BUILD) -j2
@@ -36,7 +45,8 @@ deps:
 	if [ -n "$$missing" ]; then \
 	  echo "installing:$$missing"; \
 	  if [ "$$(id -u)" = 0 ]; then SUDO=""; else SUDO=sudo; fi; \
-	  $$SUDO apt-get update -qq && $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing; \
+	  $$SUDO apt-get update -qq && $$SUDO env DEBIAN_FRONTEND=noninteractive \
+	    apt-get install -y -qq -o DPkg::Lock::Timeout=$(APT_LOCK_WAIT) $$missing; \
 	fi
 
 configure: deps
@@ -78,6 +88,18 @@ bench: configure
 	./$(BUILD)/bench/bench_trace examples
 	./$(BUILD)/bench/bench_torture .
 
+# intercurve, OpenCASCADE and SISL on the same exact NURBS (docs/peers.md):
+# their Debian packages installed when missing, a build of its own, the
+# report on stdout and in $(PEERS_BUILD)/peers.md
+bench-peers:
+	$(MAKE) --no-print-directory deps EXTRA_DEB_PACKAGES="$(EXTRA_DEB_PACKAGES) $(PEER_DEB_PACKAGES)"
+	cmake -S . -B $(PEERS_BUILD) -DIC_BUILD_PEERS=ON -DIC_BUILD_TESTS=OFF -DIC_BUILD_BENCH=OFF \
+	  -DCMAKE_INSTALL_PREFIX=$(PREFIX) $(CMAKE_FLAGS)
+	cmake --build $(PEERS_BUILD) -j2 --target bench_peers
+	{ ./$(PEERS_BUILD)/bench/peers/bench_peers --timeout $(PEERS_TIMEOUT); \
+	  echo $$? > $(PEERS_BUILD)/peers.status; } | tee $(PEERS_BUILD)/peers.md; \
+	  exit $$(cat $(PEERS_BUILD)/peers.status)
+
 install: all
 	cmake --install $(BUILD) --prefix $(PREFIX)
 
@@ -94,4 +116,4 @@ fuzz: deps
 	  -dict=fuzz/cad.dict -artifact_prefix=fuzz/ fuzz/corpus/cad fuzz/seeds/cad
 
 clean:
-	rm -rf build build-asan build-fuzz build-gcc-release build-clang-release
+	rm -rf build build-asan build-fuzz build-gcc-release build-clang-release build-peers

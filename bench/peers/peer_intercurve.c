@@ -1,0 +1,126 @@
+/* intercurve on a case: the two nets as NURBS surfaces (ic_surface_new_nurbs),
+ * the whole intersection traced with the default options (ic_trace), its
+ * own curvature and torsion at every traced point. */
+#include <math.h>
+#include <stdio.h>
+#include <time.h>
+
+#include "intercurve.h"
+#include "peers.h"
+
+/* a surface that differs from our own evaluation of the net by more than this
+ * (length units) means the conversion is wrong */
+#define CONVERSION_TOL 1e-12
+
+static double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+static ic_status make_surface(ic_surface **s, const case_net *net, ic_error *err)
+{
+    const ic_nurbs nurbs = {
+        .degree = {net->degree[0], net->degree[1]},
+        .count = {net->count[0], net->count[1]},
+        .knots = {net->knots[0], net->knots[1]},
+        .points = net->points,
+        .weights = net->weights,
+        .periodic = {net->periodic[0], net->periodic[1]},
+    };
+    return ic_surface_new_nurbs(s, &nurbs, err);
+}
+
+/* Largest difference between intercurve's surface and our evaluation of the
+ * net, on the 5 x 5 parameter points the other engines are checked on. */
+static double conversion_error(ic_surface *s, const case_net *net)
+{
+    double worst = 0.0;
+    for (int a = 0; a <= 4; a++)
+        for (int b = 0; b <= 4; b++) {
+            double par[2], theirs[3], ours[3];
+            for (int d = 0; d < 2; d++) {
+                const double lo = net->knots[d][net->degree[d]], hi = net->knots[d][net->count[d]];
+                par[d] = lo + (hi - lo) * (0.1 + 0.2 * (d ? b : a));
+            }
+            ic_error err;
+            if (ic_surface_eval(s, theirs, par, &err) != IC_OK)
+                return INFINITY;
+            net_eval(net, par[0], par[1], ours);
+            for (int k = 0; k < 3; k++)
+                worst = fmax(worst, fabs(theirs[k] - ours[k]));
+        }
+    return worst;
+}
+
+static int collect(const ic_trace_result *res, peer_output *out)
+{
+    out->ncurves = ic_trace_result_num_curves(res);
+    for (int i = 0; i < out->ncurves; i++) {
+        const ic_trace_curve *cv = ic_trace_result_curve(res, i);
+        out->length += cv->length;
+        if (cv->tangential)
+            peer_output_note(out, "curve %d tangential; ", i);
+        for (int k = 0; k < cv->npoints; k++) {
+            const ic_trace_point *p = cv->points + k;
+            if (peer_output_add(out, p->xyz, p->kappa, p->tau, 1, p->frame_defined) != 0)
+                return -1;
+        }
+    }
+    for (int i = 0; i < ic_trace_result_num_specials(res); i++) {
+        const ic_trace_special *sp = ic_trace_result_special(res, i);
+        peer_output_note(out, "%s%s; ", ic_point_type_name(sp->type),
+                         sp->approximate ? " (approx.)" : "");
+        if (sp->type == IC_POINT_ISOLATED_CONTACT) {
+            if (out->npoints < PEER_MAX_POINTS)
+                for (int k = 0; k < 3; k++)
+                    out->points[out->npoints][k] = sp->xyz[k];
+            out->npoints++;
+        }
+    }
+    const ic_trace_report *rep = ic_trace_result_report(res);
+    peer_output_note(out, "complete=%d", rep->complete);
+    if (rep->nfailures > 0)
+        peer_output_note(out, " (%d undecided regions, listed on stderr)", rep->nfailures);
+    for (int i = 0; i < rep->nfailures; i++)
+        fprintf(stderr, "intercurve: undecided: %s\n", rep->failures[i]);
+    return 0;
+}
+
+int peer_intercurve(const bench_case *c, peer_output *out, double *seconds)
+{
+    ic_surface *A = NULL, *B = NULL;
+    ic_pair *pair = NULL;
+    ic_trace_result *res = NULL;
+    ic_error err;
+    int rc = -1;
+    if (make_surface(&A, &c->netA, &err) != IC_OK || make_surface(&B, &c->netB, &err) != IC_OK ||
+        ic_pair_new(&pair, A, B, &err) != IC_OK) {
+        peer_output_note(out, "setup: %s", err.message);
+        goto done;
+    }
+    const double conv = fmax(conversion_error(A, &c->netA), conversion_error(B, &c->netB));
+    if (!(conv <= CONVERSION_TOL)) {
+        peer_output_note(out, "the intercurve surfaces are not the nets (off by %.1e)", conv);
+        goto done;
+    }
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    const double t0 = now_seconds();
+    const ic_status st = ic_trace(&res, pair, &opt, &err);
+    *seconds = now_seconds() - t0;
+    if (st != IC_OK) {
+        out->failed = 1;
+        peer_output_note(out, "ic_trace: %s: %s", ic_status_name(st), err.message);
+        rc = 0;
+        goto done;
+    }
+    rc = collect(res, out);
+done:
+    ic_trace_result_free(res);
+    ic_pair_free(pair);
+    ic_surface_free(A);
+    ic_surface_free(B);
+    return rc;
+}

@@ -28,9 +28,10 @@
 #define APPARATUS_TOL 1e-12
 /* length: a contact located at a regular point of both surfaces */
 #define CONTACT_TOL TIER_LOCATED
-/* length: a contact at a sphere's pole, which the parametrisation does not
- * resolve (both the NURBS and the formula sphere leave 1.1e-8, approximate) */
-#define CONTACT_POLE_TOL 1e-7
+/* length: a contact at a sphere's pole, where the parametrisation
+ * degenerates: the search's Newton puts it there (measured 1.3e-13 off; the
+ * point is classified from just beside the pole and marked approximate) */
+#define CONTACT_POLE_TOL 1e-12
 
 static char source_dir[400];
 /* the largest relative curvature or torsion error seen, for the record */
@@ -125,16 +126,17 @@ static void check_at(ic_pair *pair, const char *name, const double v[8], int at_
 
 /* A special point of the kind within tol of x. */
 static void check_special(const ic_trace_result *res, const char *name, const char *kind,
-                          const double *x, double tol)
+                          const double *x, double tol, int approximate)
 {
     const ic_point_type want =
         strcmp(kind, "branch") == 0 ? IC_POINT_BRANCH : IC_POINT_ISOLATED_CONTACT;
     int found = 0;
     for (int i = 0; i < ic_trace_result_num_specials(res); i++) {
         const ic_trace_special *s = ic_trace_result_special(res, i);
-        found |= s->type == want && dist3(s->xyz, x) <= tol;
+        found |= s->type == want && dist3(s->xyz, x) <= tol && s->approximate == approximate;
     }
-    CHECK(found, "%s: no %s point within %g of (%g, %g, %g)", name, kind, tol, x[0], x[1], x[2]);
+    CHECK(found, "%s: no %s point within %g of (%g, %g, %g) (approximate %d)", name, kind, tol,
+          x[0], x[1], x[2], approximate);
 }
 
 typedef struct {
@@ -211,7 +213,8 @@ static void truth_line(problem_check *pc, const char *line)
         memcpy(pc->centre[i], x, sizeof pc->centre[i]);
         pc->has_centre[i] = 1;
     } else if (sscanf(line, "point %15s %lf %lf %lf", kind, &x[0], &x[1], &x[2]) == 4) {
-        check_special(res, pc->name, kind, x, pole_contact ? CONTACT_POLE_TOL : CONTACT_TOL);
+        check_special(res, pc->name, kind, x, pole_contact ? CONTACT_POLE_TOL : CONTACT_TOL,
+                      pole_contact);
     } else if (sscanf(line, "at %lf %lf %lf %lf %lf %lf %lf %lf", &x[0], &x[1], &x[2], &x[3],
                       &x[4], &x[5], &x[6], &x[7]) == 8) {
         check_at(pc->t.pair, pc->name, x, poles && fabs(fabs(x[2]) - 1) < 1e-12);
@@ -370,9 +373,26 @@ static void test_viviani_pairings(void)
         if (REQUIRE(n == 1 && ic_trace_result_report(t.res)->complete, "%s: %d curves, complete %d",
                     files[k], n, ic_trace_result_report(t.res)->complete))
             CHECK_CLOSE(ic_trace_result_curve(t.res, 0)->length, L, LENGTH_TOL, files[k]);
-        check_special(t.res, files[k], "branch", branch, CONTACT_TOL);
+        check_special(t.res, files[k], "branch", branch, CONTACT_TOL, 0);
         release(&t);
     }
+}
+
+/* The sphere resting on a plane at its pole, both NURBS (the peer
+ * benchmark's sphere-touch case): before, the locator refused the pole and
+ * the search ran into its 2000000-cell limit, incomplete, with no point. */
+static void test_contact_at_pole(void)
+{
+    traced t;
+    if (trace_named(&t, "problem-sphere-touch-nurbs-nurbs.json") != 0)
+        return;
+    const double origin[3] = {0, 0, 0};
+    CHECK(ic_trace_result_num_curves(t.res) == 0 && ic_trace_result_report(t.res)->complete,
+          "sphere touching a plane at its pole: %d curves, complete %d",
+          ic_trace_result_num_curves(t.res), ic_trace_result_report(t.res)->complete);
+    check_special(t.res, "sphere touching a plane at its pole", "contact", origin,
+                  CONTACT_POLE_TOL, 1);
+    release(&t);
 }
 
 int main(int argc, char **argv)
@@ -382,6 +402,7 @@ int main(int argc, char **argv)
     snprintf(source_dir, sizeof source_dir, "%s", argv[1]);
     test_quadrics();
     test_viviani_pairings();
+    test_contact_at_pole();
     test_knot_line("problem-knotline-plane.json");
     test_knot_line("problem-knotline-plane-reversed.json");
     printf("largest relative curvature or torsion error: %.3g\n", worst_apparatus);

@@ -662,6 +662,65 @@ static int near_exact_special(const ic_trace_result *r, const double *x, double 
     return 0;
 }
 
+/* A parametric sheet degenerate at pt (R_u x R_v = 0, a pole): its
+ * parameters moved IC_TRACE_POLE_NUDGE_REL of the domain along a parameter
+ * to where the normal exists, and pt's position with them. 0 when no sheet
+ * is degenerate there or no nudge helps. */
+static int nudge_off_pole(ic_pair *pair, ic_local_point *pt)
+{
+    for (int s = 0; s < 2; s++) {
+        ic_surface *S = ic_pair_surface(pair, s);
+        ic_surface_geometry g;
+        if (ic_surface_get_kind(S) != IC_PARAMETRIC ||
+            ic_surface_normal_at(S, &g, pt->params[s], NULL) == IC_OK)
+            continue;
+        double dom[2][2];
+        ic_surface_get_domain(S, dom, NULL);
+        for (int k = 0; k < 4; k++) { /* +v, -v, +u, -u */
+            const int i = k < 2 ? 1 : 0;
+            const double width = isfinite(dom[i][1] - dom[i][0]) ? dom[i][1] - dom[i][0] : 1;
+            double uv[2] = {pt->params[s][0], pt->params[s][1]}, x[3];
+            uv[i] += (k % 2 ? -1 : 1) * IC_TRACE_POLE_NUDGE_REL * width;
+            if (uv[i] < dom[i][0] || uv[i] > dom[i][1] ||
+                ic_surface_normal_at(S, &g, uv, NULL) != IC_OK ||
+                ic_surface_eval(S, x, uv, NULL) != IC_OK)
+                continue;
+            memcpy(pt->params[s], uv, sizeof uv);
+            memcpy(pt->xyz, x, sizeof x);
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* A candidate the locator refused because a parametrisation degenerates
+ * there (a contact at a sphere's pole): classified from just beside the
+ * pole, as an approximate point at the candidate's place. 1 if recorded. */
+static int record_at_pole(ic_trace_result *r, ic_pair *pair, const ic_candidate *c,
+                          const ic_trace_options *opt, ic_status *st)
+{
+    ic_local_point pt;
+    memset(&pt, 0, sizeof pt);
+    memcpy(pt.xyz, c->xyz, sizeof pt.xyz);
+    memcpy(pt.params, c->params, sizeof pt.params);
+    if (!nudge_off_pole(pair, &pt))
+        return 0;
+    /* only a contact: curves through a pole are joined across it
+     * (in_pole_gap), and nothing but the search leads to a contact */
+    ic_local_options o = opt->local;
+    o.tangential_angle = 1e-3; /* as for any approximate point (ic_trace_add_special) */
+    ic_local_result res;
+    if (ic_local_apparatus(pair, &res, &pt, 3, IC_METHOD_AUTO, &o, NULL) != IC_OK ||
+        (res.type != IC_POINT_ISOLATED_CONTACT && res.type != IC_POINT_HIGHER_ORDER_CONTACT))
+        return 0;
+    int index = -1;
+    *st = ic_trace_add_special(r, pair, &pt, 1, opt, &index);
+    if (*st != IC_OK || index < 0)
+        return 0;
+    memcpy(r->specials[index].xyz, c->xyz, sizeof c->xyz);
+    return 1;
+}
+
 ic_status ic_trace_from_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
                                    ic_candidate *cand, int nc, const ic_trace_options *opt,
                                    ic_error *err)
@@ -688,7 +747,11 @@ ic_status ic_trace_from_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *p
              * would fail the same way: one is kept */
             cover_point(cand, nc, cand[i].xyz, 1e-10 * (r->scale + ic_norm3(cand[i].xyz)));
             cand[i].covered = 1;
-            if (defer_failure(r, &cand[i], e2.message) != 0)
+            if (record_at_pole(r, pair, &cand[i], opt, &st)) {
+                cover_point(cand, nc, cand[i].xyz, fmax(near_point, 2 * r->report.cell_size));
+                continue;
+            }
+            if (st == IC_OK && defer_failure(r, &cand[i], e2.message) != 0)
                 st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
             continue;
         }

@@ -101,6 +101,14 @@
  * on it too, rather than a second point 1e-15 further. */
 #define IC_TRACE_KNOT_SNAP_REL 1e-13
 
+/* relative (of a parameter's domain width): how far from a degenerate
+ * point of a parametrisation (a sphere's pole) a tangential point found
+ * there is classified. The normal exists there (|R_u x R_v| about this
+ * times |R_v|^2, far above IC_SURFACE_DEGENERATE) and the normals of the
+ * two surfaces differ by about this much, well within the relaxed 1e-3 of
+ * an approximate point; the point itself is kept where it was found. */
+#define IC_TRACE_POLE_NUDGE_REL 1e-6
+
 /* units in the last place of L: how well a located tangential point's place
  * is known at best (the locator stops at steps of 1e-15 of the unknowns'
  * size); coefficients a shift this small makes are no contact terms

@@ -18,7 +18,12 @@ It also writes the knot-line patch of gen_nurbs_knotline.py as NURBS-Python
 weights alongside), and problem-geomdl-knotline.json, the knot-line problem
 reading it: its truth is that of problem-knotline-plane.json.
 
-Run: python3 tests/truth/gen_nurbs_pairings.py  (writes the four files)
+And the unit NURBS sphere (axis z) moved up by 1 (control points' z + 1,
+exact), resting on the plane z = 0 written as a bilinear NURBS patch over
+[-2, 2]^2: one isolated contact at (0, 0, 0), the sphere's south pole, where
+its parametrisation degenerates (problem-sphere-touch-nurbs-nurbs.json).
+
+Run: python3 tests/truth/gen_nurbs_pairings.py  (writes the five files)
 """
 import json
 import os
@@ -66,7 +71,16 @@ def main():
     knot_problem["title"] = "The knot-line patch read from a geomdl file, and the plane x = 0.75"
     knot_problem["surfaces"][0] = {"name": "knotline", "type": "geomdl",
                                    "file": "geomdl-knotline.json"}
+    lifted = load("surface-unit-sphere.json")
+    lifted["control_points"] = [[[x, y, z + 1] for x, y, z in row]
+                                for row in lifted["control_points"]]
+    plane = {"name": "plane", "type": "nurbs", "degree": [1, 1],
+             "knots": [[0, 0, 1, 1], [0, 0, 1, 1]],
+             "control_points": [[[-2, -2, 0], [-2, 2, 0]], [[2, -2, 0], [2, 2, 0]]]}
+    touch = {"title": "The unit NURBS sphere resting on a NURBS plane at its south pole "
+                      "(tests/truth/gen_nurbs_pairings.py)", "surfaces": [lifted, plane]}
     for name, doc in (("problem-viviani-nurbs-nurbs.json", both),
+                      ("problem-sphere-touch-nurbs-nurbs.json", touch),
                       ("problem-viviani-nurbs-formula.json", formula),
                       ("geomdl-knotline.json", geomdl),
                       ("problem-geomdl-knotline.json", knot_problem)):

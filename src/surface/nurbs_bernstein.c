@@ -8,6 +8,10 @@
 
 #include <float.h>
 #include <math.h>
+
+/* the larger and smaller of two finite numbers (fmax and fmin are calls) */
+static inline double max2(double a, double b) { return a > b ? a : b; }
+static inline double min2(double a, double b) { return a < b ? a : b; }
 #include <string.h>
 
 /* Pascal's triangle up to the degree of a product. */
@@ -36,7 +40,7 @@ static double largest(const ic_bpoly *f)
 {
     double m = 0;
     for (int i = 0; i < (f->du + 1) * (f->dv + 1); i++)
-        m = fmax(m, fabs(f->c[i]));
+        m = max2(m, fabs(f->c[i]));
     return m;
 }
 
@@ -92,17 +96,27 @@ void ic_bpoly_elevate(ic_bpoly *h, const ic_bpoly *f, int dir)
     h->err = f->err + 4 * DBL_EPSILON * largest(f);
 }
 
+ic_interval ic_quotient_positive(double n, double en, double d, double ed)
+{
+    /* n' / d' with |n' - n| <= en, |d' - d| <= ed < d lies within
+     * (en + |n / d| ed) / (d - ed) of n / d; the rounding of q = n / d and of
+     * this bound (a few ulps of each, relative) is covered by 4 ulps of q
+     * and the factor on the bound */
+    const double q = n / d;
+    const double e = (en + fabs(q) * ed) / (d - ed) * (1 + 8 * DBL_EPSILON) +
+                     4 * DBL_EPSILON * fabs(q);
+    return (ic_interval){q - e, q + e};
+}
+
 ic_interval ic_bpoly_ratio_hull(const ic_bpoly *N, const ic_bpoly *D)
 {
     ic_interval hull = {INFINITY, -INFINITY};
     for (int i = 0; i < (N->du + 1) * (N->dv + 1); i++) {
-        const ic_interval den = {D->c[i] - D->err, D->c[i] + D->err};
-        if (!(den.lo > 0))
+        if (!(D->c[i] - D->err > 0))
             return (ic_interval){-INFINITY, INFINITY}; /* no bound */
-        const ic_interval q =
-            ic_interval_div((ic_interval){N->c[i] - N->err, N->c[i] + N->err}, den);
-        hull.lo = fmin(hull.lo, q.lo);
-        hull.hi = fmax(hull.hi, q.hi);
+        const ic_interval q = ic_quotient_positive(N->c[i], N->err, D->c[i], D->err);
+        hull.lo = min2(hull.lo, q.lo);
+        hull.hi = max2(hull.hi, q.hi);
     }
     return hull;
 }

@@ -26,4 +26,8 @@ void ic_bpoly_elevate(ic_bpoly *h, const ic_bpoly *f, int dir);
  * coefficient of D cannot be proven positive. */
 ic_interval ic_bpoly_ratio_hull(const ic_bpoly *N, const ic_bpoly *D);
 
+/* Encloses n' / d' for every n' within en of n and d' within ed of d,
+ * given d - ed > 0 (cheaper than interval division, as sound). */
+ic_interval ic_quotient_positive(double n, double en, double d, double ed);
+
 #endif

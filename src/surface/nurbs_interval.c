@@ -11,6 +11,10 @@
 #include <float.h>
 #include <math.h>
 
+/* the larger and smaller of two finite numbers (fmax and fmin are calls) */
+static inline double max2(double a, double b) { return a > b ? a : b; }
+static inline double min2(double a, double b) { return a < b ? a : b; }
+
 enum { MAXP = IC_NURBS_MAX_DEGREE + 1, DIM = 4 };
 
 /* relative to the largest |coordinate| of a span's net: rounding of one
@@ -72,13 +76,13 @@ static double sub_net(const tensor_net *tn, int su, int sv, const double box[2][
     for (int i = 0; i <= p; i++)
         for (int j = 0; j <= q; j++)
             for (int e = 0; e < DIM; e++)
-                big = fmax(big, fabs(tn->net[DIM * ((su - p + i) * tn->nv + sv - q + j) + e]));
+                big = max2(big, fabs(tn->net[DIM * ((su - p + i) * tn->nv + sv - q + j) + e]));
     return NET_ROUNDING_PER_LEVEL * (p + q + 1) * big;
 }
 
 static ic_interval hull_with(ic_interval h, ic_interval x)
 {
-    return (ic_interval){fmin(h.lo, x.lo), fmax(h.hi, x.hi)};
+    return (ic_interval){min2(h.lo, x.lo), max2(h.hi, x.hi)};
 }
 
 static ic_interval widened(double x, double err) { return (ic_interval){x - err, x + err}; }
@@ -114,12 +118,13 @@ static ic_status piece_values(const piece_net *pn, ic_interval out[3], ic_interv
         out[e] = (ic_interval){INFINITY, -INFINITY};
     *weight = (ic_interval){INFINITY, -INFINITY};
     for (int k = 0; k < (pn->p + 1) * (pn->q + 1); k++) {
-        const ic_interval w = widened(pn->net[k * DIM + 3], pn->err);
+        const double *P = pn->net + k * DIM;
+        const ic_interval w = widened(P[3], pn->err);
         if (!(w.lo > 0))
             return IC_ERR_UNABLE; /* weights far below the net's size: no bound */
         *weight = hull_with(*weight, w);
         for (int e = 0; e < 3; e++)
-            out[e] = hull_with(out[e], ic_interval_div(widened(pn->net[k * DIM + e], pn->err), w));
+            out[e] = hull_with(out[e], ic_quotient_positive(P[e], pn->err, P[3], pn->err));
     }
     return IC_OK;
 }
@@ -161,7 +166,7 @@ static ic_interval rational_derivative(const piece_net *val, const piece_net *ho
 
 static ic_interval intersect(ic_interval a, ic_interval b)
 {
-    return (ic_interval){fmax(a.lo, b.lo), fmin(a.hi, b.hi)};
+    return (ic_interval){max2(a.lo, b.lo), min2(a.hi, b.hi)};
 }
 
 /* Values and (with_grad) derivatives over one piece, joined into out. */
@@ -217,12 +222,12 @@ static int domain_parts(const ic_nurbs_patch *pt, int dir, ic_interval in, doubl
         return 1;
     }
     /* one ulp of the domain's size either way covers the rounding of the shift */
-    const double ulp = 4 * DBL_EPSILON * fmax(fabs(d0), fabs(d1));
+    const double ulp = 4 * DBL_EPSILON * max2(fabs(d0), fabs(d1));
     const double lo = ic_nurbs_wrap(pt, dir, in.lo), hi = lo + (in.hi - in.lo);
-    part[0][0] = fmax(d0, lo - ulp), part[0][1] = fmin(d1, hi + ulp);
+    part[0][0] = max2(d0, lo - ulp), part[0][1] = min2(d1, hi + ulp);
     if (hi + ulp <= d1)
         return 1;
-    part[1][0] = d0, part[1][1] = fmin(d1, d0 + (hi - d1) + ulp);
+    part[1][0] = d0, part[1][1] = min2(d1, d0 + (hi - d1) + ulp);
     return 2;
 }
 
@@ -253,8 +258,8 @@ ic_status ic_nurbs_interval_grad(const ic_nurbs_patch *pt, ic_interval_grad *out
                     const double *ku = pt->knots[0], *kv = pt->knots[1];
                     if (ku[su] == ku[su + 1] || kv[sv] == kv[sv + 1])
                         continue; /* an empty span */
-                    const double box[2][2] = {{fmax(pu[0], ku[su]), fmin(pu[1], ku[su + 1])},
-                                              {fmax(pv[0], kv[sv]), fmin(pv[1], kv[sv + 1])}};
+                    const double box[2][2] = {{max2(pu[0], ku[su]), min2(pu[1], ku[su + 1])},
+                                              {max2(pv[0], kv[sv]), min2(pv[1], kv[sv + 1])}};
                     if (piece_enclose(pt, su, sv, box, out, with_grad) != IC_OK)
                         return ic_error_set(err, IC_ERR_UNABLE, 0,
                                             "NURBS patch: weights too small to bound a piece");

@@ -395,6 +395,50 @@ static void test_contact_at_pole(void)
     release(&t);
 }
 
+/* The cusp and the tacnode of the bundled examples with their polynomial
+ * surfaces written exactly as B-spline patches with interior knots
+ * (tests/truth/gen_nurbs_polynomial.py): the same kind of point at the
+ * origin, the same curves (the cusp's: the lengths of the formula example,
+ * traced here, to 1e-12; the tacnode's patch is cut by its domain, not the
+ * example's box, so its two curves are counted). */
+static void test_polynomial_kinds(const char *dir)
+{
+    static const struct {
+        const char *nurbs, *formula, *kind;
+        ic_point_type type;
+    } cases[] = {{"problem-cusp-nurbs.json", "cusp.json", "cusp", IC_POINT_CUSP},
+                 {"problem-tacnode-nurbs.json", "tacnode.json", "tacnode", IC_POINT_TACNODE}};
+    const double origin[3] = {0, 0, 0};
+    for (int k = 0; k < 2; k++) {
+        traced t, f;
+        if (trace_named(&t, cases[k].nurbs) != 0)
+            continue;
+        const int n = ic_trace_result_num_curves(t.res);
+        CHECK(n == 2 && ic_trace_result_report(t.res)->complete, "%s: %d curves, complete %d",
+              cases[k].nurbs, n, ic_trace_result_report(t.res)->complete);
+        int found = 0;
+        for (int i = 0; i < ic_trace_result_num_specials(t.res); i++) {
+            const ic_trace_special *sp = ic_trace_result_special(t.res, i);
+            found |= sp->type == cases[k].type && !sp->approximate &&
+                     dist3(sp->xyz, origin) <= TIER_LOCATED;
+        }
+        CHECK(found, "%s: no exact %s at the origin", cases[k].nurbs, cases[k].kind);
+        if (cases[k].type == IC_POINT_CUSP && n == 2 &&
+            trace_example(&f, dir, cases[k].formula) == 0) {
+            int used[8] = {0};
+            for (int c = 0; c < 2 && ic_trace_result_num_curves(f.res) == 2; c++) {
+                const double L = ic_trace_result_curve(f.res, c)->length;
+                const int m = match_curve(t.res, L, used);
+                used[m] = 1;
+                CHECK_CLOSE(ic_trace_result_curve(t.res, m)->length, L, LENGTH_TOL,
+                            "cusp curve against the formula example's");
+            }
+            release(&f);
+        }
+        release(&t);
+    }
+}
+
 int main(int argc, char **argv)
 {
     if (!REQUIRE(argc > 1, "usage: test_nurbs_traces SOURCE_DIR"))
@@ -403,6 +447,7 @@ int main(int argc, char **argv)
     test_quadrics();
     test_viviani_pairings();
     test_contact_at_pole();
+    test_polynomial_kinds(source_dir);
     test_knot_line("problem-knotline-plane.json");
     test_knot_line("problem-knotline-plane-reversed.json");
     printf("largest relative curvature or torsion error: %.3g\n", worst_apparatus);

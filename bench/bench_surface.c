@@ -43,7 +43,7 @@ typedef struct {
 
 int main(void)
 {
-    bench_surface cases[8];
+    bench_surface cases[10];
     int nc = 0;
     ic_primitive torus = {.kind = IC_PRIM_TORUS, .major_radius = 2.0, .radius = 0.5};
     ic_primitive ell = {.kind = IC_PRIM_ELLIPSOID, .axes = {0.6, 0.8, 1.0}};
@@ -69,6 +69,32 @@ int main(void)
     ADD("torus (primitive, implicit)", ic_surface_new_primitive(&s_, &torus, IC_IMPLICIT, NULL), 1.2, 1.3, 0.2);
     ADD("ellipsoid (implicit)", ic_surface_new_primitive(&s_, &ell, IC_IMPLICIT, NULL), 0.2, 0.3, 0.4);
     ADD("sphere (primitive, parametric)", ic_surface_new_primitive(&s_, &sph, IC_PARAMETRIC, NULL), 0.3, 0.4, 0);
+    /* the exact rational NURBS sphere (radius 2; the 9-point circle by the
+     * 5-point semicircle, tests/truth/gen_nurbs_quadrics.py) and a bicubic */
+    static const double kc[12] = {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1};
+    static const double ks[8] = {0, 0, 0, 0.5, 0.5, 1, 1, 1};
+    static const double cx[9] = {1, 1, 0, -1, -1, -1, 0, 1, 1}, cy[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
+    static const double rr[5] = {0, 1, 1, 1, 0}, hh[5] = {-1, -1, 0, 1, 1};
+    const double h = 0.70710678118654752;
+    double pts[9 * 5 * 3], wts[9 * 5];
+    for (int i = 0; i < 9; i++)
+        for (int j = 0; j < 5; j++) {
+            pts[3 * (5 * i + j) + 0] = 2 * rr[j] * cx[i];
+            pts[3 * (5 * i + j) + 1] = 2 * rr[j] * cy[i];
+            pts[3 * (5 * i + j) + 2] = 2 * hh[j];
+            wts[5 * i + j] = (i % 2 ? h : 1) * (j % 2 ? h : 1);
+        }
+    const ic_nurbs nsphere = {{2, 2}, {9, 5}, {kc, ks}, pts, wts, {0, 0}};
+    ADD("sphere (NURBS, rational)", ic_surface_new_nurbs(&s_, &nsphere, NULL), 0.3, 0.4, 0);
+    static const double kb[10] = {0, 0, 0, 0, 0.3, 0.6, 1, 1, 1, 1};
+    double bic[6 * 6 * 3];
+    for (int i = 0; i < 6; i++)
+        for (int j = 0; j < 6; j++) {
+            bic[3 * (6 * i + j) + 0] = i, bic[3 * (6 * i + j) + 1] = j;
+            bic[3 * (6 * i + j) + 2] = ((i * 7 + j * 3) % 5) * 0.3;
+        }
+    const ic_nurbs nbic = {{3, 3}, {6, 6}, {kb, kb}, bic, NULL, {0, 0}};
+    ADD("bicubic (NURBS, 3 x 3 spans)", ic_surface_new_nurbs(&s_, &nbic, NULL), 0.45, 0.4, 0);
 
     ic_jet_space *d2[2] = {NULL}, *d4[2] = {NULL}, *c[3] = {NULL};
     const int corders[3] = {4, 8, 16};

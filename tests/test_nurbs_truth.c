@@ -79,6 +79,45 @@ static void check_derivative(checker *c, const ic_jet_space *sp, const double *s
     }
 }
 
+/* The surface composed with the line (u0 + a s, v0 + b s), heading into the
+ * truth's pieces (a, b of the truth's sides), to order 8: the coefficient
+ * of s^k is sum over i + j = k of d^(i+j)R/du^i dv^j a^i b^j / (i! j!),
+ * from the truth's derivatives; relative to the sum of those terms' sizes. */
+static void check_composition(checker *c, const patch *pt, const double at[2], const int side[2],
+                              char lines[45][256])
+{
+    ic_jet_space *line = NULL;
+    ic_error err;
+    if (!REQUIRE(ic_jet_space_new(&line, 1, ORDER, &err) == IC_OK, "space"))
+        return;
+    const double a = 0.7 * side[0], b = 0.4 * side[1];
+    double ju[ORDER + 1] = {at[0], a}, jv[ORDER + 1] = {at[1], b}, out[3 * (ORDER + 1)];
+    const double *in[2] = {ju, jv};
+    double want[3][ORDER + 1] = {{0}}, size[ORDER + 1] = {0};
+    for (int i = 0; i < 45; i++) {
+        int p, q;
+        double x[3];
+        sscanf(lines[i] + 2, "%d %d %lf %lf %lf", &p, &q, &x[0], &x[1], &x[2]);
+        const double w = pow(a, p) * pow(b, q) / (tgamma(p + 1) * tgamma(q + 1));
+        for (int k = 0; k < 3; k++) {
+            want[k][p + q] += x[k] * w;
+            size[p + q] = fmax(size[p + q], fabs(x[k] * w));
+        }
+    }
+    if (REQUIRE(ic_surface_compose(pt->s, out, in, line, &err) == IC_OK, "%s: compose: %s",
+                pt->name, err.message))
+        for (int k = 0; k < 3; k++)
+            for (int d = 0; d <= ORDER; d++) {
+                /* the terms of one order, each within the tier, summed */
+                const double tol = DERIV_TRUTH_TOL * (d + 1) * (d + 1) * fmax(1, size[d]);
+                c->worst = fmax(c->worst, fabs(out[k * (ORDER + 1) + d] - want[k][d]) / tol);
+                CHECK(fabs(out[k * (ORDER + 1) + d] - want[k][d]) <= tol,
+                      "%s at (%g, %g): composed coefficient %d of %d: %.17g, want %.17g",
+                      pt->name, at[0], at[1], d, k, out[k * (ORDER + 1) + d], want[k][d]);
+            }
+    ic_jet_space_free(line);
+}
+
 /* The 45 derivative lines after an "at" line; their largest magnitude per
  * order is the scale of that order (read first, then checked). */
 static void check_point(checker *c, FILE *f, const patch *pt, const ic_jet_space *sp,
@@ -111,6 +150,7 @@ static void check_point(checker *c, FILE *f, const patch *pt, const ic_jet_space
     c->points++;
     for (int i = 0; i < 45; i++)
         check_derivative(c, sp, scale, lines[i] + 2, pt, at);
+    check_composition(c, pt, at, side, lines);
 }
 
 /* The header lines of a patch (degree .. cp); 1 at its first "at" line. */

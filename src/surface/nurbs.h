@@ -37,6 +37,16 @@ ic_status ic_nurbs_taylor(const ic_nurbs_patch *patch, double *out, const double
                           const ic_nurbs_side side[2], const ic_jet_space *sp, double *work,
                           ic_error *err);
 
+/* Doubles of workspace ic_nurbs_compose needs for jets of n coefficients. */
+size_t ic_nurbs_compose_work_len(const ic_nurbs_patch *patch, int n);
+
+/* (x, y, z) composed with the parameter jets in[0], in[1] of sp: each basis
+ * function's polynomial on the point's span (its whole Taylor expansion) by
+ * Horner's rule in jet arithmetic, the homogeneous sums, the quotient. */
+ic_status ic_nurbs_compose(const ic_nurbs_patch *patch, double *out, const double *const *in,
+                           const ic_nurbs_side side[2], const ic_jet_space *sp, double *work,
+                           ic_error *err);
+
 /* (x, y, z) and their u, v derivatives over a parameter box, sound with
  * outward rounding; IC_ERR_DOMAIN where the box leaves the natural domain
  * along a parameter that does not wrap. */

@@ -92,3 +92,73 @@ ic_status ic_nurbs_taylor(const ic_nurbs_patch *pt, double *out, const double at
     }
     return IC_OK;
 }
+
+size_t ic_nurbs_compose_work_len(const ic_nurbs_patch *pt, int n)
+{
+    /* the two parameter offsets, every basis function's jet, a row sum, a
+     * product and the four homogeneous coordinates */
+    return (size_t)n * (size_t)(2 + pt->p[0] + 1 + pt->p[1] + 1 + 2 + 4);
+}
+
+/* The jet of the polynomial sum_k a[k] delta^k (k = 0..deg) by Horner's
+ * rule in jet arithmetic (tmp: one jet). */
+static void horner(double *out, const double a[MAXP], int deg, const double *delta,
+                   const ic_jet_space *sp, double *tmp)
+{
+    ic_jet_set_const(out, a[deg], sp);
+    for (int k = deg - 1; k >= 0; k--) {
+        ic_jet_mul(tmp, out, delta, sp);
+        ic_jet_add_const(out, tmp, a[k], sp);
+    }
+}
+
+ic_status ic_nurbs_compose(const ic_nurbs_patch *pt, double *out, const double *const *in,
+                           const ic_nurbs_side side[2], const ic_jet_space *sp, double *work,
+                           ic_error *err)
+{
+    const int n = ic_jet_space_len(sp), p = pt->p[0], q = pt->p[1], nv = pt->n[1];
+    double *delta[2] = {work, work + n}, *basis[2] = {work + 2 * n, work + (3 + p) * n};
+    double *row = work + (4 + p + q) * n, *prod = row + n, *hom = prod + n;
+    int span[2];
+    for (int d = 0; d < 2; d++) {
+        /* the piece's whole polynomial about the point: Taylor to its degree */
+        double b[MAXP][MAXP], a[MAXP];
+        const double t = ic_nurbs_wrap(pt, d, in[d][0]);
+        span[d] = ic_nurbs_find_span(pt, d, t, side[d]);
+        basis_taylor(b, pt->knots[d], span[d], pt->p[d], t, pt->p[d]);
+        ic_jet_copy(delta[d], in[d], sp);
+        delta[d][0] = 0;
+        for (int i = 0; i <= pt->p[d]; i++) {
+            for (int k = 0; k <= pt->p[d]; k++)
+                a[k] = b[k][i];
+            horner(basis[d] + (size_t)i * n, a, pt->p[d], delta[d], sp, prod);
+        }
+    }
+    for (int e = 0; e < 4; e++) { /* X = sum_i N_i (sum_j P_ij M_j) */
+        double *acc = hom + (size_t)e * n;
+        ic_jet_zero(acc, sp);
+        for (int i = 0; i <= p; i++) {
+            ic_jet_zero(row, sp);
+            for (int j = 0; j <= q; j++) {
+                const double c = pt->hom[4 * ((span[0] - p + i) * nv + span[1] - q + j) + e];
+                const double *M = basis[1] + (size_t)j * n;
+                for (int k = 0; k < n; k++)
+                    row[k] += c * M[k];
+            }
+            ic_jet_mul(prod, basis[0] + (size_t)i * n, row, sp);
+            for (int k = 0; k < n; k++)
+                acc[k] += prod[k];
+        }
+    }
+    for (int e = 0; e < 3; e++) {
+        if (!pt->rational) {
+            ic_jet_scale(out + (size_t)e * n, hom + (size_t)e * n, 1 / pt->hom[3], sp);
+            continue;
+        }
+        const ic_status st = ic_jet_div(out + (size_t)e * n, hom + (size_t)e * n, hom + 3 * (size_t)n,
+                                        sp, err);
+        if (st != IC_OK)
+            return st;
+    }
+    return IC_OK;
+}

@@ -331,6 +331,16 @@ static ic_status callback_taylor(ic_surface *s, double *out, const double *at,
     return IC_OK;
 }
 
+/* The piece of a NURBS on each knot line: forced (ic_surface_set_knot_side),
+ * else where the parameter jet heads, else the one above. */
+static void nurbs_sides(const ic_surface *s, const double *heading, ic_nurbs_side side[2])
+{
+    for (int d = 0; d < 2; d++) {
+        const double way = s->knot_side[d] ? s->knot_side[d] : heading ? heading[d] : 0;
+        side[d] = way < 0 ? IC_NURBS_LEFT : IC_NURBS_RIGHT;
+    }
+}
+
 /* NURBS: on a knot line, the piece the direction `heading` (NULL: none)
  * goes into; the right one without a direction. */
 static ic_status nurbs_taylor(ic_surface *s, double *out, const double *at, const double *heading,
@@ -339,11 +349,8 @@ static ic_status nurbs_taylor(ic_surface *s, double *out, const double *at, cons
     double *w = ic_surface_work(s, IC_WORK_EVAL, ic_nurbs_taylor_work_len(ic_jet_space_len(sp)));
     if (!w)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory evaluating a surface");
-    ic_nurbs_side side[2] = {IC_NURBS_RIGHT, IC_NURBS_RIGHT};
-    for (int d = 0; d < 2; d++) {
-        const double way = s->knot_side[d] ? s->knot_side[d] : heading ? heading[d] : 0;
-        side[d] = way < 0 ? IC_NURBS_LEFT : IC_NURBS_RIGHT;
-    }
+    ic_nurbs_side side[2];
+    nurbs_sides(s, heading, side);
     return ic_nurbs_taylor(s->nurbs, out, at, side, sp, w, err);
 }
 
@@ -358,6 +365,20 @@ static double jet_heading(const double *jet, const ic_jet_space *sp)
         if (jet[start + i] != 0)
             return jet[start + i];
     return 0;
+}
+
+/* NURBS composed with parameter jets directly (nurbs_eval.c). */
+static ic_status nurbs_compose(ic_surface *s, double *out, const double *const *in,
+                               const ic_jet_space *sp, ic_error *err)
+{
+    const int n = ic_jet_space_len(sp);
+    double *w = ic_surface_work(s, IC_WORK_EVAL, ic_nurbs_compose_work_len(s->nurbs, n));
+    if (!w)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory composing a surface");
+    const double heading[2] = {jet_heading(in[0], sp), jet_heading(in[1], sp)};
+    ic_nurbs_side side[2];
+    nurbs_sides(s, heading, side);
+    return ic_nurbs_compose(s->nurbs, out, in, side, sp, w, err);
 }
 
 /* Formula: the tape on the coordinate jets of the point. */
@@ -413,8 +434,9 @@ ic_status ic_surface_compose(ic_surface *s, double *out, const double *const *in
     }
     if (s->backend == BACKEND_PRIMITIVE)
         return ic_primitive_compose(s, out, in, sp, err);
-    /* Callbacks and NURBS: Taylor polynomial at the constant terms, then the
-     * chain rule (a NURBS piece chosen by where the jets head). */
+    if (s->backend == BACKEND_NURBS)
+        return nurbs_compose(s, out, in, sp, err);
+    /* Callbacks: Taylor polynomial at the constant terms, then the chain rule. */
     const ic_jet_space *tsp = ic_surface_space(s, ic_jet_space_order(sp), err);
     if (!tsp)
         return err ? err->code : IC_ERR_NOMEM;
@@ -427,9 +449,7 @@ ic_status ic_surface_compose(ic_surface *s, double *out, const double *const *in
     if (!taylor)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory composing a surface");
     double *scratch = taylor + (size_t)nout * tn;
-    const double heading[2] = {jet_heading(in[0], sp), nin > 1 ? jet_heading(in[1], sp) : 0};
-    ic_status st = s->backend == BACKEND_NURBS ? nurbs_taylor(s, taylor, at, heading, tsp, err)
-                                               : ic_surface_taylor(s, taylor, at, tsp, err);
+    ic_status st = ic_surface_taylor(s, taylor, at, tsp, err);
     if (st != IC_OK)
         return st;
     for (int k = 0; k < nout; k++)

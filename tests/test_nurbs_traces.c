@@ -378,6 +378,25 @@ static void test_viviani_pairings(void)
     }
 }
 
+/* The NURBS cylinder of radius 1 with the sphere primitive of radius 2:
+ * two unit circles of length 2 pi at z = +-sqrt(3). */
+static void test_with_primitive(void)
+{
+    traced t;
+    if (trace_named(&t, "problem-cylinder-sphere-primitive.json") != 0)
+        return;
+    const int n = ic_trace_result_num_curves(t.res);
+    CHECK(n == 2 && ic_trace_result_report(t.res)->complete, "NURBS with a primitive: %d curves",
+          n);
+    for (int c = 0; c < n; c++) {
+        const ic_trace_curve *curve = ic_trace_result_curve(t.res, c);
+        const double centre[3] = {0, 0, curve->points[0].xyz[2] > 0 ? sqrt(3) : -sqrt(3)};
+        CHECK_CLOSE(curve->length, 2 * 3.14159265358979323846, LENGTH_TOL, "unit circle");
+        check_constant(curve, "NURBS cylinder and sphere primitive", 1, 0, centre);
+    }
+    release(&t);
+}
+
 /* The sphere resting on a plane at its pole, both NURBS (the peer
  * benchmark's sphere-touch case): before, the locator refused the pole and
  * the search ran into its 2000000-cell limit, incomplete, with no point. */
@@ -439,6 +458,58 @@ static void test_polynomial_kinds(const char *dir)
     }
 }
 
+/* Two free-form bicubic patches (tests/truth/gen_nurbs_freeform.py): the
+ * closed curve over u^2 + v^2 = 9/25, its length by quadrature of the
+ * exact parametrisation, kappa and tau at eight points from its exact
+ * derivatives (mpmath, sympy). */
+static void test_freeform_pair(void)
+{
+    char path[600], line[512];
+    snprintf(path, sizeof path, "%s/tests/truth/nurbs_freeform_truth.txt", source_dir);
+    FILE *f = fopen(path, "r");
+    traced t;
+    if (!REQUIRE(f, "cannot open %s", path))
+        return;
+    if (trace_named(&t, "problem-freeform-bicubic.json") != 0) {
+        fclose(f);
+        return;
+    }
+    const int n = ic_trace_result_num_curves(t.res);
+    CHECK(n == 1 && ic_trace_result_report(t.res)->complete, "free-form pair: %d curves", n);
+    ic_local_options opt;
+    ic_local_defaults(&opt);
+    int points = 0;
+    double v[5];
+    while (fgets(line, sizeof line, f)) {
+        if (sscanf(line, "length %lf", &v[0]) == 1 && n == 1) {
+            CHECK(ic_trace_result_curve(t.res, 0)->closed, "free-form pair: a closed curve");
+            CHECK_CLOSE(ic_trace_result_curve(t.res, 0)->length, v[0], LENGTH_TOL,
+                        "free-form pair's curve");
+        } else if (sscanf(line, "at %lf %lf %lf %lf %lf", &v[0], &v[1], &v[2], &v[3], &v[4]) ==
+                   5) {
+            ic_local_point pt;
+            ic_local_result res;
+            ic_error err;
+            if (!REQUIRE(ic_local_locate(t.pair, &pt, v, &opt, &err) == IC_OK &&
+                             ic_local_apparatus(t.pair, &res, &pt, 4, IC_METHOD_JET, &opt, &err) ==
+                                 IC_OK,
+                         "free-form pair at (%g, %g, %g): %s", v[0], v[1], v[2], err.message))
+                continue;
+            const ic_branch *br = &res.branches[0];
+            worst_apparatus = fmax(worst_apparatus, fmax(fabs(br->kappa - v[3]) / fmax(1, v[3]),
+                                                         fabs(br->tau - v[4]) / fmax(1, fabs(v[4]))));
+            CHECK(fabs(br->kappa - v[3]) <= APPARATUS_TOL * fmax(1, v[3]) &&
+                      fabs(br->tau - v[4]) <= APPARATUS_TOL * fmax(1, fabs(v[4])),
+                  "free-form pair at (%g, %g, %g): kappa %.17g tau %.17g, want %.17g %.17g", v[0],
+                  v[1], v[2], br->kappa, br->tau, v[3], v[4]);
+            points++;
+        }
+    }
+    fclose(f);
+    CHECK(points == 8, "%d truth points, want 8", points);
+    release(&t);
+}
+
 int main(int argc, char **argv)
 {
     if (!REQUIRE(argc > 1, "usage: test_nurbs_traces SOURCE_DIR"))
@@ -447,7 +518,9 @@ int main(int argc, char **argv)
     test_quadrics();
     test_viviani_pairings();
     test_contact_at_pole();
+    test_with_primitive();
     test_polynomial_kinds(source_dir);
+    test_freeform_pair();
     test_knot_line("problem-knotline-plane.json");
     test_knot_line("problem-knotline-plane-reversed.json");
     printf("largest relative curvature or torsion error: %.3g\n", worst_apparatus);

@@ -23,7 +23,11 @@ exact), resting on the plane z = 0 written as a bilinear NURBS patch over
 [-2, 2]^2: one isolated contact at (0, 0, 0), the sphere's south pole, where
 its parametrisation degenerates (problem-sphere-touch-nurbs-nurbs.json).
 
-Run: python3 tests/truth/gen_nurbs_pairings.py  (writes the five files)
+And the NURBS cylinder of radius 1 (surface-cylinder.json) with the sphere
+primitive of radius 2 (parametric form): two unit circles at z = +-sqrt(3),
+each 2 pi long (problem-cylinder-sphere-primitive.json).
+
+Run: python3 tests/truth/gen_nurbs_pairings.py  (writes the six files)
 """
 import json
 import os
@@ -79,7 +83,13 @@ def main():
              "control_points": [[[-2, -2, 0], [-2, 2, 0]], [[2, -2, 0], [2, 2, 0]]]}
     touch = {"title": "The unit NURBS sphere resting on a NURBS plane at its south pole "
                       "(tests/truth/gen_nurbs_pairings.py)", "surfaces": [lifted, plane]}
+    cylinder = load("surface-cylinder.json")
+    with_primitive = {"title": "The NURBS cylinder of radius 1 and the sphere primitive of "
+                               "radius 2: two unit circles (tests/truth/gen_nurbs_pairings.py)",
+                      "surfaces": [cylinder, {"name": "sphere", "type": "sphere",
+                                              "form": "parametric", "radius": 2}]}
     for name, doc in (("problem-viviani-nurbs-nurbs.json", both),
+                      ("problem-cylinder-sphere-primitive.json", with_primitive),
                       ("problem-sphere-touch-nurbs-nurbs.json", touch),
                       ("problem-viviani-nurbs-formula.json", formula),
                       ("geomdl-knotline.json", geomdl),

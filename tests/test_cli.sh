@@ -249,6 +249,14 @@ check "trace problem-sphere-plane.json exits 0 ($(cat "$errf"))" $?
 grep -E '^ +1 +yes +transversal ' "$out" | awk -v pi=3.14159265358979324 \
     '{ n++; d = $4 - 15 * pi; if (d < 0) d = -d; ok = $5 > 0 && d < 1e-9 } END { exit !(n == 1 && ok) }'
 check "problem-sphere-plane.json: one closed circle of length 15 pi within 1e-9" $?
+# the same sphere from the IGES file OpenCASCADE wrote (entity 128, DE 5):
+# IGES holds about 10 digits (the control points off the sphere by 1.9e-10
+# relative, test_cad), so the length is good to about 1e-8 (measured 9e-10)
+"$bin" trace "$c/problem-sphere-plane-iges.json" --format text >"$out" 2>"$errf"
+check "trace problem-sphere-plane-iges.json exits 0 ($(cat "$errf"))" $?
+grep -E '^ +1 +yes +transversal ' "$out" | awk -v pi=3.14159265358979324 \
+    '{ n++; d = $4 - 15 * pi; if (d < 0) d = -d; ok = $5 > 0 && d < 1e-8 } END { exit !(n == 1 && ok) }'
+check "problem-sphere-plane-iges.json: one closed circle of length 15 pi within 1e-8" $?
 expect_error 1 "eval $c/problem-bad-entity.json --at 0,0" "problem-bad-entity.json" "surfaces[0].entity" "bspline.step" "#58" "not a surface"
 
 echo "test_cli: $pass passed, $fail failed"

@@ -406,6 +406,40 @@ static void test_enneper_self(const char *dir)
     release(&t);
 }
 
+/* geomdl files: read like the inline patch; what is wrong with one is
+ * named by the problem's path and the file's own path. */
+static void test_geomdl_errors(const char *dir)
+{
+    static const struct {
+        const char *entry, *path, *words;
+    } cases[] = {
+        {"\"file\": \"%s/tests/data/nurbs/no-such-file.json\"", "surfaces[0].file", "cannot open"},
+        {"\"file\": \"%s/tests/data/nurbs/geomdl-knotline.json\", \"index\": 1", "surfaces[0]",
+         "past the last surface"},
+        {"\"file\": \"%s/tests/data/nurbs/problem-knotline-plane.json\"", "surfaces[0]",
+         "no \"shape\""},
+        {"\"file\": \"%s/tests/data/nurbs\"", "surfaces[0].file", "not a regular file"},
+        {"\"file\": \"%s/tests/data/nurbs/geomdl-knotline.json\", \"index\": -1",
+         "surfaces[0].index", "whole number"},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        char entry[600], doc[1200];
+        snprintf(entry, sizeof entry, cases[k].entry, dir);
+        snprintf(doc, sizeof doc,
+                 "{\"surfaces\": [{\"type\": \"geomdl\", %s}, {\"type\": \"sphere\", "
+                 "\"radius\": 1}]}",
+                 entry);
+        ic_problem *p = NULL;
+        ic_error err;
+        const ic_status st = ic_problem_parse(&p, doc, strlen(doc), &err);
+        CHECK(st != IC_OK && strcmp(err.path, cases[k].path) == 0 &&
+                  strstr(err.message, cases[k].words),
+              "geomdl case %zu: status %d, path \"%s\", message \"%s\"", k, st, err.path,
+              err.message);
+        ic_problem_free(p);
+    }
+}
+
 int main(int argc, char **argv)
 {
     test_points_against_definition();
@@ -414,5 +448,7 @@ int main(int argc, char **argv)
     test_problem_errors();
     if (REQUIRE(argc > 1, "usage: test_nurbs SOURCE_DIR"))
         test_enneper_self(argv[1]);
+    if (argc > 1)
+        test_geomdl_errors(argv[1]);
     return harness_finish("nurbs");
 }

@@ -523,6 +523,7 @@ int main(int argc, char **argv)
     test_freeform_pair();
     test_knot_line("problem-knotline-plane.json");
     test_knot_line("problem-knotline-plane-reversed.json");
+    test_knot_line("problem-geomdl-knotline.json"); /* the patch from a geomdl file */
     printf("largest relative curvature or torsion error: %.3g\n", worst_apparatus);
     return harness_finish("nurbs_traces");
 }

@@ -153,7 +153,8 @@ int main(int argc, char **argv)
                            "sphere-cylinder-branch.json", "sphere-plane-contact.json",
                            "torus-sphere.json",           "torus-plane-tangential.json",
                            "cylinders.json",              "cylinders-equal.json",
-                           "small-loop.json",             "tacnode.json"};
+                           "small-loop.json",             "tacnode.json",
+                           "nurbs-patch-sphere.json",     "placed-cylinders.json"};
     for (size_t c = 0; c < sizeof files / sizeof files[0]; c++)
         for (int k = 0; k < 3; k++)
             if (whole_example(dir, files[c], tols[k]) != 0)

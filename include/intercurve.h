@@ -11,6 +11,7 @@
 #include "intercurve/jet.h"
 #include "intercurve/expr.h"
 #include "intercurve/surface.h"
+#include "intercurve/bspline.h"
 #include "intercurve/local.h"
 #include "intercurve/trace.h"
 #include "intercurve/problem.h"

@@ -173,6 +173,11 @@ IC_API void ic_surface_free(ic_surface *s);
 IC_API int ic_surface_knot_crossed(const ic_surface *s, int dir, double from, double to,
                                    double *knot);
 
+/** 1 if parameter dir of a NURBS patch wraps (periodic) at a seam, where its
+ *  derivatives may jump as on a knot line: the two ends of the domain are
+ *  one line, the tracer puts a point on it like on a knot line. Else 0. */
+IC_API int ic_surface_knot_seam(const ic_surface *s, int dir);
+
 /**
  * Which polynomial piece of a NURBS patch gives the derivatives at a point on
  * a knot line: side[d] = -1 the piece below the knot along parameter d, +1

@@ -20,6 +20,7 @@
 #define INTERCURVE_TRACE_H
 
 #include "intercurve/common.h"
+#include "intercurve/bspline.h"
 #include "intercurve/local.h"
 
 #ifdef __cplusplus
@@ -216,6 +217,30 @@ IC_API const ic_trace_curve *ic_trace_result_curve(const ic_trace_result *res, i
 IC_API int ic_trace_result_num_specials(const ic_trace_result *res);
 IC_API const ic_trace_special *ic_trace_result_special(const ic_trace_result *res, int i);
 IC_API const ic_trace_report *ic_trace_result_report(const ic_trace_result *res);
+
+/**
+ * A traced curve as B-splines (docs/bspline.md): in space, parametrised by
+ * the curve's arc length s, and on each parametric sheet a curve in its
+ * parameter plane with the same knots, so that R_sheet(pcurve(s)) = curve(s).
+ * Piecewise quintic: on each stretch between traced points the quintic that
+ * matches the point, c' and c'' exactly at both ends (C^2 at the knots).
+ */
+typedef struct {
+    ic_bspline curve;
+    /** dim 2; ncontrol 0 and NULL arrays for an implicit surface, or where
+     *  the sheet's parametrisation degenerates on the curve (a pole) */
+    ic_bspline pcurves[2];
+    /** length: the largest distance found, at checks between the traced
+     *  points, from the curve to the intersection (points corrected onto
+     *  both surfaces) and from a pcurve's image to the curve */
+    double fit_error;
+    int checks; /**< how many places were checked */
+} ic_curve_fit;
+
+/** Fits curve c of a trace of `pair` (curves of at least 2 points). */
+IC_API IC_NODISCARD ic_status ic_curve_fit_new(ic_curve_fit **fit, ic_pair *pair,
+                                               const ic_trace_curve *c, ic_error *err);
+IC_API void ic_curve_fit_free(ic_curve_fit *fit);
 
 #ifdef __cplusplus
 }

@@ -210,8 +210,11 @@ double ic_nurbs_wrap(const ic_nurbs_patch *pt, int dir, double t)
 
 int ic_nurbs_find_span(const ic_nurbs_patch *pt, int dir, double t, ic_nurbs_side side)
 {
-    const int p = pt->p[dir], n = pt->n[dir];
-    const double *k = pt->knots[dir];
+    return ic_knot_span(pt->knots[dir], pt->p[dir], pt->n[dir], t, side);
+}
+
+int ic_knot_span(const double *k, int p, int n, double t, ic_nurbs_side side)
+{
     /* the first and last nonempty spans of the domain */
     int first = p, last = n - 1;
     while (k[first + 1] == k[first])
@@ -253,3 +256,14 @@ int ic_nurbs_knot_crossed(const ic_nurbs_patch *pt, int dir, double from, double
     *knot = c + shift;
     return 1;
 }
+
+double ic_nurbs_wrap_side(const ic_nurbs_patch *pt, int dir, double t, ic_nurbs_side side)
+{
+    const double w = ic_nurbs_wrap(pt, dir, t);
+    /* on the seam, the piece below it is the domain's last */
+    return pt->periodic[dir] && side == IC_NURBS_LEFT && w == pt->domain[dir][0]
+               ? pt->domain[dir][1]
+               : w;
+}
+
+int ic_nurbs_seam(const ic_nurbs_patch *pt, int dir) { return pt->periodic[dir]; }

@@ -58,6 +58,16 @@ ic_status ic_nurbs_interval_grad(const ic_nurbs_patch *patch, ic_interval_grad *
  * domain takes the end span (the end pieces extended). */
 int ic_nurbs_find_span(const ic_nurbs_patch *patch, int dir, double t, ic_nurbs_side side);
 
+/* The same over any knot vector k of a degree-p B-spline with n control
+ * points (curves too). */
+int ic_knot_span(const double *k, int p, int n, double t, ic_nurbs_side side);
+
+/* d^r/dt^r / r! of the degree-p basis functions nonzero on span s of knots
+ * k at t: taylor[r][i] for N_{s-p+i,p}(t), r = 0..m (m <= p), i = 0..p
+ * (Cox-de Boor; Piegl and Tiller 1997, eqs. 2.5 and 2.9). */
+void ic_basis_taylor(double taylor[][IC_NURBS_MAX_DEGREE + 1], const double *k, int s, int p,
+                     double t, int m);
+
 /* t moved into the natural domain by whole periods along a wrapping
  * parameter (unchanged otherwise). */
 double ic_nurbs_wrap(const ic_nurbs_patch *patch, int dir, double t);
@@ -68,5 +78,12 @@ double ic_nurbs_wrap(const ic_nurbs_patch *patch, int dir, double t);
  * not one: parameters jump there). from and to on one side of the seam. */
 int ic_nurbs_knot_crossed(const ic_nurbs_patch *patch, int dir, double from, double to,
                           double *knot);
+
+/* ic_nurbs_wrap, and on a wrapping parameter's seam with side LEFT the
+ * domain's upper end (so the piece below the seam is taken). */
+double ic_nurbs_wrap_side(const ic_nurbs_patch *patch, int dir, double t, ic_nurbs_side side);
+
+/* Whether parameter dir wraps at a seam (where derivatives may jump). */
+int ic_nurbs_seam(const ic_nurbs_patch *patch, int dir);
 
 #endif

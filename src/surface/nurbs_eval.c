@@ -11,7 +11,8 @@ enum { MAXP = IC_NURBS_MAX_DEGREE + 1 };
 
 /* d/dt^r of the degree-p functions nonzero on span s, divided by r!:
  * taylor[r][i] for N_{s-p+i,p}(t), r = 0..m (m <= p), i = 0..p. */
-static void basis_taylor(double taylor[MAXP][MAXP], const double *k, int s, int p, double t, int m)
+void ic_basis_taylor(double taylor[][IC_NURBS_MAX_DEGREE + 1], const double *k, int s, int p,
+                     double t, int m)
 {
     /* der[r][d][i]: r-th derivative of the degree-d functions N_{s-d+i,d} */
     double der[MAXP][MAXP][MAXP];
@@ -58,10 +59,10 @@ ic_status ic_nurbs_taylor(const ic_nurbs_patch *pt, double *out, const double at
     int span[2], m[2];
     double b[2][MAXP][MAXP];
     for (int d = 0; d < 2; d++) {
-        const double t = ic_nurbs_wrap(pt, d, at[d]);
+        const double t = ic_nurbs_wrap_side(pt, d, at[d], side[d]);
         span[d] = ic_nurbs_find_span(pt, d, t, side[d]);
         m[d] = K < pt->p[d] ? K : pt->p[d];
-        basis_taylor(b[d], pt->knots[d], span[d], pt->p[d], t, m[d]);
+        ic_basis_taylor(b[d], pt->knots[d], span[d], pt->p[d], t, m[d]);
     }
     double *hom = work; /* X, Y, Z, W jets */
     memset(hom, 0, sizeof(double) * 4 * (size_t)n);
@@ -123,9 +124,9 @@ ic_status ic_nurbs_compose(const ic_nurbs_patch *pt, double *out, const double *
     for (int d = 0; d < 2; d++) {
         /* the piece's whole polynomial about the point: Taylor to its degree */
         double b[MAXP][MAXP], a[MAXP];
-        const double t = ic_nurbs_wrap(pt, d, in[d][0]);
+        const double t = ic_nurbs_wrap_side(pt, d, in[d][0], side[d]);
         span[d] = ic_nurbs_find_span(pt, d, t, side[d]);
-        basis_taylor(b, pt->knots[d], span[d], pt->p[d], t, pt->p[d]);
+        ic_basis_taylor(b, pt->knots[d], span[d], pt->p[d], t, pt->p[d]);
         ic_jet_copy(delta[d], in[d], sp);
         delta[d][0] = 0;
         for (int i = 0; i <= pt->p[d]; i++) {

@@ -168,6 +168,11 @@ int ic_surface_knot_crossed(const ic_surface *s, int dir, double from, double to
     return ic_nurbs_knot_crossed(s->nurbs, dir, from, to, knot);
 }
 
+int ic_surface_knot_seam(const ic_surface *s, int dir)
+{
+    return s->backend == BACKEND_NURBS && dir >= 0 && dir <= 1 && ic_nurbs_seam(s->nurbs, dir);
+}
+
 void ic_surface_set_knot_side(ic_surface *s, const int side[2])
 {
     for (int d = 0; d < 2; d++)

@@ -242,9 +242,25 @@ typedef struct {
     double bound;
 } boundary;
 
-static double coordinate(const ic_local_point *pt, const boundary *b)
+/* The period of sheet s's parameter i, 0 if it does not wrap. */
+static double period_of(const ic_tracer *tr, int s, int i)
 {
-    return b->sheet < 0 ? pt->xyz[b->index] : pt->params[b->sheet][b->index];
+    return tr->periodic[s][i] ? tr->domain[s][i][1] - tr->domain[s][i][0] : 0;
+}
+
+/* A parameter value moved by whole periods next to `near` (unchanged where
+ * the parameter does not wrap): the corrector returns wrapped values. */
+static double unwrap_near(const ic_tracer *tr, int s, int i, double x, double near)
+{
+    const double P = period_of(tr, s, i);
+    return P > 0 ? x + P * round((near - x) / P) : x;
+}
+
+static double coordinate(const ic_tracer *tr, const ic_local_point *pt, const boundary *b)
+{
+    if (b->sheet < 0)
+        return pt->xyz[b->index];
+    return unwrap_near(tr, b->sheet, b->index, pt->params[b->sheet][b->index], b->bound);
 }
 
 static int outside(const ic_tracer *tr, const ic_local_point *pt, ic_trace_event *ev, boundary *b)
@@ -311,7 +327,7 @@ static int on_boundary_heading_out(const ic_tracer *tr, ic_trace_event *event)
     const double width = b.sheet < 0 ? tr->opt.local.scale
                                      : tr->domain[b.sheet][b.index][1] -
                                            tr->domain[b.sheet][b.index][0];
-    return fabs(coordinate(&tr->cur, &b) - b.bound) <= IC_TRACE_EDGE_REL * width;
+    return fabs(coordinate(tr, &tr->cur, &b) - b.bound) <= IC_TRACE_EDGE_REL * width;
 }
 
 /* The corrected point after a step of length h (0 if the corrector fails);
@@ -357,12 +373,12 @@ static int land_on_boundary(const ic_tracer *tr, double h, boundary b, ic_local_
                             double *hb)
 {
     for (int corner = 0; corner < 4; corner++) {
-        double a = 0, fa = coordinate(&tr->cur, &b) - b.bound, c = h, fc;
+        double a = 0, fa = coordinate(tr, &tr->cur, &b) - b.bound, c = h, fc;
         ic_local_point p;
         double X[3];
         if (!corrected(tr, c, &p, X))
             return -1;
-        fc = coordinate(&p, &b) - b.bound;
+        fc = coordinate(tr, &p, &b) - b.bound;
         if (fa * fc > 0)
             return -1;
         int side = 0, done = 0;
@@ -370,7 +386,7 @@ static int land_on_boundary(const ic_tracer *tr, double h, boundary b, ic_local_
             const double m = (a * fc - c * fa) / (fc - fa);
             if (!corrected(tr, m, &p, X))
                 return -1;
-            const double fm = coordinate(&p, &b) - b.bound;
+            const double fm = coordinate(tr, &p, &b) - b.bound;
             done = fabs(fm) <= 1e-14 * (1 + fabs(b.bound)) || c - a <= 1e-15 * h;
             if (fm * fc > 0) {
                 c = m, fc = fm;
@@ -528,23 +544,40 @@ static int on_knot_line(const ic_tracer *tr, int s, int i, double x)
     return ic_surface_knot_crossed(ic_pair_surface(tr->pair, s), i, x - snap, x + snap, &knot);
 }
 
+/* The knot line, or the seam of a wrapping NURBS parameter, that sheet s's
+ * parameter i meets first going from a to z (z unwrapped next to a): 1 and
+ * *at (in a's frame), else 0. One that a stands on is not met again. */
+static int meets_line(const ic_tracer *tr, int s, int i, double a, double z, double *at)
+{
+    ic_surface *S = ic_pair_surface(tr->pair, s);
+    const double *d = tr->domain[s][i], snap = knot_snap(tr, s, i);
+    double knot;
+    if (ic_surface_knot_crossed(S, i, a, z, &knot) && fabs(knot - a) > snap) {
+        *at = knot;
+        return 1;
+    }
+    if (!tr->periodic[s][i] || !ic_surface_knot_seam(S, i))
+        return 0;
+    const double seam = z > a ? d[1] : d[0];
+    if ((z > a ? z >= seam : z <= seam) && fabs(seam - a) > snap) {
+        *at = seam;
+        return 1;
+    }
+    return 0;
+}
+
 /* The knot line of a NURBS sheet (docs/nurbs.md) the step from cur to
- * next crosses first, as a boundary to land on; one cur stands on is not
- * crossed again. */
+ * next crosses first, as a boundary to land on. */
 static int crosses_knot_line(const ic_tracer *tr, const ic_local_point *next, boundary *b)
 {
     int found = 0;
     double first = INFINITY;
     for (int s = 0; s < 2; s++)
         for (int i = 0; tr->par[s] && i < 2; i++) {
-            const double a = tr->cur.params[s][i], z = next->params[s][i];
-            const double *d = tr->domain[s][i];
+            const double a = tr->cur.params[s][i];
+            const double z = unwrap_near(tr, s, i, next->params[s][i], a);
             double knot;
-            /* a step across a periodic seam has its parameter wrapped: the
-             * knots between its ends in the domain are not the ones it met */
-            if ((tr->periodic[s][i] && fabs(z - a) > 0.5 * (d[1] - d[0])) ||
-                !ic_surface_knot_crossed(ic_pair_surface(tr->pair, s), i, a, z, &knot) ||
-                fabs(knot - a) <= knot_snap(tr, s, i))
+            if (!meets_line(tr, s, i, a, z, &knot))
                 continue;
             const double f = (knot - a) / (z - a); /* how far along the step */
             if (f < first)
@@ -564,9 +597,14 @@ static int set_knot_sides(const ic_tracer *tr, const ic_local_point *on, const i
         for (int i = 0; tr->par[s] && i < 2; i++)
             if (on_knot_line(tr, s, i, on->params[s][i])) {
                 sheets |= 1 << s;
-                side[s][i] = next->params[s][i] > on->params[s][i] ? 1 : -1;
+                side[s][i] = unwrap_near(tr, s, i, next->params[s][i], on->params[s][i]) >
+                                     on->params[s][i]
+                                 ? 1
+                                 : -1;
             }
-    side[landed.sheet][landed.index] = next->params[landed.sheet][landed.index] > landed.bound ? 1 : -1;
+    const double ahead = unwrap_near(tr, landed.sheet, landed.index,
+                                     next->params[landed.sheet][landed.index], landed.bound);
+    side[landed.sheet][landed.index] = ahead > landed.bound ? 1 : -1;
     for (int s = 1; s >= 0; s--) /* sheet 0 last: it wins where the sheets share a surface */
         if (tr->par[s])
             ic_surface_set_knot_side(ic_pair_surface(tr->pair, s), side[s]);

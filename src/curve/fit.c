@@ -1,0 +1,364 @@
+/* A traced curve as B-splines (docs/bspline.md): quintic Hermite pieces
+ * from the exact first and second derivatives at the traced points (the
+ * curve in space by arc length; its parameter curves on the parametric
+ * sheets by the chain rule), checked against corrected points of the
+ * intersection between the points. */
+#include "intercurve/bspline.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "common/vec3.h"
+#include "intercurve/trace.h"
+
+enum { DEGREE = 5 };
+
+/* the data of one curve point: position and its first two derivatives with
+ * respect to arc length, in dim coordinates */
+typedef struct {
+    double s;
+    double x[3];
+    double d1[3], d2[3];   /* of the stretch after the node (larger s) */
+    double d1b[3], d2b[3]; /* of the stretch before it: different on a knot line */
+} hermite_node;
+
+/* Quintic Bezier of one segment matching x, x', x'' at both ends (with
+ * respect to s over h = s1 - s0): b1 = x0 + h x0'/5, b2 = x0 + 2h x0'/5 +
+ * h^2 x0''/20, and symmetrically at the far end. */
+static void hermite_bezier(double *b, const hermite_node *a, const hermite_node *z, int dim)
+{
+    const double h = z->s - a->s;
+    for (int j = 0; j < dim; j++) {
+        b[0 * dim + j] = a->x[j];
+        b[1 * dim + j] = a->x[j] + h * a->d1[j] / 5;
+        b[2 * dim + j] = a->x[j] + 2 * h * a->d1[j] / 5 + h * h * a->d2[j] / 20;
+        b[3 * dim + j] = z->x[j] - 2 * h * z->d1b[j] / 5 + h * h * z->d2b[j] / 20;
+        b[4 * dim + j] = z->x[j] - h * z->d1b[j] / 5;
+        b[5 * dim + j] = z->x[j];
+    }
+}
+
+/* The piecewise quintic through the nodes as one clamped B-spline: each
+ * interior knot of multiplicity 5 (the pieces' Bezier nets laid end to end;
+ * the curve is C^2 there by construction). */
+static ic_status piecewise(ic_bspline *c, const hermite_node *nodes, int n, int dim, ic_error *err)
+{
+    const int segments = n - 1;
+    memset(c, 0, sizeof *c);
+    c->dim = dim;
+    c->degree = DEGREE;
+    c->ncontrol = DEGREE * segments + 1;
+    c->knots = malloc(sizeof(double) * (size_t)(c->ncontrol + DEGREE + 1));
+    c->control = malloc(sizeof(double) * (size_t)(c->ncontrol * dim));
+    if (!c->knots || !c->control)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory fitting a curve");
+    int k = 0;
+    for (int r = 0; r <= DEGREE; r++)
+        c->knots[k++] = nodes[0].s;
+    for (int i = 1; i < segments; i++)
+        for (int r = 0; r < DEGREE; r++)
+            c->knots[k++] = nodes[i].s;
+    for (int r = 0; r <= DEGREE; r++)
+        c->knots[k++] = nodes[n - 1].s;
+    for (int i = 0; i < segments; i++)
+        hermite_bezier(c->control + (size_t)DEGREE * dim * i, &nodes[i], &nodes[i + 1], dim);
+    return IC_OK;
+}
+
+/* (u', v') and (u'', v'') of a parametric sheet along the curve from c'
+ * and c'': c' = R_u u' + R_v v' and c'' - (R_uu u'^2 + 2 R_uv u'v' + R_vv
+ * v'^2) = R_u u'' + R_v v'', each solved by least squares (the normal
+ * equations of the tangent basis). 0 where the sheet is degenerate. */
+static int param_derivatives(ic_surface *S, const ic_jet_space *sp, const double uv[2],
+                             const double *d1, const double *d2, double out1[2], double out2[2])
+{
+    double t[3 * 6];
+    if (ic_surface_taylor(S, t, uv, sp, NULL) != IC_OK)
+        return 0;
+    const int iu = ic_jet_index(sp, (int[]){1, 0}), iv = ic_jet_index(sp, (int[]){0, 1});
+    const int iuu = ic_jet_index(sp, (int[]){2, 0}), iuv = ic_jet_index(sp, (int[]){1, 1});
+    const int ivv = ic_jet_index(sp, (int[]){0, 2});
+    double Ru[3], Rv[3], Ruu[3], Ruv[3], Rvv[3];
+    for (int k = 0; k < 3; k++) { /* Taylor coefficients to derivatives */
+        Ru[k] = t[6 * k + iu], Rv[k] = t[6 * k + iv];
+        Ruu[k] = 2 * t[6 * k + iuu], Ruv[k] = t[6 * k + iuv], Rvv[k] = 2 * t[6 * k + ivv];
+    }
+    const double E = ic_dot3(Ru, Ru), F = ic_dot3(Ru, Rv), G = ic_dot3(Rv, Rv), det = E * G - F * F;
+    if (!(det > 1e-20 * (E * G)) || !isfinite(det))
+        return 0;
+    double a = ic_dot3(Ru, d1), b = ic_dot3(Rv, d1);
+    out1[0] = (G * a - F * b) / det, out1[1] = (E * b - F * a) / det;
+    double r[3];
+    for (int k = 0; k < 3; k++)
+        r[k] = d2[k] - (Ruu[k] * out1[0] * out1[0] + 2 * Ruv[k] * out1[0] * out1[1] +
+                        Rvv[k] * out1[1] * out1[1]);
+    a = ic_dot3(Ru, r), b = ic_dot3(Rv, r);
+    out2[0] = (G * a - F * b) / det, out2[1] = (E * b - F * a) / det;
+    return 1;
+}
+
+/* The space nodes of a traced curve: x, c' = t, c'' = kappa n (0 where the
+ * curvature is 0 or not finite, a cusp at an end). Points at the same s as
+ * the one before are left out. Returns the number of nodes. */
+static int space_nodes(const ic_trace_curve *c, hermite_node *nodes, int *source)
+{
+    int n = 0;
+    for (int i = 0; i < c->npoints; i++) {
+        const ic_trace_point *p = &c->points[i];
+        if (n > 0 && !(p->s > nodes[n - 1].s))
+            continue;
+        hermite_node *h = &nodes[n];
+        h->s = p->s;
+        const int curved = p->frame_defined && isfinite(p->kappa);
+        for (int k = 0; k < 3; k++) {
+            h->x[k] = p->xyz[k];
+            h->d1[k] = h->d1b[k] = p->t[k];
+            h->d2[k] = h->d2b[k] = curved ? p->kappa * p->n[k] : 0;
+        }
+        source[n++] = i;
+    }
+    return n;
+}
+
+/* relative (of a domain's width): a parameter this close to a knot stands
+ * on its knot line (the tracer's snap, IC_TRACE_KNOT_SNAP_REL) */
+#define FIT_KNOT_SNAP_REL 1e-13
+/* relative to the parameter speed: a curve whose parameter moves slower
+ * than this along a knot line's normal touches the line rather than
+ * crossing it (Viviani's curve at the top of a sphere written about y),
+ * and lies on the side its second derivative points to, before and after */
+#define FIT_TOUCHING_REL 1e-8
+
+/* The knot sides of sheet s at a point on its knot lines for the stretch
+ * after the point (way = +1) or before it (way = -1): the piece a
+ * parameter moves into along the curve that way. side[i] = 0 off knots. */
+static void knot_sides(ic_pair *pair, int s, const ic_trace_point *p, const double d1[2],
+                       const double d2[2], int way, int side[2], double on[2])
+{
+    ic_surface *S = ic_pair_surface(pair, s);
+    double dom[2][2], knot;
+    ic_surface_get_domain(S, dom, NULL);
+    const double speed = hypot(d1[0], d1[1]);
+    for (int i = 0; i < 2; i++) {
+        const double x = p->params[s][i], snap = FIT_KNOT_SNAP_REL * (dom[i][1] - dom[i][0]);
+        side[i] = 0;
+        on[i] = x;
+        const int on_seam = ic_surface_knot_seam(S, i) &&
+                            (fabs(x - dom[i][0]) <= snap || fabs(x - dom[i][1]) <= snap);
+        if (!on_seam && !ic_surface_knot_crossed(S, i, x - snap, x + snap, &knot))
+            continue;
+        /* exactly on the line (a sheet that did not land there stands within
+         * rounding of it): the side then picks the piece */
+        on[i] = on_seam ? (fabs(x - dom[i][0]) <= snap ? dom[i][0] : dom[i][1]) : knot;
+        if (fabs(d1[i]) > FIT_TOUCHING_REL * speed) /* crossing: the piece ahead that way */
+            side[i] = (d1[i] > 0) == (way > 0) ? 1 : -1;
+        else if (d2[i] != 0) /* touching the line: the curve stays on one side */
+            side[i] = d2[i] > 0 ? 1 : -1;
+    }
+}
+
+/* The curve's c'' on the stretch after (way = +1) or before (-1) a point on
+ * knot lines: the apparatus with each sheet's piece on that side forced. */
+static int side_curvature(ic_pair *pair, const ic_trace_point *p, const double on[2][2],
+                          int sides[2][2], double d2[3])
+{
+    for (int s = 0; s < 2; s++)
+        if (ic_surface_get_kind(ic_pair_surface(pair, s)) == IC_PARAMETRIC)
+            ic_surface_set_knot_side(ic_pair_surface(pair, s), sides[s]);
+    ic_local_options opt;
+    ic_local_defaults(&opt);
+    ic_local_point pt;
+    memset(&pt, 0, sizeof pt);
+    memcpy(pt.xyz, p->xyz, sizeof pt.xyz);
+    memcpy(pt.params, on, sizeof pt.params);
+    ic_local_result res;
+    const int ok = ic_local_apparatus(pair, &res, &pt, 2, IC_METHOD_JET, &opt, NULL) == IC_OK &&
+                   res.type == IC_POINT_TRANSVERSAL;
+    for (int s = 0; s < 2; s++)
+        ic_surface_set_knot_side(ic_pair_surface(pair, s), NULL);
+    if (!ok)
+        return 0;
+    for (int k = 0; k < 3; k++) /* c'' = kappa n whichever way t points */
+        d2[k] = res.branches[0].frame_defined ? res.branches[0].kappa * res.branches[0].n[k] : 0;
+    return 1;
+}
+
+/* The knot sides of every sheet at a point on knot lines, for the stretch
+ * before (sides[0]) and after (sides[1]) it. */
+static void knot_ways(ic_pair *pair, const ic_trace_point *p, const ic_jet_space *sp,
+                      const hermite_node *h, int sides[2][2][2], double on[2][2])
+{
+    memset(sides, 0, sizeof(int) * 8);
+    memcpy(on, p->params, sizeof(double) * 4);
+    for (int s = 0; s < 2; s++) {
+        double d1[2], d2[2];
+        if (!((p->knot_line >> s) & 1) ||
+            !param_derivatives(ic_pair_surface(pair, s), sp, p->params[s], h->d1, h->d2, d1, d2))
+            continue;
+        knot_sides(pair, s, p, d1, d2, -1, sides[0][s], on[s]);
+        knot_sides(pair, s, p, d1, d2, +1, sides[1][s], on[s]);
+    }
+}
+
+/* Both sides' c'' at a point on knot lines (the trace gives one side's). */
+static void knot_node(ic_pair *pair, const ic_trace_point *p, const ic_jet_space *sp,
+                      hermite_node *h)
+{
+    int sides[2][2][2];
+    double on[2][2];
+    knot_ways(pair, p, sp, h, sides, on);
+    side_curvature(pair, p, on, sides[0], h->d2b);
+    side_curvature(pair, p, on, sides[1], h->d2);
+}
+
+/* Sheet s's (u', v') and (u'', v'') on both sides of a node (its pieces on
+ * each side of a knot line where it is on one). 0 where degenerate. */
+static int param_node(ic_pair *pair, int s, const ic_trace_point *p, const ic_jet_space *sp,
+                      const hermite_node *space, hermite_node *h)
+{
+    ic_surface *S = ic_pair_surface(pair, s);
+    int sides[2][2][2] = {{{0}}};
+    double on[2][2];
+    memcpy(on, p->params, sizeof on);
+    if (p->knot_line)
+        knot_ways(pair, p, sp, space, sides, on);
+    ic_surface_set_knot_side(S, sides[1][s]);
+    int ok = param_derivatives(S, sp, on[s], space->d1, space->d2, h->d1, h->d2);
+    ic_surface_set_knot_side(S, sides[0][s]);
+    ok = ok && param_derivatives(S, sp, on[s], space->d1b, space->d2b, h->d1b, h->d2b);
+    ic_surface_set_knot_side(S, NULL);
+    return ok;
+}
+
+/* The nearest representative of x modulo the period (periodic directions)
+ * to the value the previous node predicts: a pcurve continues across a
+ * seam rather than jumping back (as CAD systems expect). */
+static double unwrap(double x, double predicted, double period)
+{
+    if (!(period > 0))
+        return x;
+    return x + period * round((predicted - x) / period);
+}
+
+/* The nodes of sheet s's parameter curve from the space nodes; 0 where the
+ * sheet is degenerate at some node (a pole): no pcurve then. */
+static int param_nodes(ic_pair *pair, int s, const ic_trace_curve *c, const hermite_node *space,
+                       const int *source, int n, const ic_jet_space *sp, hermite_node *out)
+{
+    ic_surface *S = ic_pair_surface(pair, s);
+    double dom[2][2];
+    int periodic[2];
+    ic_surface_get_domain(S, dom, periodic);
+    for (int k = 0; k < n; k++) {
+        const double *uv = c->points[source[k]].params[s];
+        hermite_node *h = &out[k];
+        memset(h, 0, sizeof *h);
+        h->s = space[k].s;
+        if (!param_node(pair, s, &c->points[source[k]], sp, &space[k], h))
+            return 0;
+        for (int i = 0; i < 2; i++) {
+            const double prev = k > 0 ? out[k - 1].x[i] + (h->s - out[k - 1].s) * out[k - 1].d1[i]
+                                      : uv[i];
+            h->x[i] = unwrap(uv[i], prev, periodic[i] ? dom[i][1] - dom[i][0] : 0);
+        }
+    }
+    return 1;
+}
+
+void ic_curve_fit_free(ic_curve_fit *f)
+{
+    if (!f)
+        return;
+    free(f->curve.knots);
+    free(f->curve.control);
+    for (int s = 0; s < 2; s++) {
+        free(f->pcurves[s].knots);
+        free(f->pcurves[s].control);
+    }
+    free(f);
+}
+
+/* The distance from the fitted curve at s (between traced points) to the
+ * intersection: its point corrected onto both surfaces from there (the
+ * pcurves' parameters as the guess where there are pcurves), and from each
+ * pcurve's image to the curve. -1 where the corrector fails. */
+static double check_at(ic_pair *pair, const ic_curve_fit *f, const ic_trace_point *near, double s)
+{
+    double X[3], params[2][2];
+    if (ic_bspline_eval(&f->curve, s, 0, X, NULL) != IC_OK)
+        return -1;
+    double worst = 0;
+    memcpy(params, near->params, sizeof params);
+    for (int k = 0; k < 2; k++) {
+        double uv[2], R[3], d[3];
+        if (!f->pcurves[k].ncontrol)
+            continue;
+        if (ic_bspline_eval(&f->pcurves[k], s, 0, uv, NULL) != IC_OK ||
+            ic_surface_eval(ic_pair_surface(pair, k), R, uv, NULL) != IC_OK)
+            return -1;
+        memcpy(params[k], uv, sizeof uv);
+        ic_axpy3(d, R, -1.0, X);
+        worst = fmax(worst, ic_norm3(d));
+    }
+    ic_local_options opt;
+    ic_local_defaults(&opt);
+    ic_local_point pt;
+    double d[3];
+    if (ic_local_locate_guess(pair, &pt, X, params, &opt, NULL) != IC_OK)
+        return -1;
+    ic_axpy3(d, pt.xyz, -1.0, X);
+    return fmax(worst, ic_norm3(d));
+}
+
+/* Checks the fit at the middle of every stretch between traced points. */
+static void check_fit(ic_pair *pair, ic_curve_fit *f, const ic_trace_curve *c,
+                      const hermite_node *nodes, const int *source, int n)
+{
+    f->fit_error = 0;
+    f->checks = 0;
+    for (int k = 0; k + 1 < n; k++) {
+        const double e = check_at(pair, f, &c->points[source[k]], 0.5 * (nodes[k].s + nodes[k + 1].s));
+        if (e < 0) /* no corrected point there: unchecked, said by checks */
+            continue;
+        f->fit_error = fmax(f->fit_error, e);
+        f->checks++;
+    }
+}
+
+ic_status ic_curve_fit_new(ic_curve_fit **out, ic_pair *pair, const ic_trace_curve *c,
+                           ic_error *err)
+{
+    *out = NULL;
+    if (!pair || !c || c->npoints < 2 || !c->points)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "curve fit: no curve of two points or more");
+    ic_curve_fit *f = calloc(1, sizeof *f);
+    hermite_node *nodes = malloc(sizeof *nodes * (size_t)c->npoints * 2);
+    int *source = malloc(sizeof *source * (size_t)c->npoints);
+    ic_jet_space *sp = NULL;
+    ic_status st = f && nodes && source ? ic_jet_space_new(&sp, 2, 2, err)
+                                        : ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
+    const int n = st == IC_OK ? space_nodes(c, nodes, source) : 0;
+    for (int k = 0; k < n; k++)
+        if (c->points[source[k]].knot_line)
+            knot_node(pair, &c->points[source[k]], sp, &nodes[k]);
+    if (st == IC_OK && n < 2)
+        st = ic_error_set(err, IC_ERR_INVALID, 0, "curve fit: the curve has no length");
+    if (st == IC_OK)
+        st = piecewise(&f->curve, nodes, n, 3, err);
+    for (int s = 0; st == IC_OK && s < 2; s++)
+        if (ic_surface_get_kind(ic_pair_surface(pair, s)) == IC_PARAMETRIC &&
+            param_nodes(pair, s, c, nodes, source, n, sp, nodes + c->npoints))
+            st = piecewise(&f->pcurves[s], nodes + c->npoints, n, 2, err);
+    if (st == IC_OK)
+        check_fit(pair, f, c, nodes, source, n);
+    ic_jet_space_free(sp);
+    free(nodes);
+    free(source);
+    if (st != IC_OK) {
+        ic_curve_fit_free(f);
+        return st;
+    }
+    *out = f;
+    return IC_OK;
+}

@@ -235,11 +235,19 @@ typedef struct {
      *  both surfaces) and from a pcurve's image to the curve */
     double fit_error;
     int checks; /**< how many places were checked */
+    /** 1 where a pcurve strayed from the curve by more than the tolerance
+     *  (its sheet's parametrisation degenerates on the curve, a sphere's
+     *  pole: the parameters jump there) and is not given */
+    int pcurve_dropped[2];
 } ic_curve_fit;
 
-/** Fits curve c of a trace of `pair` (curves of at least 2 points). */
+/** Fits curve c of a trace of `pair` (curves of at least 2 points); fit_tol
+ *  (length) is what a pcurve's image may stray from the curve. The curve's
+ *  own error is measured (fit_error), not yet refined where it exceeds
+ *  fit_tol. */
 IC_API IC_NODISCARD ic_status ic_curve_fit_new(ic_curve_fit **fit, ic_pair *pair,
-                                               const ic_trace_curve *c, ic_error *err);
+                                               const ic_trace_curve *c, double fit_tol,
+                                               ic_error *err);
 IC_API void ic_curve_fit_free(ic_curve_fit *fit);
 
 #ifdef __cplusplus

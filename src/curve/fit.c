@@ -279,33 +279,62 @@ void ic_curve_fit_free(ic_curve_fit *f)
     free(f);
 }
 
+/* The distance from pcurve k's image at s to the curve's point X there;
+ * -1 where it cannot be evaluated. */
+static double pcurve_off(ic_pair *pair, const ic_curve_fit *f, int k, double s, const double X[3],
+                         double uv[2])
+{
+    double R[3], d[3];
+    if (ic_bspline_eval(&f->pcurves[k], s, 0, uv, NULL) != IC_OK ||
+        ic_surface_eval(ic_pair_surface(pair, k), R, uv, NULL) != IC_OK)
+        return -1;
+    ic_axpy3(d, R, -1.0, X);
+    return ic_norm3(d);
+}
+
+/* The pcurves at the middle of every stretch: one whose image leaves the
+ * curve by more than tol somewhere (a stretch across a point where its
+ * sheet's parametrisation degenerates, a sphere's pole: the parameters jump
+ * there) is dropped, and said so. */
+static void check_pcurves(ic_pair *pair, ic_curve_fit *f, const hermite_node *nodes, int n,
+                          double tol)
+{
+    for (int k = 0; k < 2; k++)
+        for (int i = 0; f->pcurves[k].ncontrol && i + 1 < n; i++) {
+            const double s = 0.5 * (nodes[i].s + nodes[i + 1].s);
+            double X[3], uv[2];
+            const int ok = ic_bspline_eval(&f->curve, s, 0, X, NULL) == IC_OK;
+            const double e = ok ? pcurve_off(pair, f, k, s, X, uv) : -1;
+            if (e >= 0 && e <= tol)
+                continue;
+            free(f->pcurves[k].knots);
+            free(f->pcurves[k].control);
+            memset(&f->pcurves[k], 0, sizeof f->pcurves[k]);
+            f->pcurve_dropped[k] = 1;
+        }
+}
+
 /* The distance from the fitted curve at s (between traced points) to the
- * intersection: its point corrected onto both surfaces from there (the
+ * intersection, its point corrected onto both surfaces from there (the
  * pcurves' parameters as the guess where there are pcurves), and from each
  * pcurve's image to the curve. -1 where the corrector fails. */
 static double check_at(ic_pair *pair, const ic_curve_fit *f, const ic_trace_point *near, double s)
 {
-    double X[3], params[2][2];
+    double X[3], params[2][2], worst = 0;
     if (ic_bspline_eval(&f->curve, s, 0, X, NULL) != IC_OK)
         return -1;
-    double worst = 0;
     memcpy(params, near->params, sizeof params);
-    for (int k = 0; k < 2; k++) {
-        double uv[2], R[3], d[3];
-        if (!f->pcurves[k].ncontrol)
-            continue;
-        if (ic_bspline_eval(&f->pcurves[k], s, 0, uv, NULL) != IC_OK ||
-            ic_surface_eval(ic_pair_surface(pair, k), R, uv, NULL) != IC_OK)
-            return -1;
-        memcpy(params[k], uv, sizeof uv);
-        ic_axpy3(d, R, -1.0, X);
-        worst = fmax(worst, ic_norm3(d));
-    }
+    for (int k = 0; k < 2; k++)
+        if (f->pcurves[k].ncontrol)
+            worst = fmax(worst, pcurve_off(pair, f, k, s, X, params[k]));
     ic_local_options opt;
     ic_local_defaults(&opt);
     ic_local_point pt;
     double d[3];
-    if (ic_local_locate_guess(pair, &pt, X, params, &opt, NULL) != IC_OK)
+    /* the pcurves' parameters are a guess within the fit; a sheet without
+     * one has only its stretch's start (a step away): from X alone then */
+    if (ic_local_locate_guess(pair, &pt, X, params, &opt, NULL) != IC_OK &&
+        ic_local_locate(pair, &pt, X, &opt, NULL) != IC_OK)
         return -1;
     ic_axpy3(d, pt.xyz, -1.0, X);
     return fmax(worst, ic_norm3(d));
@@ -318,7 +347,8 @@ static void check_fit(ic_pair *pair, ic_curve_fit *f, const ic_trace_curve *c,
     f->fit_error = 0;
     f->checks = 0;
     for (int k = 0; k + 1 < n; k++) {
-        const double e = check_at(pair, f, &c->points[source[k]], 0.5 * (nodes[k].s + nodes[k + 1].s));
+        const double e =
+            check_at(pair, f, &c->points[source[k]], 0.5 * (nodes[k].s + nodes[k + 1].s));
         if (e < 0) /* no corrected point there: unchecked, said by checks */
             continue;
         f->fit_error = fmax(f->fit_error, e);
@@ -327,11 +357,13 @@ static void check_fit(ic_pair *pair, ic_curve_fit *f, const ic_trace_curve *c,
 }
 
 ic_status ic_curve_fit_new(ic_curve_fit **out, ic_pair *pair, const ic_trace_curve *c,
-                           ic_error *err)
+                           double fit_tol, ic_error *err)
 {
     *out = NULL;
     if (!pair || !c || c->npoints < 2 || !c->points)
         return ic_error_set(err, IC_ERR_INVALID, 0, "curve fit: no curve of two points or more");
+    if (!(fit_tol > 0) || !isfinite(fit_tol))
+        return ic_error_set(err, IC_ERR_INVALID, 0, "curve fit: the tolerance must be positive");
     ic_curve_fit *f = calloc(1, sizeof *f);
     hermite_node *nodes = malloc(sizeof *nodes * (size_t)c->npoints * 2);
     int *source = malloc(sizeof *source * (size_t)c->npoints);
@@ -350,8 +382,10 @@ ic_status ic_curve_fit_new(ic_curve_fit **out, ic_pair *pair, const ic_trace_cur
         if (ic_surface_get_kind(ic_pair_surface(pair, s)) == IC_PARAMETRIC &&
             param_nodes(pair, s, c, nodes, source, n, sp, nodes + c->npoints))
             st = piecewise(&f->pcurves[s], nodes + c->npoints, n, 2, err);
-    if (st == IC_OK)
+    if (st == IC_OK) {
+        check_pcurves(pair, f, nodes, n, fit_tol);
         check_fit(pair, f, c, nodes, source, n);
+    }
     ic_jet_space_free(sp);
     free(nodes);
     free(source);

@@ -195,10 +195,10 @@ for cmd in eval point trace plot; do
     done <"$tmp/help.$cmd"
 done
 # eval --order; point --order, --method, --format, --point-tol; trace
-# --format, --tol, --depth, --time-limit; plot --frames, --size, --mesh,
-# --tol, --depth
-[ "$ranges" -eq 14 ]
-check "14 ranges found in the help texts (found $ranges)" $?
+# --format, --tol, --depth, --time-limit, --fit-tol; plot --frames, --size,
+# --mesh, --tol, --depth
+[ "$ranges" -eq 15 ]
+check "15 ranges found in the help texts (found $ranges)" $?
 
 echo "test_cli_options: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

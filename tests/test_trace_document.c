@@ -47,10 +47,37 @@ static int point_matches(const cJSON *o, const ic_trace_point *p, const ic_trace
     return ok;
 }
 
+/* A B-spline read back: degree, knots and control points bit for bit. */
+static int bspline_matches(const cJSON *o, const ic_bspline *b)
+{
+    static const char *const keys[] = {"degree", "knots", "control_points", NULL};
+    const cJSON *pts = doc_get(o, "control_points");
+    int ok = doc_keys_are(o, keys) && doc_number_is(doc_get(o, "degree"), b->degree) &&
+             doc_vector_is(doc_get(o, "knots"), b->knots, b->ncontrol + b->degree + 1) &&
+             cJSON_GetArraySize(pts) == b->ncontrol;
+    for (int i = 0; ok && i < b->ncontrol; i++)
+        ok = doc_vector_is(cJSON_GetArrayItem(pts, i), b->control + (size_t)b->dim * i, b->dim);
+    return ok;
+}
+
+/* "bspline" and "pcurves": null without a fit; else the fit's, a pcurve
+ * null where the fit has none. */
+static int fit_matches(const cJSON *o, const ic_curve_fit *fit)
+{
+    const cJSON *b = doc_get(o, "bspline"), *pc = doc_get(o, "pcurves");
+    if (!fit)
+        return cJSON_IsNull(b) && cJSON_IsNull(pc);
+    int ok = bspline_matches(b, &fit->curve) && cJSON_GetArraySize(pc) == 2;
+    for (int s = 0; ok && s < 2; s++)
+        ok = fit->pcurves[s].ncontrol ? bspline_matches(cJSON_GetArrayItem(pc, s), &fit->pcurves[s])
+                                      : cJSON_IsNull(cJSON_GetArrayItem(pc, s));
+    return ok;
+}
+
 static void check_curves(const cJSON *curves, const traced *t, const char *name)
 {
     static const char *const keys[] = {"closed", "type", "shape",  "shape_tolerance",
-                                       "length", "ends", "points", NULL};
+                                       "length", "ends", "bspline", "pcurves", "points", NULL};
     int parametric[2];
     for (int s = 0; s < 2; s++)
         parametric[s] = ic_surface_get_kind(ic_pair_surface(t->pair, s)) == IC_PARAMETRIC;
@@ -70,6 +97,8 @@ static void check_curves(const cJSON *curves, const traced *t, const char *name)
                   doc_string_is(cJSON_GetArrayItem(ends, 1), ic_trace_event_name(c->ends[1])) &&
                   cJSON_GetArraySize(pts) == c->npoints,
               "%s: curve %d's keys and values", name, i);
+        CHECK(fit_matches(o, ic_trace_result_fit(t->res, i)), "%s: curve %d's B-splines", name,
+              i);
         int bad = 0;
         for (int k = 0; k < c->npoints && k < cJSON_GetArraySize(pts); k++)
             bad += !point_matches(cJSON_GetArrayItem(pts, k), &c->points[k], c, t, parametric);
@@ -112,6 +141,8 @@ static void check_report(const cJSON *ro, const ic_trace_report *rep, const char
                                        "undecided_loop_cells",
                                        "coincident_cells",
                                        "failures",
+                                       "fit_tolerance",
+                                       "fit_error",
                                        NULL};
     const int counts[] = {rep->cells,
                           rep->cells_excluded,
@@ -143,6 +174,12 @@ static void check_report(const cJSON *ro, const ic_trace_report *rep, const char
         ok = doc_number_is(doc_get(ro, count_keys[i]), counts[i]);
     for (int i = 0; ok && i < rep->nfailures; i++)
         ok = doc_string_is(cJSON_GetArrayItem(doc_get(ro, "failures"), i), rep->failures[i]);
+    if (rep->fit_tol > 0)
+        ok = ok && doc_number_is(doc_get(ro, "fit_tolerance"), rep->fit_tol) &&
+             doc_number_is(doc_get(ro, "fit_error"), rep->fit_error);
+    else
+        ok = ok && cJSON_IsNull(doc_get(ro, "fit_tolerance")) &&
+             cJSON_IsNull(doc_get(ro, "fit_error"));
     CHECK(ok, "%s: the report's keys in order and its values", name);
 }
 
@@ -239,7 +276,10 @@ int main(int argc, char **argv)
     for (int e = 0; e < 3; e++) {
         traced t;
         if (trace_example(&t, dir, examples[e]) == 0) {
-            check_document(&t, examples[e]);
+            check_document(&t, examples[e]); /* not fitted: nulls */
+            ic_error err;
+            if (REQUIRE(ic_trace_fit(t.res, t.pair, 1e-9, &err) == IC_OK, "fit: %s", err.message))
+                check_document(&t, examples[e]); /* fitted: the B-splines */
             if (e == 0)
                 check_viviani(&t);
         }

@@ -194,6 +194,10 @@ typedef struct {
     int coincident_cells;
     int nfailures;
     char failures[IC_TRACE_MAX_FAILURES][240];
+    /** length: the B-spline fit tolerance used (ic_trace_fit; 0: not fitted) */
+    double fit_tol;
+    /** length: the largest fit error found over the curves (ic_curve_fit) */
+    double fit_error;
 } ic_trace_report;
 
 typedef struct ic_trace_result ic_trace_result;
@@ -240,6 +244,18 @@ typedef struct {
      *  pole: the parameters jump there) and is not given */
     int pcurve_dropped[2];
 } ic_curve_fit;
+
+/**
+ * Fits every curve of a result of ic_trace on `pair` as B-splines (the
+ * result keeps them; ic_trace_result_fit gives them), fit_tol a fraction of
+ * the problem's size L (docs/bspline.md: 1e-9 by default on the command
+ * line); sets the report's fit_tol (a length) and fit_error. A curve that
+ * cannot be fitted (one point) has none. IC_ERR_NOMEM out of memory.
+ */
+IC_API IC_NODISCARD ic_status ic_trace_fit(ic_trace_result *res, ic_pair *pair, double fit_tol,
+                                           ic_error *err);
+/** Curve i's B-splines, or NULL (not fitted, or i out of range). */
+IC_API const ic_curve_fit *ic_trace_result_fit(const ic_trace_result *res, int i);
 
 /** Fits curve c of a trace of `pair` (curves of at least 2 points); fit_tol
  *  (length) is what a pcurve's image may stray from the curve. The curve's

@@ -3,7 +3,7 @@
 
 #include <math.h>
 
-enum { OPT_FORMAT, OPT_OUTPUT, OPT_TOL, OPT_DEPTH, OPT_TIME_LIMIT, NOPTIONS };
+enum { OPT_FORMAT, OPT_OUTPUT, OPT_TOL, OPT_DEPTH, OPT_TIME_LIMIT, OPT_FIT_TOL, NOPTIONS };
 
 /* The formats, in the order of --format's choices. */
 typedef enum { FORMAT_JSON, FORMAT_CSV, FORMAT_VTK, FORMAT_OBJ, FORMAT_TEXT } out_format;
@@ -44,6 +44,15 @@ static const ic_cli_option TRACE_OPTIONS[NOPTIONS] = {
                         .hi = 1e6,
                         .help = "stop after this wall time with what was found (complete:\n"
                                 "false); without it the search's own cell budget bounds it"},
+    [OPT_FIT_TOL] = {.name = "--fit-tol",
+                     .metavar = "T",
+                     .kind = IC_OPT_REAL,
+                     .lo = 0,
+                     .hi = 1e-2,
+                     .fallback = "1e-9",
+                     .help = "the JSON output's B-splines of the curves (docs/bspline.md):\n"
+                             "what a pcurve's image may stray from the curve, a fraction of\n"
+                             "the problem's size; the report gives the largest error found"},
 };
 
 static const ic_cli_command TRACE = {
@@ -128,6 +137,14 @@ int ic_cmd_trace(int argc, char **argv)
     ic_cli_traced t;
     if ((rc = ic_cli_trace_file(file, &opt, &t)) != 0)
         return rc;
+    ic_error err;
+    ic_error_clear(&err);
+    if ((out_format)v[OPT_FORMAT].choice == FORMAT_JSON &&
+        ic_trace_fit(t.res, t.pair, v[OPT_FIT_TOL].real, &err) != IC_OK) {
+        fprintf(stderr, "intercurve trace: %s\n", err.message);
+        ic_cli_traced_free(&t);
+        return EXIT_COMPUTE;
+    }
     trace_output o = {(out_format)v[OPT_FORMAT].choice, t.res, t.pair, ic_problem_title(t.problem)};
     rc = write_output(v[OPT_OUTPUT].text, &o);
     ic_cli_traced_free(&t);

@@ -36,8 +36,37 @@ static cJSON *point_json(json_out *j, const ic_trace_point *p, const ic_trace_cu
     return o;
 }
 
+/* A B-spline as {"degree", "knots", "control_points"} (docs/bspline.md). */
+static cJSON *bspline_json(json_out *j, const ic_bspline *b)
+{
+    cJSON *o = cJSON_CreateObject();
+    ic_json_out_add(j, o, "degree", cJSON_CreateNumber(b->degree));
+    ic_json_out_add(j, o, "knots", ic_json_out_vector(j, b->knots, b->ncontrol + b->degree + 1));
+    cJSON *pts = cJSON_CreateArray();
+    for (int i = 0; i < b->ncontrol; i++)
+        ic_json_out_append(j, pts, ic_json_out_vector(j, b->control + (size_t)b->dim * i, b->dim));
+    ic_json_out_add(j, o, "control_points", pts);
+    return o;
+}
+
+/* The curve's fitted B-spline and pcurves, or null where not fitted. */
+static void fit_json(json_out *j, cJSON *o, const ic_curve_fit *fit)
+{
+    if (!fit) {
+        ic_json_out_add(j, o, "bspline", cJSON_CreateNull());
+        ic_json_out_add(j, o, "pcurves", cJSON_CreateNull());
+        return;
+    }
+    ic_json_out_add(j, o, "bspline", bspline_json(j, &fit->curve));
+    cJSON *pc = cJSON_CreateArray();
+    for (int s = 0; s < 2; s++)
+        ic_json_out_append(j, pc, fit->pcurves[s].ncontrol ? bspline_json(j, &fit->pcurves[s])
+                                                           : cJSON_CreateNull());
+    ic_json_out_add(j, o, "pcurves", pc);
+}
+
 static cJSON *curve_json(json_out *j, const ic_trace_curve *c, const ic_trace_result *res,
-                         const int parametric[2])
+                         const int parametric[2], const ic_curve_fit *fit)
 {
     cJSON *o = cJSON_CreateObject();
     ic_json_out_add(j, o, "closed", cJSON_CreateBool(c->closed));
@@ -49,6 +78,7 @@ static cJSON *curve_json(json_out *j, const ic_trace_curve *c, const ic_trace_re
     for (int e = 0; e < 2; e++)
         ic_json_out_append(j, ends, cJSON_CreateString(ic_trace_event_name(c->ends[e])));
     ic_json_out_add(j, o, "ends", ends);
+    fit_json(j, o, fit);
     cJSON *pts = cJSON_CreateArray();
     for (int k = 0; k < c->npoints; k++)
         ic_json_out_append(j, pts, point_json(j, &c->points[k], c, res, parametric));
@@ -93,6 +123,11 @@ static cJSON *report_json(json_out *j, const ic_trace_report *rep)
     for (int i = 0; i < rep->nfailures; i++)
         ic_json_out_append(j, failures, cJSON_CreateString(rep->failures[i]));
     ic_json_out_add(j, ro, "failures", failures);
+    const int fitted = rep->fit_tol > 0;
+    ic_json_out_add(j, ro, "fit_tolerance",
+                    fitted ? ic_json_out_number(j, rep->fit_tol) : cJSON_CreateNull());
+    ic_json_out_add(j, ro, "fit_error",
+                    fitted ? ic_json_out_number(j, rep->fit_error) : cJSON_CreateNull());
     return ro;
 }
 
@@ -106,7 +141,8 @@ ic_status ic_trace_write_json(FILE *f, const ic_trace_result *res, const ic_pair
     cJSON *doc = cJSON_CreateObject();
     cJSON *curves = cJSON_CreateArray();
     for (int i = 0; i < ic_trace_result_num_curves(res); i++)
-        ic_json_out_append(&j, curves, curve_json(&j, ic_trace_result_curve(res, i), res, parametric));
+        ic_json_out_append(&j, curves, curve_json(&j, ic_trace_result_curve(res, i), res, parametric,
+                                                  ic_trace_result_fit(res, i)));
     ic_json_out_add(&j, doc, "curves", curves);
     cJSON *points = cJSON_CreateArray();
     for (int i = 0; i < ic_trace_result_num_specials(res); i++)

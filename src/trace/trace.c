@@ -935,7 +935,38 @@ void ic_trace_result_free(ic_trace_result *r)
     free(r->coincident);
     ic_curve_index_free(r->index);
     free(r->deferred_why);
+    for (int i = 0; r->fits && i < r->ncurves; i++)
+        ic_curve_fit_free(r->fits[i]);
+    free(r->fits);
     free(r);
+}
+
+ic_status ic_trace_fit(ic_trace_result *r, ic_pair *pair, double fit_tol, ic_error *err)
+{
+    if (!r || !pair || !(fit_tol > 0) || !isfinite(fit_tol))
+        return ic_error_set(err, IC_ERR_INVALID, 0, "ic_trace_fit: a result, its pair and a "
+                                                    "positive tolerance");
+    const double tol = fit_tol * r->scale;
+    if (!r->fits && r->ncurves > 0 && !(r->fits = calloc((size_t)r->ncurves, sizeof *r->fits)))
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory fitting curves");
+    r->report.fit_tol = tol;
+    r->report.fit_error = 0;
+    for (int i = 0; i < r->ncurves; i++) {
+        ic_curve_fit_free(r->fits[i]);
+        r->fits[i] = NULL;
+        ic_error e2;
+        const ic_status st = ic_curve_fit_new(&r->fits[i], pair, &r->curves[i], tol, &e2);
+        if (st == IC_ERR_NOMEM)
+            return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory fitting curves");
+        if (st == IC_OK)
+            r->report.fit_error = fmax(r->report.fit_error, r->fits[i]->fit_error);
+    }
+    return IC_OK;
+}
+
+const ic_curve_fit *ic_trace_result_fit(const ic_trace_result *r, int i)
+{
+    return r->fits && i >= 0 && i < r->ncurves ? r->fits[i] : NULL;
 }
 
 int ic_trace_result_num_curves(const ic_trace_result *r) { return r->ncurves; }

@@ -117,6 +117,7 @@ struct ic_trace_result {
     ic_candidate *deferred;
     char (*deferred_why)[200];
     int ndeferred, capd;
+    ic_curve_fit **fits; /* ncurves B-spline fits (ic_trace_fit), or NULL */
 };
 
 /* coincident.c: the problem's length scale L, and whether the surfaces

@@ -143,6 +143,11 @@ static void check_viviani(void)
         release(&t);
         return;
     }
+    /* C^2 at every traced point (no knot lines): interior knots of
+     * multiplicity 3, 3 (points - 1) + 3 control points */
+    CHECK(f->curve.ncontrol == 3 * (tc->npoints - 1) + 3 &&
+              f->curve.knots[6] == f->curve.knots[8] && f->curve.knots[8] < f->curve.knots[9],
+          "viviani: %d control points for %d traced points", f->curve.ncontrol, tc->npoints);
     /* the fit's own check at every stretch (the sphere's parameters from the
      * curve's point where it has no pcurve) */
     CHECK(f->fit_error <= 2 * FIT_TOL && f->checks >= tc->npoints - 2,

@@ -39,30 +39,79 @@ static void hermite_bezier(double *b, const hermite_node *a, const hermite_node 
     }
 }
 
-/* The piecewise quintic through the nodes as one clamped B-spline: each
- * interior knot of multiplicity 5 (the pieces' Bezier nets laid end to end;
- * the curve is C^2 there by construction). */
+/* Whether the curve is C^2 at a node: the stretches on both sides share
+ * its derivatives (not so on a knot line where they jump). */
+static int smooth_at(const hermite_node *h, int dim)
+{
+    for (int j = 0; j < dim; j++)
+        if (h->d1[j] != h->d1b[j] || h->d2[j] != h->d2b[j])
+            return 0;
+    return 1;
+}
+
+static void put(ic_bspline *c, int *nc, const double *x)
+{
+    memcpy(c->control + (size_t)c->dim * (*nc)++, x, sizeof(double) * (size_t)c->dim);
+}
+
+static void put_knot(ic_bspline *c, int *nk, double s, int times)
+{
+    for (int r = 0; r < times; r++)
+        c->knots[(*nk)++] = s;
+}
+
+/* The piecewise quintic through the nodes as one clamped B-spline. Where
+ * it is C^2 (every node but those on knot lines) its knot has multiplicity
+ * 3: the two Bezier points either side of the joint and the joint itself
+ * give way to one de Boor point, d = b4 + (h1/h0)(b4 - b3) = b1' +
+ * (h0/h1)(b1' - b2') (the two agree when the pieces meet with equal x, x',
+ * x''; Farin 2002, the C^2 condition for Bezier pieces); elsewhere the
+ * Bezier nets are laid end to end (multiplicity 5). */
 static ic_status piecewise(ic_bspline *c, const hermite_node *nodes, int n, int dim, ic_error *err)
 {
     const int segments = n - 1;
     memset(c, 0, sizeof *c);
     c->dim = dim;
     c->degree = DEGREE;
-    c->ncontrol = DEGREE * segments + 1;
-    c->knots = malloc(sizeof(double) * (size_t)(c->ncontrol + DEGREE + 1));
-    c->control = malloc(sizeof(double) * (size_t)(c->ncontrol * dim));
-    if (!c->knots || !c->control)
+    const size_t most = (size_t)DEGREE * segments + 1; /* every joint a Bezier one */
+    c->knots = malloc(sizeof(double) * (most + DEGREE + 1));
+    c->control = malloc(sizeof(double) * most * (size_t)dim);
+    double *b = malloc(sizeof(double) * 12 * (size_t)dim); /* two pieces' nets */
+    if (!c->knots || !c->control || !b) {
+        free(b);
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory fitting a curve");
-    int k = 0;
-    for (int r = 0; r <= DEGREE; r++)
-        c->knots[k++] = nodes[0].s;
-    for (int i = 1; i < segments; i++)
-        for (int r = 0; r < DEGREE; r++)
-            c->knots[k++] = nodes[i].s;
-    for (int r = 0; r <= DEGREE; r++)
-        c->knots[k++] = nodes[n - 1].s;
-    for (int i = 0; i < segments; i++)
-        hermite_bezier(c->control + (size_t)DEGREE * dim * i, &nodes[i], &nodes[i + 1], dim);
+    }
+    int nc = 0, nk = 0;
+    double *prev = b, *next = b + 6 * dim;
+    hermite_bezier(prev, &nodes[0], &nodes[1], dim);
+    put_knot(c, &nk, nodes[0].s, DEGREE + 1);
+    for (int r = 0; r < 4; r++)
+        put(c, &nc, prev + r * dim);
+    for (int i = 1; i < segments; i++) {
+        hermite_bezier(next, &nodes[i], &nodes[i + 1], dim);
+        if (smooth_at(&nodes[i], dim)) {
+            const double ratio = (nodes[i + 1].s - nodes[i].s) / (nodes[i].s - nodes[i - 1].s);
+            double d[3];
+            for (int j = 0; j < dim; j++)
+                d[j] = prev[4 * dim + j] + ratio * (prev[4 * dim + j] - prev[3 * dim + j]);
+            put(c, &nc, d);
+            put_knot(c, &nk, nodes[i].s, 3);
+        } else {
+            put(c, &nc, prev + 4 * dim);
+            put(c, &nc, prev + 5 * dim);
+            put(c, &nc, next + 1 * dim);
+            put_knot(c, &nk, nodes[i].s, DEGREE);
+        }
+        put(c, &nc, next + 2 * dim);
+        put(c, &nc, next + 3 * dim);
+        double *t = prev;
+        prev = next, next = t;
+    }
+    put(c, &nc, prev + 4 * dim);
+    put(c, &nc, prev + 5 * dim);
+    put_knot(c, &nk, nodes[n - 1].s, DEGREE + 1);
+    c->ncontrol = nc;
+    free(b);
     return IC_OK;
 }
 

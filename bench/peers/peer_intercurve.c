@@ -88,7 +88,43 @@ static int collect(const ic_trace_result *res, peer_output *out)
     return 0;
 }
 
-int peer_intercurve(const bench_case *c, peer_output *out, double *seconds)
+/* Samples along each fitted B-spline (docs/bspline.md): SAMPLES_PER_STRETCH
+ * points between traced points, curvature and torsion from the B-spline's
+ * own derivatives, as for the other engines' curves. */
+enum { SAMPLES_PER_STRETCH = 4 };
+
+static int collect_bsplines(const ic_trace_result *res, peer_output *out)
+{
+    out->ncurves = ic_trace_result_num_curves(res);
+    for (int i = 0; i < out->ncurves; i++) {
+        const ic_trace_curve *cv = ic_trace_result_curve(res, i);
+        const ic_curve_fit *fit = ic_trace_result_fit(res, i);
+        out->length += cv->length;
+        if (!fit) {
+            peer_output_note(out, "curve %d not fitted; ", i);
+            continue;
+        }
+        const double s0 = cv->points[0].s, s1 = cv->points[cv->npoints - 1].s;
+        const int n = SAMPLES_PER_STRETCH * (cv->npoints - 1);
+        for (int k = 0; k <= n; k++) {
+            double d[12], deriv[3][3];
+            if (ic_bspline_eval(&fit->curve, s0 + (s1 - s0) * k / n, 3, d, NULL) != IC_OK)
+                return -1;
+            for (int r = 0; r < 3; r++)
+                for (int j = 0; j < 3; j++)
+                    deriv[r][j] = d[3 * (r + 1) + j];
+            if (peer_output_add_derivs(out, d, (const double(*)[3])deriv, 1.0) != 0)
+                return -1;
+        }
+    }
+    peer_output_note(out, "fit error %.1e; complete=%d", ic_trace_result_report(res)->fit_error,
+                     ic_trace_result_report(res)->complete);
+    return 0;
+}
+
+/* intercurve, traced (and with `fitted`, its curves fitted as B-splines,
+ * timed with the trace, and scored on them). */
+static int run_intercurve(const bench_case *c, peer_output *out, double *seconds, int fitted)
 {
     ic_surface *A = NULL, *B = NULL;
     ic_pair *pair = NULL;
@@ -108,7 +144,9 @@ int peer_intercurve(const bench_case *c, peer_output *out, double *seconds)
     ic_trace_options opt;
     ic_trace_defaults(&opt);
     const double t0 = now_seconds();
-    const ic_status st = ic_trace(&res, pair, &opt, &err);
+    ic_status st = ic_trace(&res, pair, &opt, &err);
+    if (st == IC_OK && fitted)
+        st = ic_trace_fit(res, pair, 1e-9, &err);
     *seconds = now_seconds() - t0;
     if (st != IC_OK) {
         out->failed = 1;
@@ -116,11 +154,21 @@ int peer_intercurve(const bench_case *c, peer_output *out, double *seconds)
         rc = 0;
         goto done;
     }
-    rc = collect(res, out);
+    rc = fitted ? collect_bsplines(res, out) : collect(res, out);
 done:
     ic_trace_result_free(res);
     ic_pair_free(pair);
     ic_surface_free(A);
     ic_surface_free(B);
     return rc;
+}
+
+int peer_intercurve(const bench_case *c, peer_output *out, double *seconds)
+{
+    return run_intercurve(c, out, seconds, 0);
+}
+
+int peer_intercurve_bspline(const bench_case *c, peer_output *out, double *seconds)
+{
+    return run_intercurve(c, out, seconds, 1);
 }

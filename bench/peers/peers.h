@@ -61,6 +61,8 @@ typedef struct {
 } peer_engine;
 
 int peer_intercurve(const bench_case *c, peer_output *out, double *seconds);
+/* the same, scored on its fitted B-splines (docs/bspline.md) */
+int peer_intercurve_bspline(const bench_case *c, peer_output *out, double *seconds);
 int peer_sisl(const bench_case *c, peer_output *out, double *seconds);
 int peer_occt_nurbs(const bench_case *c, peer_output *out, double *seconds);
 int peer_occt_analytic(const bench_case *c, peer_output *out, double *seconds);

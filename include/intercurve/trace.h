@@ -234,9 +234,9 @@ typedef struct {
     /** dim 2; ncontrol 0 and NULL arrays for an implicit surface, or where
      *  the sheet's parametrisation degenerates on the curve (a pole) */
     ic_bspline pcurves[2];
-    /** length: the largest distance found, at checks between the traced
-     *  points, from the curve to the intersection (points corrected onto
-     *  both surfaces) and from a pcurve's image to the curve */
+    /** length: the largest distance found, at the middle of every stretch
+     *  between nodes, from the curve to either surface (to a parametric
+     *  sheet with a pcurve: from the pcurve's image) */
     double fit_error;
     int checks; /**< how many places were checked */
     /** 1 where a pcurve strayed from the curve by more than the tolerance

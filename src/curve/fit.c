@@ -147,16 +147,60 @@ static int param_derivatives(ic_surface *S, const ic_jet_space *sp, const double
     return 1;
 }
 
-/* The space nodes of a traced curve: x, c' = t, c'' = kappa n (0 where the
- * curvature is 0 or not finite, a cusp at an end). Points at the same s as
- * the one before are left out. Returns the number of nodes. */
-static int space_nodes(const ic_trace_curve *c, hermite_node *nodes, int *source)
+/* relative (of a domain's width): a parameter this close to a knot stands
+ * on its knot line (the tracer's snap, IC_TRACE_KNOT_SNAP_REL) */
+#define FIT_KNOT_SNAP_REL 1e-13
+
+/* Whether p stands on a knot line or a periodic seam of a NURBS sheet. */
+static int stands_on_line(ic_pair *pair, const ic_trace_point *p)
 {
+    for (int s = 0; s < 2; s++) {
+        ic_surface *S = ic_pair_surface(pair, s);
+        if (ic_surface_get_kind(S) != IC_PARAMETRIC)
+            continue;
+        double dom[2][2], knot;
+        ic_surface_get_domain(S, dom, NULL);
+        for (int i = 0; i < 2; i++) {
+            const double x = p->params[s][i], snap = FIT_KNOT_SNAP_REL * (dom[i][1] - dom[i][0]);
+            if (ic_surface_knot_crossed(S, i, x - snap, x + snap, &knot) ||
+                (ic_surface_knot_seam(S, i) &&
+                 (fabs(x - dom[i][0]) <= snap || fabs(x - dom[i][1]) <= snap)))
+                return 1;
+        }
+    }
+    return 0;
+}
+
+/* relative (of the curve's length): the shortest stretch between nodes. A
+ * quintic's third derivative from its net carries the net's rounding
+ * (about 1e-16 of the coordinates) over h^3: stretches of 1e-9 L, which
+ * the tracer leaves beside branch points, gave torsions of 1e11 between
+ * their ends. Traced points closer than this to the node before are left
+ * out (a point on a knot line never: the node before it goes instead),
+ * which the Hermite pieces bridge with error of order h^6. */
+#define FIT_MIN_STRETCH_REL 1e-4
+
+/* The space nodes of a traced curve: x, c' = t, c'' = kappa n (0 where the
+ * curvature is 0 or not finite, a cusp at an end). Returns the number of
+ * nodes; source[k] is node k's point. */
+static int space_nodes(ic_pair *pair, const ic_trace_curve *c, hermite_node *nodes, int *source,
+                       int *pinned)
+{
+    const double shortest = FIT_MIN_STRETCH_REL * (c->points[c->npoints - 1].s - c->points[0].s);
     int n = 0;
     for (int i = 0; i < c->npoints; i++) {
         const ic_trace_point *p = &c->points[i];
-        if (n > 0 && !(p->s > nodes[n - 1].s))
-            continue;
+        const int last = i == c->npoints - 1, keep = last || stands_on_line(pair, p);
+        if (n > 0 && !(p->s - nodes[n - 1].s >= shortest)) {
+            if (!keep)
+                continue;
+            /* the point must stay: the node before goes, unless it is the
+             * first or must stay itself */
+            if (n > 1 && !pinned[n - 1] && p->s > nodes[n - 2].s)
+                n--;
+            else if (!(p->s > nodes[n - 1].s))
+                continue;
+        }
         hermite_node *h = &nodes[n];
         h->s = p->s;
         const int curved = p->frame_defined && isfinite(p->kappa);
@@ -165,14 +209,12 @@ static int space_nodes(const ic_trace_curve *c, hermite_node *nodes, int *source
             h->d1[k] = h->d1b[k] = p->t[k];
             h->d2[k] = h->d2b[k] = curved ? p->kappa * p->n[k] : 0;
         }
+        pinned[n] = keep;
         source[n++] = i;
     }
     return n;
 }
 
-/* relative (of a domain's width): a parameter this close to a knot stands
- * on its knot line (the tracer's snap, IC_TRACE_KNOT_SNAP_REL) */
-#define FIT_KNOT_SNAP_REL 1e-13
 /* relative to the parameter speed: a curve whose parameter moves slower
  * than this along a knot line's normal touches the line rather than
  * crossing it (Viviani's curve at the top of a sphere written about y),
@@ -242,7 +284,9 @@ static void knot_ways(ic_pair *pair, const ic_trace_point *p, const ic_jet_space
     memcpy(on, p->params, sizeof(double) * 4);
     for (int s = 0; s < 2; s++) {
         double d1[2], d2[2];
-        if (!((p->knot_line >> s) & 1) ||
+        /* any point may stand on a knot line: a branch point the tracer
+         * ended a curve at, not only the points it landed there */
+        if (ic_surface_get_kind(ic_pair_surface(pair, s)) != IC_PARAMETRIC ||
             !param_derivatives(ic_pair_surface(pair, s), sp, p->params[s], h->d1, h->d2, d1, d2))
             continue;
         knot_sides(pair, s, p, d1, d2, -1, sides[0][s], on[s]);
@@ -257,6 +301,11 @@ static void knot_node(ic_pair *pair, const ic_trace_point *p, const ic_jet_space
     int sides[2][2][2];
     double on[2][2];
     knot_ways(pair, p, sp, h, sides, on);
+    int any = 0;
+    for (int i = 0; i < 8; i++)
+        any |= ((int *)sides)[i] != 0;
+    if (!any) /* on no knot line: the traced apparatus serves both sides */
+        return;
     side_curvature(pair, p, on, sides[0], h->d2b);
     side_curvature(pair, p, on, sides[1], h->d2);
 }
@@ -269,15 +318,70 @@ static int param_node(ic_pair *pair, int s, const ic_trace_point *p, const ic_je
     ic_surface *S = ic_pair_surface(pair, s);
     int sides[2][2][2] = {{{0}}};
     double on[2][2];
-    memcpy(on, p->params, sizeof on);
-    if (p->knot_line)
-        knot_ways(pair, p, sp, space, sides, on);
+    knot_ways(pair, p, sp, space, sides, on);
     ic_surface_set_knot_side(S, sides[1][s]);
     int ok = param_derivatives(S, sp, on[s], space->d1, space->d2, h->d1, h->d2);
     ic_surface_set_knot_side(S, sides[0][s]);
     ok = ok && param_derivatives(S, sp, on[s], space->d1b, space->d2b, h->d1b, h->d2b);
     ic_surface_set_knot_side(S, NULL);
     return ok;
+}
+
+/* relative: a traced point whose tangent leaves the chord to its neighbour
+ * by more than this angle (its cosine below) stands where branches cross
+ * (a branch point: its apparatus is one branch's); chords otherwise turn
+ * by half of kappa h, far below it */
+#define FIT_JUNCTION_COS 0.99
+
+/* The branch through a singular point along a chord: its c' (oriented as
+ * the chord) and c''. 0 where the analysis fails. */
+static int branch_along(ic_pair *pair, const ic_trace_point *p, const double chord[3],
+                        double d1[3], double d2[3])
+{
+    ic_local_options opt;
+    ic_local_defaults(&opt);
+    ic_local_point pt;
+    memset(&pt, 0, sizeof pt);
+    memcpy(pt.xyz, p->xyz, sizeof pt.xyz);
+    memcpy(pt.params, p->params, sizeof pt.params);
+    ic_local_result res;
+    if (ic_local_apparatus(pair, &res, &pt, 2, IC_METHOD_AUTO, &opt, NULL) != IC_OK ||
+        res.nbranches < 1)
+        return 0;
+    int best = 0;
+    for (int b = 1; b < res.nbranches; b++)
+        if (fabs(ic_dot3(res.branches[b].t, chord)) > fabs(ic_dot3(res.branches[best].t, chord)))
+            best = b;
+    const ic_branch *br = &res.branches[best];
+    const double sign = ic_dot3(br->t, chord) < 0 ? -1 : 1;
+    for (int k = 0; k < 3; k++) {
+        d1[k] = sign * br->t[k];
+        d2[k] = br->frame_defined ? br->kappa * br->n[k] : 0;
+    }
+    return 1;
+}
+
+/* Nodes where branches cross: each side takes the branch along its chord. */
+static void junction_nodes(ic_pair *pair, const ic_trace_curve *c, hermite_node *nodes,
+                           const int *source, int n)
+{
+    for (int k = 0; k < n; k++) {
+        const ic_trace_point *p = &c->points[source[k]];
+        for (int side = 0; side < 2; side++) { /* 0: before, 1: after */
+            const int other = side ? k + 1 : k - 1;
+            if (other < 0 || other >= n)
+                continue;
+            double chord[3];
+            ic_axpy3(chord, nodes[other].x, -1.0, nodes[k].x);
+            const double len = ic_norm3(chord);
+            if (!(len > 0))
+                continue;
+            ic_scale3(chord, chord, side ? 1 / len : -1 / len); /* along the curve */
+            double *d1 = side ? nodes[k].d1 : nodes[k].d1b, *d2 = side ? nodes[k].d2 : nodes[k].d2b;
+            if (ic_dot3(d1, chord) < FIT_JUNCTION_COS)
+                branch_along(pair, p, chord, d1, d2);
+        }
+    }
 }
 
 /* The nearest representative of x modulo the period (periodic directions)
@@ -363,30 +467,62 @@ static void check_pcurves(ic_pair *pair, ic_curve_fit *f, const hermite_node *no
         }
 }
 
-/* The distance from the fitted curve at s (between traced points) to the
- * intersection, its point corrected onto both surfaces from there (the
- * pcurves' parameters as the guess where there are pcurves), and from each
- * pcurve's image to the curve. -1 where the corrector fails. */
-static double check_at(ic_pair *pair, const ic_curve_fit *f, const ic_trace_point *near, double s)
+/* The distance from X to an implicit surface, first order: |f| / |grad f|. */
+static double implicit_distance(ic_surface *S, const ic_jet_space *sp3, const double X[3])
 {
-    double X[3], params[2][2], worst = 0;
+    double t[4];
+    if (ic_surface_taylor(S, t, X, sp3, NULL) != IC_OK)
+        return -1;
+    const double g = sqrt(t[1] * t[1] + t[2] * t[2] + t[3] * t[3]);
+    return g > 0 ? fabs(t[0]) / g : -1;
+}
+
+/* The distance from X to a parametric sheet near uv: Gauss-Newton on
+ * |R(u, v) - X|^2 from uv (a sheet without a pcurve: its nearest node's
+ * parameters), a few steps. */
+static double sheet_distance(ic_surface *S, const ic_jet_space *sp2, const double X[3],
+                             const double uv0[2])
+{
+    double uv[2] = {uv0[0], uv0[1]}, d[3] = {0, 0, 0};
+    for (int it = 0; it < 8; it++) {
+        double t[9];
+        if (ic_surface_taylor(S, t, uv, sp2, NULL) != IC_OK)
+            return -1;
+        const double Ru[3] = {t[1], t[4], t[7]}, Rv[3] = {t[2], t[5], t[8]};
+        for (int k = 0; k < 3; k++)
+            d[k] = t[3 * k] - X[k];
+        const double E = ic_dot3(Ru, Ru), F = ic_dot3(Ru, Rv), G = ic_dot3(Rv, Rv);
+        const double a = ic_dot3(Ru, d), b = ic_dot3(Rv, d), det = E * G - F * F;
+        if (!(det > 0))
+            break;
+        uv[0] -= (G * a - F * b) / det, uv[1] -= (E * b - F * a) / det;
+    }
+    return ic_norm3(d);
+}
+
+/* The fitted curve's point at s against both surfaces: its distance to each
+ * (through a pcurve's image where the sheet has one). -1 where it cannot be
+ * measured. */
+static double check_at(ic_pair *pair, const ic_curve_fit *f, const ic_trace_point *near, double s,
+                       const ic_jet_space *sp[2])
+{
+    double X[3], worst = 0;
     if (ic_bspline_eval(&f->curve, s, 0, X, NULL) != IC_OK)
         return -1;
-    memcpy(params, near->params, sizeof params);
-    for (int k = 0; k < 2; k++)
-        if (f->pcurves[k].ncontrol)
-            worst = fmax(worst, pcurve_off(pair, f, k, s, X, params[k]));
-    ic_local_options opt;
-    ic_local_defaults(&opt);
-    ic_local_point pt;
-    double d[3];
-    /* the pcurves' parameters are a guess within the fit; a sheet without
-     * one has only its stretch's start (a step away): from X alone then */
-    if (ic_local_locate_guess(pair, &pt, X, params, &opt, NULL) != IC_OK &&
-        ic_local_locate(pair, &pt, X, &opt, NULL) != IC_OK)
-        return -1;
-    ic_axpy3(d, pt.xyz, -1.0, X);
-    return fmax(worst, ic_norm3(d));
+    for (int k = 0; k < 2; k++) {
+        ic_surface *S = ic_pair_surface(pair, k);
+        double uv[2], e;
+        if (ic_surface_get_kind(S) == IC_IMPLICIT)
+            e = implicit_distance(S, sp[1], X);
+        else if (f->pcurves[k].ncontrol)
+            e = pcurve_off(pair, f, k, s, X, uv);
+        else
+            e = sheet_distance(S, sp[0], X, near->params[k]);
+        if (e < 0)
+            return -1;
+        worst = fmax(worst, e);
+    }
+    return worst;
 }
 
 /* Checks the fit at the middle of every stretch between traced points. */
@@ -395,14 +531,20 @@ static void check_fit(ic_pair *pair, ic_curve_fit *f, const ic_trace_curve *c,
 {
     f->fit_error = 0;
     f->checks = 0;
+    ic_jet_space *sp[2] = {NULL, NULL};
+    if (ic_jet_space_new(&sp[0], 2, 1, NULL) != IC_OK || ic_jet_space_new(&sp[1], 3, 1, NULL) != IC_OK)
+        n = 0; /* out of memory: nothing checked, said by checks */
     for (int k = 0; k + 1 < n; k++) {
-        const double e =
-            check_at(pair, f, &c->points[source[k]], 0.5 * (nodes[k].s + nodes[k + 1].s));
+        const ic_trace_point *near = &c->points[source[k]];
+        const double e = check_at(pair, f, near, 0.5 * (nodes[k].s + nodes[k + 1].s),
+                                  (const ic_jet_space **)sp);
         if (e < 0) /* no corrected point there: unchecked, said by checks */
             continue;
         f->fit_error = fmax(f->fit_error, e);
         f->checks++;
     }
+    ic_jet_space_free(sp[0]);
+    ic_jet_space_free(sp[1]);
 }
 
 ic_status ic_curve_fit_new(ic_curve_fit **out, ic_pair *pair, const ic_trace_curve *c,
@@ -415,14 +557,15 @@ ic_status ic_curve_fit_new(ic_curve_fit **out, ic_pair *pair, const ic_trace_cur
         return ic_error_set(err, IC_ERR_INVALID, 0, "curve fit: the tolerance must be positive");
     ic_curve_fit *f = calloc(1, sizeof *f);
     hermite_node *nodes = malloc(sizeof *nodes * (size_t)c->npoints * 2);
-    int *source = malloc(sizeof *source * (size_t)c->npoints);
+    int *source = malloc(sizeof *source * (size_t)c->npoints * 2), *pinned = source + c->npoints;
     ic_jet_space *sp = NULL;
     ic_status st = f && nodes && source ? ic_jet_space_new(&sp, 2, 2, err)
                                         : ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
-    const int n = st == IC_OK ? space_nodes(c, nodes, source) : 0;
+    const int n = st == IC_OK ? space_nodes(pair, c, nodes, source, pinned) : 0;
     for (int k = 0; k < n; k++)
-        if (c->points[source[k]].knot_line)
-            knot_node(pair, &c->points[source[k]], sp, &nodes[k]);
+        knot_node(pair, &c->points[source[k]], sp, &nodes[k]);
+    if (st == IC_OK)
+        junction_nodes(pair, c, nodes, source, n);
     if (st == IC_OK && n < 2)
         st = ic_error_set(err, IC_ERR_INVALID, 0, "curve fit: the curve has no length");
     if (st == IC_OK)

@@ -180,6 +180,11 @@ check "trace --format step: two B-spline curves in a Part 21 file" $?
 [ "$(grep -c '^     126 .*D      [13]$' "$tmpout.iges")" -eq 2 ] &&
     [ "$(awk 'length($0) != 80' "$tmpout.iges" | wc -l)" -eq 0 ]
 check "trace --format iges: two entities 126, 80 columns a line" $?
+for fmt in step iges; do
+    "$bin" surfaces "$tmpout.$fmt" >"$out" 2>"$errf"
+    grep -q "length unit mm (0.001 m), 0 surfaces" "$out"
+    check "trace --format $fmt: intercurve's own reader finds millimetres (and no surface)" $?
+done
 "$bin" trace "$src/examples/ellipsoids.json" --format step --fit-tol 1e-6 >"$out" 2>"$errf"
 ! cmp -s <(grep -v FILE_NAME "$out") <(grep -v FILE_NAME "$tmpout.step") &&
     grep -q "LENGTH_MEASURE(.*E-0[56])" "$out"

@@ -36,7 +36,8 @@ static inline double norm3(const double x[3])
 {
     return sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
 }
-/* Viviani (examples/viviani-implicit.json): the cylinder (x - 1)^2 + y^2 = 1 and the sphere of radius 2. */
+/* Viviani (examples/viviani-implicit.json): the cylinder (x - 1)^2 + y^2 = 1 and the sphere of
+ * radius 2. */
 static inline double viviani_cylinder(const double x[3]) { return fabs(hypot(x[0] - 1, x[1]) - 1); }
 static inline double sphere2(const double x[3]) { return fabs(norm3(x) - 2); }
 /* The circle: the same sphere and the plane z = 1. */
@@ -46,16 +47,15 @@ static inline double upright(const double x[3]) { return fabs(hypot(x[0], x[1]) 
 static inline double lying(const double x[3]) { return fabs(hypot(x[0], x[2]) - 0.7); }
 
 static const fitted_case FITTED_CASES[] = {
-    {"Viviani", "viviani-implicit.json", NULL, 1,
-     {viviani_cylinder, sphere2}},
-    {"circle", NULL,
+    {"Viviani", "viviani-implicit.json", NULL, 1, {viviani_cylinder, sphere2}},
+    {"circle",
+     NULL,
      "{\"title\": \"A circle: sphere and plane\", \"surfaces\": [{\"type\": \"implicit\", "
      "\"f\": \"x^2 + y^2 + z^2 - 4\"}, {\"type\": \"implicit\", \"f\": \"z - 1\"}],"
      " \"box\": [[-3, 3], [-3, 3], [-3, 3]]}",
      1,
      {sphere2, plane_z1}},
-    {"two cylinders", "cylinders.json", NULL, 2,
-     {upright, lying}},
+    {"two cylinders", "cylinders.json", NULL, 2, {upright, lying}},
 };
 #define NFITTED_CASES ((int)(sizeof FITTED_CASES / sizeof FITTED_CASES[0]))
 

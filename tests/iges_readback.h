@@ -54,8 +54,7 @@ static inline int iges_read(iges_file *g, const char *text)
     char want[33];
     snprintf(want, sizeof want, "S%7dG%7dD%7dP%7d", g->count[0], g->count[1], g->count[2],
              g->count[3]);
-    return g->line && section == 4 && g->count[4] == 1 &&
-                   strncmp(g->line[g->n - 1], want, 32) == 0
+    return g->line && section == 4 && g->count[4] == 1 && strncmp(g->line[g->n - 1], want, 32) == 0
                ? 0
                : -1;
 }
@@ -114,15 +113,15 @@ static inline int iges_global(const iges_file *g, char out[][80], int max)
 
 /* An entity 126 read back. */
 typedef struct {
-    int de;           /* its directory entry's first line */
+    int de; /* its directory entry's first line */
     char label[9];
     int subscript;
     int prop[4];
     int nknots;
-    ic_bspline b;     /* knots and points as the file gives them */
+    ic_bspline b; /* knots and points as the file gives them */
     double *weights;
-    double range[2];  /* V0, V1 */
-    int reals_ok;     /* every real field has a decimal point */
+    double range[2]; /* V0, V1 */
+    int reals_ok;    /* every real field has a decimal point */
 } iges_curve;
 
 static inline void iges_curve_free(iges_curve *c)

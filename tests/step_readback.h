@@ -18,7 +18,7 @@ typedef struct {
 } p21_instance;
 
 typedef struct {
-    char *header;    /* HEADER section, its ';' kept */
+    char *header; /* HEADER section, its ';' kept */
     p21_instance *inst;
     int n;
 } p21_file;

@@ -53,10 +53,9 @@ static void check_global(const fitted_case *c, const iges_file *g)
     CHECK(n == 25, "%s: 25 global fields (%d)", c->name, n);
     if (n != 25)
         return;
-    CHECK(strcmp(f[0], "1H,") == 0 && strcmp(f[1], "1H;") == 0, "%s: delimiters , and ;",
-          c->name);
-    CHECK(strtod(f[12], NULL) == 1 && strchr(f[12], '.'), "%s: model space scale 1. (%s)",
-          c->name, f[12]);
+    CHECK(strcmp(f[0], "1H,") == 0 && strcmp(f[1], "1H;") == 0, "%s: delimiters , and ;", c->name);
+    CHECK(strtod(f[12], NULL) == 1 && strchr(f[12], '.'), "%s: model space scale 1. (%s)", c->name,
+          f[12]);
     CHECK(strcmp(f[13], "2") == 0 && strcmp(f[14], "2HMM") == 0, "%s: units flag 2, MM (%s, %s)",
           c->name, f[13], f[14]);
     CHECK(strcmp(f[22], "11") == 0, "%s: IGES 5.3 (version flag 11, %s)", c->name, f[22]);
@@ -84,9 +83,11 @@ static void check_curve(const fitted_case *c, const fitted *t, const iges_curve 
     CHECK(e->reals_ok, "%s curve %d: every real with a decimal point", c->name, i);
     CHECK(e->range[0] == b->knots[b->degree] && e->range[1] == b->knots[b->ncontrol],
           "%s curve %d: V0, V1 the parameter range", c->name, i);
-    const double tol = ic_trace_result_report(t->res)->fit_tol, d = fitted_largest_distance(c, &e->b);
-    CHECK(d <= tol, "%s curve %d: %d points of the curve read back within the fit tolerance %g "
-                    "of both surfaces (%g)",
+    const double tol = ic_trace_result_report(t->res)->fit_tol,
+                 d = fitted_largest_distance(c, &e->b);
+    CHECK(d <= tol,
+          "%s curve %d: %d points of the curve read back within the fit tolerance %g "
+          "of both surfaces (%g)",
           c->name, i, CASE_CHECKS, tol, d);
 }
 
@@ -125,8 +126,7 @@ static void check_start(const fitted_case *c, const iges_file *g, const char *st
           g->count[0]);
 }
 
-static void check_file(const fitted_case *c, const fitted *t, const char *title,
-                       const char *start)
+static void check_file(const fitted_case *c, const fitted *t, const char *title, const char *start)
 {
     ic_error err;
     ic_status st = IC_OK;

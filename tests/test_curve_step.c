@@ -57,9 +57,11 @@ static void check_curve(const fitted_case *c, const fitted *t, const p21_curve *
           c->name, i);
     CHECK(k->closed == ic_trace_result_curve(t->res, i)->closed, "%s curve %d: closed flag",
           c->name, i);
-    const double tol = ic_trace_result_report(t->res)->fit_tol, d = fitted_largest_distance(c, &k->b);
-    CHECK(d <= tol, "%s curve %d: %d points of the curve read back within the fit tolerance %g "
-                    "of both surfaces (%g)",
+    const double tol = ic_trace_result_report(t->res)->fit_tol,
+                 d = fitted_largest_distance(c, &k->b);
+    CHECK(d <= tol,
+          "%s curve %d: %d points of the curve read back within the fit tolerance %g "
+          "of both surfaces (%g)",
           c->name, i, CASE_CHECKS, tol, d);
 }
 
@@ -81,8 +83,10 @@ static void check_file(const fitted_case *c, const fitted *t, const p21_file *pf
                      "FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));\nENDSEC;"),
           "%s: the header's three entities, AP214", c->name);
     CHECK(references_resolve(pf), "%s: every reference is an instance", c->name);
-    static const char *const needed[] = {"APPLICATION_PROTOCOL_DEFINITION", "PRODUCT",
-                                         "PRODUCT_DEFINITION", "PRODUCT_DEFINITION_SHAPE",
+    static const char *const needed[] = {"APPLICATION_PROTOCOL_DEFINITION",
+                                         "PRODUCT",
+                                         "PRODUCT_DEFINITION",
+                                         "PRODUCT_DEFINITION_SHAPE",
                                          "SHAPE_DEFINITION_REPRESENTATION",
                                          "GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION",
                                          "GEOMETRIC_CURVE_SET"};

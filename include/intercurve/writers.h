@@ -4,10 +4,11 @@
  * that `intercurve eval`, `point` and `trace` print, and traced
  * intersections as CSV, VTK PolyData (legacy ASCII) and OBJ polylines for
  * other tools, their fitted B-splines as STEP and IGES curves;
- * docs/output-formats.md describes every key, column and array. Each writer writes to an open stream the caller owns (it is
- * neither closed nor flushed), reads its inputs without keeping them, and
- * reports a failed write (ferror) as IC_ERR_IO. ic_write_file_atomic puts
- * any writer's output into a file so that no reader ever sees half of it.
+ * docs/output-formats.md describes every key, column and array. Each
+ * writer writes to an open stream the caller owns (it is neither closed nor
+ * flushed), reads its inputs without keeping them, and reports a failed
+ * write (ferror) as IC_ERR_IO. ic_write_file_atomic puts any writer's
+ * output into a file so that no reader ever sees half of it.
  */
 #ifndef INTERCURVE_WRITERS_H
 #define INTERCURVE_WRITERS_H

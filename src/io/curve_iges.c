@@ -78,30 +78,30 @@ static int write_global(FILE *f, const ic_trace_result *res, const char *title)
     const char *product = title && title[0] ? title : "intersection curves";
     iges_records r;
     ic_iges_records_start(&r, f, 'G');
-    put_string(&r, ",", ',');                         /* 1 parameter delimiter */
-    put_string(&r, ";", ',');                         /* 2 record delimiter */
-    put_string(&r, product, ',');                     /* 3 sender's product id */
-    put_string(&r, "intersection curves", ',');       /* 4 file name */
-    put_string(&r, "intercurve", ',');                /* 5 native system */
-    put_string(&r, "intercurve", ',');                /* 6 preprocessor */
-    put_int(&r, 32, ',');                             /* 7 bits of an integer */
-    put_int(&r, 38, ',');                             /* 8, 9 single precision */
+    put_string(&r, ",", ',');                   /* 1 parameter delimiter */
+    put_string(&r, ";", ',');                   /* 2 record delimiter */
+    put_string(&r, product, ',');               /* 3 sender's product id */
+    put_string(&r, "intersection curves", ','); /* 4 file name */
+    put_string(&r, "intercurve", ',');          /* 5 native system */
+    put_string(&r, "intercurve", ',');          /* 6 preprocessor */
+    put_int(&r, 32, ',');                       /* 7 bits of an integer */
+    put_int(&r, 38, ',');                       /* 8, 9 single precision */
     put_int(&r, 6, ',');
-    put_int(&r, 308, ',');                            /* 10, 11 double precision */
+    put_int(&r, 308, ','); /* 10, 11 double precision */
     put_int(&r, 15, ',');
-    put_string(&r, product, ',');                     /* 12 receiver's product id */
-    put_real(&r, 1, ',');                             /* 13 model space scale */
-    put_int(&r, IGES_UNITS_MM, ',');                  /* 14, 15 units */
+    put_string(&r, product, ',');    /* 12 receiver's product id */
+    put_real(&r, 1, ',');            /* 13 model space scale */
+    put_int(&r, IGES_UNITS_MM, ','); /* 14, 15 units */
     put_string(&r, "MM", ',');
-    put_int(&r, 1, ',');                              /* 16 line weight gradations */
-    put_real(&r, 0, ',');                             /* 17 largest line width */
-    put_string(&r, stamp, ',');                       /* 18 when written */
+    put_int(&r, 1, ',');                                     /* 16 line weight gradations */
+    put_real(&r, 0, ',');                                    /* 17 largest line width */
+    put_string(&r, stamp, ',');                              /* 18 when written */
     put_real(&r, ic_trace_result_report(res)->fit_tol, ','); /* 19 resolution */
-    put_real(&r, largest_coordinate(res), ',');       /* 20 largest coordinate */
-    ic_iges_records_put(&r, ",,");                    /* 21, 22 author, organisation: none */
-    put_int(&r, IGES_VERSION_5_3, ',');               /* 23 version */
-    put_int(&r, 0, ',');                              /* 24 drafting standard: none */
-    put_string(&r, stamp, ';');                       /* 25 when the model was made */
+    put_real(&r, largest_coordinate(res), ',');              /* 20 largest coordinate */
+    ic_iges_records_put(&r, ",,");                           /* 21, 22 author, organisation: none */
+    put_int(&r, IGES_VERSION_5_3, ',');                      /* 23 version */
+    put_int(&r, 0, ',');                                     /* 24 drafting standard: none */
+    put_string(&r, stamp, ';');                              /* 25 when the model was made */
     ic_iges_records_end_line(&r);
     return r.seq;
 }
@@ -111,21 +111,21 @@ static void put_curve(iges_records *r, const ic_trace_result *res, int i)
 {
     const ic_bspline *b = &ic_trace_result_fit(res, i)->curve;
     put_int(r, IGES_BSPLINE_CURVE, ',');
-    put_int(r, b->ncontrol - 1, ',');                          /* K */
-    put_int(r, b->degree, ',');                                /* M */
-    put_int(r, 0, ',');                                        /* PROP1: not said planar */
-    put_int(r, ic_trace_result_curve(res, i)->closed, ',');    /* PROP2: closed */
-    put_int(r, 1, ',');                                        /* PROP3: polynomial */
-    put_int(r, 0, ',');                                        /* PROP4: not periodic */
+    put_int(r, b->ncontrol - 1, ',');                       /* K */
+    put_int(r, b->degree, ',');                             /* M */
+    put_int(r, 0, ',');                                     /* PROP1: not said planar */
+    put_int(r, ic_trace_result_curve(res, i)->closed, ','); /* PROP2: closed */
+    put_int(r, 1, ',');                                     /* PROP3: polynomial */
+    put_int(r, 0, ',');                                     /* PROP4: not periodic */
     for (int k = 0; k < b->ncontrol + b->degree + 1; k++)
         put_real(r, b->knots[k], ',');
     for (int k = 0; k < b->ncontrol; k++)
         put_real(r, 1, ',');
     for (int k = 0; k < 3 * b->ncontrol; k++)
         put_real(r, b->control[k], ',');
-    put_real(r, b->knots[b->degree], ',');                    /* V0, V1 */
+    put_real(r, b->knots[b->degree], ','); /* V0, V1 */
     put_real(r, b->knots[b->ncontrol], ',');
-    for (int k = 0; k < 3; k++)                                /* unused normal */
+    for (int k = 0; k < 3; k++) /* unused normal */
         put_real(r, 0, k < 2 ? ',' : ';');
     ic_iges_records_end_line(r);
 }
@@ -147,8 +147,8 @@ static int write_directory(FILE *f, const ic_trace_result *res)
         if (!ic_trace_result_fit(res, i))
             continue;
         const int lines = curve_lines(res, i);
-        fprintf(f, "%8d%8d%8d%8d%8d%8d%8d%8d%8sD%7d\n", IGES_BSPLINE_CURVE, pline, 0, 0, 0, 0, 0,
-                0, "00000000", seq + 1);
+        fprintf(f, "%8d%8d%8d%8d%8d%8d%8d%8d%8sD%7d\n", IGES_BSPLINE_CURVE, pline, 0, 0, 0, 0, 0, 0,
+                "00000000", seq + 1);
         fprintf(f, "%8d%8d%8d%8d%8d%8s%8s%8s%8dD%7d\n", IGES_BSPLINE_CURVE, 0, 0, lines, 0, "", "",
                 "CURVE", i, seq + 2);
         seq += 2;
@@ -170,8 +170,7 @@ static int write_parameters(FILE *f, const ic_trace_result *res)
     return r.seq;
 }
 
-ic_status ic_trace_write_iges(FILE *f, const ic_trace_result *res, const char *title,
-                              ic_error *err)
+ic_status ic_trace_write_iges(FILE *f, const ic_trace_result *res, const char *title, ic_error *err)
 {
     ic_status st = ic_curve_check_fits(res, "IGES", err);
     if (st != IC_OK)

@@ -57,8 +57,8 @@ ic_status ic_curve_check_fits(const ic_trace_result *res, const char *format, ic
             !all_finite(b->knots, b->ncontrol + b->degree + 1) ||
             !all_finite(b->control, 3 * b->ncontrol))
             return ic_error_set(err, IC_ERR_INVALID, 0,
-                                "%s output: curve %d's B-spline is malformed or not finite",
-                                format, i);
+                                "%s output: curve %d's B-spline is malformed or not finite", format,
+                                i);
         fitted++;
     }
     if (fitted == 0)

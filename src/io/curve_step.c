@@ -92,8 +92,9 @@ static void write_context(FILE *f, const ic_trace_result *res, const char *title
 {
     fprintf(f, "#%d=APPLICATION_CONTEXT('core data for automotive mechanical design processes');\n",
             ID_APPLICATION_CONTEXT);
-    fprintf(f, "#%d=APPLICATION_PROTOCOL_DEFINITION('international standard','automotive_design',"
-               "2000,#%d);\n",
+    fprintf(f,
+            "#%d=APPLICATION_PROTOCOL_DEFINITION('international standard','automotive_design',"
+            "2000,#%d);\n",
             ID_PROTOCOL, ID_APPLICATION_CONTEXT);
     fprintf(f, "#%d=PRODUCT_CONTEXT('',#%d,'mechanical');\n", ID_PRODUCT_CONTEXT,
             ID_APPLICATION_CONTEXT);
@@ -108,11 +109,13 @@ static void write_context(FILE *f, const ic_trace_result *res, const char *title
     fprintf(f, "#%d=PRODUCT_DEFINITION_SHAPE('','',#%d);\n", ID_DEFINITION_SHAPE, ID_DEFINITION);
     fprintf(f, "#%d=SHAPE_DEFINITION_REPRESENTATION(#%d,#%d);\n", ID_SHAPE_DEFINITION,
             ID_DEFINITION_SHAPE, ID_WIREFRAME);
-    fprintf(f, "#%d=GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION('intersection curves',"
-               "(#%d),#%d);\n",
+    fprintf(f,
+            "#%d=GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION('intersection curves',"
+            "(#%d),#%d);\n",
             ID_WIREFRAME, ID_CURVE_SET, ID_CONTEXT);
-    fprintf(f, "#%d=(GEOMETRIC_REPRESENTATION_CONTEXT(3)GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((#%d))"
-               "GLOBAL_UNIT_ASSIGNED_CONTEXT((#%d,#%d,#%d))REPRESENTATION_CONTEXT('',''));\n",
+    fprintf(f,
+            "#%d=(GEOMETRIC_REPRESENTATION_CONTEXT(3)GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((#%d))"
+            "GLOBAL_UNIT_ASSIGNED_CONTEXT((#%d,#%d,#%d))REPRESENTATION_CONTEXT('',''));\n",
             ID_CONTEXT, ID_UNCERTAINTY, ID_LENGTH_UNIT, ID_ANGLE_UNIT, ID_SOLID_ANGLE_UNIT);
     fprintf(f, "#%d=(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(.MILLI.,.METRE.));\n", ID_LENGTH_UNIT);
     fprintf(f, "#%d=(NAMED_UNIT(*)PLANE_ANGLE_UNIT()SI_UNIT($,.RADIAN.));\n", ID_ANGLE_UNIT);
@@ -152,7 +155,8 @@ static void write_curve(FILE *f, const ic_trace_result *res, int i)
         separate(f, k);
         fprintf(f, "#%d", first + k);
     }
-    fprintf(f, "),\n  .UNSPECIFIED.,%s,.F.,(", ic_trace_result_curve(res, i)->closed ? ".T." : ".F.");
+    fprintf(f, "),\n  .UNSPECIFIED.,%s,.F.,(",
+            ic_trace_result_curve(res, i)->closed ? ".T." : ".F.");
     const int nknots = b->ncontrol + b->degree + 1;
     int distinct = 0;
     for (int k = 0; k < nknots; k += ic_curve_knot_run(b, k)) {
@@ -168,8 +172,7 @@ static void write_curve(FILE *f, const ic_trace_result *res, int i)
     fputs("),.UNSPECIFIED.);\n", f);
 }
 
-ic_status ic_trace_write_step(FILE *f, const ic_trace_result *res, const char *title,
-                              ic_error *err)
+ic_status ic_trace_write_step(FILE *f, const ic_trace_result *res, const char *title, ic_error *err)
 {
     ic_status st = ic_curve_check_fits(res, "STEP", err);
     if (st != IC_OK)

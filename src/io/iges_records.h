@@ -8,12 +8,12 @@
 #include <stdio.h>
 
 typedef struct {
-    FILE *f;       /* NULL: only count the lines */
-    char section;  /* 'S', 'G' or 'P' */
-    int width;     /* columns for the data: 72, or 64 in P (then the DE pointer) */
-    int de;        /* P: the directory entry the parameters belong to */
-    int seq;       /* lines written so far in this section */
-    int used;      /* columns used in the line being filled */
+    FILE *f;      /* NULL: only count the lines */
+    char section; /* 'S', 'G' or 'P' */
+    int width;    /* columns for the data: 72, or 64 in P (then the DE pointer) */
+    int de;       /* P: the directory entry the parameters belong to */
+    int seq;      /* lines written so far in this section */
+    int used;     /* columns used in the line being filled */
     char line[73];
 } iges_records;
 

@@ -162,7 +162,7 @@ check "trace -o FILE exits 0" $?
 [ -s "$tmpout" ] && [ ! -e "$tmpout.tmp" ] && grep -q '"shape":.*"planar"' "$tmpout"
 check "trace -o FILE: written through a rename, planar arcs of Ex 5.1" $?
 expect_error 1 "trace $src/examples/viviani-implicit.json --format xls" "--format xls is not one of json, csv, vtk, obj"
-for fmt in csv vtk obj; do
+for fmt in csv vtk obj step iges; do
     "$bin" trace "$src/examples/ellipsoids.json" --format $fmt -o "$tmpout.$fmt" >"$out" 2>"$errf"
     check "trace --format $fmt -o FILE exits 0" $?
     [ -s "$tmpout.$fmt" ] && [ ! -e "$tmpout.$fmt.tmp" ]
@@ -174,6 +174,21 @@ grep -q '^LINES 2 ' "$tmpout.vtk" && grep -q '^VECTORS b double' "$tmpout.vtk"
 check "trace --format vtk: two polylines with the frame as point data" $?
 [ "$(grep -c '^l ' "$tmpout.obj")" -eq 2 ]
 check "trace --format obj: two polylines" $?
+[ "$(grep -c '^#[0-9]*=B_SPLINE_CURVE_WITH_KNOTS(' "$tmpout.step")" -eq 2 ] &&
+    head -1 "$tmpout.step" | grep -qx 'ISO-10303-21;'
+check "trace --format step: two B-spline curves in a Part 21 file" $?
+[ "$(grep -c '^     126 .*D      [13]$' "$tmpout.iges")" -eq 2 ] &&
+    [ "$(awk 'length($0) != 80' "$tmpout.iges" | wc -l)" -eq 0 ]
+check "trace --format iges: two entities 126, 80 columns a line" $?
+for fmt in step iges; do
+    "$bin" surfaces "$tmpout.$fmt" >"$out" 2>"$errf"
+    grep -q "length unit mm (0.001 m), 0 surfaces" "$out"
+    check "trace --format $fmt: intercurve's own reader finds millimetres (and no surface)" $?
+done
+"$bin" trace "$src/examples/ellipsoids.json" --format step --fit-tol 1e-6 >"$out" 2>"$errf"
+! cmp -s <(grep -v FILE_NAME "$out") <(grep -v FILE_NAME "$tmpout.step") &&
+    grep -q "LENGTH_MEASURE(.*E-0[56])" "$out"
+check "trace --format step --fit-tol 1e-6: fitted with that tolerance" $?
 expect_error 2 "trace $src/examples/ellipsoids.json -o /nonexistent-dir/x.json" "cannot write /nonexistent-dir/x.json"
 "$bin" trace "$src/examples/enneper-self.json" >"$out" 2>"$errf"
 [ "$(grep -c '"closed":' "$out")" -eq 2 ] && [ "$(grep -c '"shape":.*"planar"' "$out")" -eq 2 ]

@@ -3,11 +3,12 @@
  * Results as files: the JSON documents and text summaries
  * that `intercurve eval`, `point` and `trace` print, and traced
  * intersections as CSV, VTK PolyData (legacy ASCII) and OBJ polylines for
- * other tools; docs/output-formats.md describes every key, column and
- * array. Each writer writes to an open stream the caller owns (it is
- * neither closed nor flushed), reads its inputs without keeping them, and
- * reports a failed write (ferror) as IC_ERR_IO. ic_write_file_atomic puts
- * any writer's output into a file so that no reader ever sees half of it.
+ * other tools, their fitted B-splines as STEP and IGES curves;
+ * docs/output-formats.md describes every key, column and array. Each
+ * writer writes to an open stream the caller owns (it is neither closed nor
+ * flushed), reads its inputs without keeping them, and reports a failed
+ * write (ferror) as IC_ERR_IO. ic_write_file_atomic puts any writer's
+ * output into a file so that no reader ever sees half of it.
  */
 #ifndef INTERCURVE_WRITERS_H
 #define INTERCURVE_WRITERS_H
@@ -89,6 +90,24 @@ IC_API IC_NODISCARD ic_status ic_trace_write_text(FILE *f, const ic_trace_result
  *  above. s is not const: evaluation grows its workspace. */
 IC_API IC_NODISCARD ic_status ic_surface_write_json(FILE *f, ic_surface *s, const char *name,
                                              const double *at, int order, ic_error *err);
+
+/** The fitted curves of res (ic_trace_fit; ic_trace_result_fit) as an
+ *  ISO 10303-21 file of AP214 (docs/output-formats.md, "STEP"): each a
+ *  B_SPLINE_CURVE_WITH_KNOTS named "curve I" (I its index in res) in a
+ *  GEOMETRIC_CURVE_SET, the shape of one product, lengths in millimetres
+ *  (the problem's numbers unchanged). title (NULL or "" for none) names the
+ *  file and the product. Curves without a fit are left out; IC_ERR_INVALID
+ *  when no curve has one (fit first), IC_ERR_IO on a write error. */
+IC_API IC_NODISCARD ic_status ic_trace_write_step(FILE *f, const ic_trace_result *res,
+                                                  const char *title, ic_error *err);
+
+/** The same curves as an IGES 5.3 file (docs/output-formats.md, "IGES"):
+ *  each a rational B-spline curve (entity 126) with PROP3 = 1 (polynomial,
+ *  weights 1), labelled CURVE with subscript I; units flag 2 (millimetres),
+ *  model space scale 1; title in the start section. Errors as
+ *  ic_trace_write_step. */
+IC_API IC_NODISCARD ic_status ic_trace_write_iges(FILE *f, const ic_trace_result *res,
+                                                  const char *title, ic_error *err);
 
 /** A writer for ic_write_file_atomic: prints its document into f and
  *  returns IC_OK, or an error status with err filled. */

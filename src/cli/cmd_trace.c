@@ -6,17 +6,26 @@
 enum { OPT_FORMAT, OPT_OUTPUT, OPT_TOL, OPT_DEPTH, OPT_TIME_LIMIT, OPT_FIT_TOL, NOPTIONS };
 
 /* The formats, in the order of --format's choices. */
-typedef enum { FORMAT_JSON, FORMAT_CSV, FORMAT_VTK, FORMAT_OBJ, FORMAT_TEXT } out_format;
+typedef enum {
+    FORMAT_JSON,
+    FORMAT_CSV,
+    FORMAT_VTK,
+    FORMAT_OBJ,
+    FORMAT_TEXT,
+    FORMAT_STEP,
+    FORMAT_IGES
+} out_format;
 
 static const ic_cli_option TRACE_OPTIONS[NOPTIONS] = {
     [OPT_FORMAT] = {.name = "--format",
                     .metavar = "F",
                     .kind = IC_OPT_CHOICE,
-                    .choices = "json|csv|vtk|obj|text",
+                    .choices = "json|csv|vtk|obj|text|step|iges",
                     .fallback = "json",
                     .help = "json, csv (one row per point), vtk (legacy PolyData with\n"
-                            "t, n, b, kappa, tau as point data, for ParaView), obj (polylines)\n"
-                            "or text (a summary table of the curves and points);\n"
+                            "t, n, b, kappa, tau as point data, for ParaView), obj (polylines),\n"
+                            "text (a summary table of the curves and points), or step or\n"
+                            "iges (the curves' B-splines, for CAD systems);\n"
                             "docs/output-formats.md"},
     [OPT_OUTPUT] = {.name = "-o",
                     .metavar = "FILE",
@@ -50,9 +59,10 @@ static const ic_cli_option TRACE_OPTIONS[NOPTIONS] = {
                      .lo = 0,
                      .hi = 1e-2,
                      .fallback = "1e-9",
-                     .help = "the JSON output's B-splines of the curves (docs/bspline.md):\n"
-                             "what a pcurve's image may stray from the curve, a fraction of\n"
-                             "the problem's size; the report gives the largest error found"},
+                     .help = "the curves' B-splines in the json, step and iges outputs\n"
+                             "(docs/bspline.md): what a pcurve's image may stray from the\n"
+                             "curve, a fraction of the problem's size; the json report\n"
+                             "gives the largest error found"},
 };
 
 static const ic_cli_command TRACE = {
@@ -73,7 +83,8 @@ static const ic_cli_command TRACE = {
     .noptions = NOPTIONS,
     .notes = "example:\n"
              "  intercurve trace examples/viviani-implicit.json -o viviani.json\n"
-             "  intercurve trace examples/viviani-implicit.json --format vtk -o viviani.vtk\n",
+             "  intercurve trace examples/viviani-implicit.json --format vtk -o viviani.vtk\n"
+             "  intercurve trace examples/viviani-implicit.json --format step -o viviani.step\n",
 };
 
 /* What the writers need, handed through ic_write_file_atomic. */
@@ -83,6 +94,12 @@ typedef struct {
     const ic_pair *pair;
     const char *title;
 } trace_output;
+
+/* The formats that carry the curves' B-splines (ic_trace_fit first). */
+static int has_bsplines(out_format fmt)
+{
+    return fmt == FORMAT_JSON || fmt == FORMAT_STEP || fmt == FORMAT_IGES;
+}
 
 /* Writes the result in its format to an open stream (an ic_file_writer). */
 static ic_status write_result(FILE *f, void *user, ic_error *err)
@@ -97,6 +114,10 @@ static ic_status write_result(FILE *f, void *user, ic_error *err)
         return ic_trace_write_obj(f, o->res, err);
     case FORMAT_TEXT:
         return ic_trace_write_text(f, o->res, o->title, err);
+    case FORMAT_STEP:
+        return ic_trace_write_step(f, o->res, o->title, err);
+    case FORMAT_IGES:
+        return ic_trace_write_iges(f, o->res, o->title, err);
     case FORMAT_JSON:
         break;
     }
@@ -139,7 +160,7 @@ int ic_cmd_trace(int argc, char **argv)
         return rc;
     ic_error err;
     ic_error_clear(&err);
-    if ((out_format)v[OPT_FORMAT].choice == FORMAT_JSON &&
+    if (has_bsplines((out_format)v[OPT_FORMAT].choice) &&
         ic_trace_fit(t.res, t.pair, v[OPT_FIT_TOL].real, &err) != IC_OK) {
         fprintf(stderr, "intercurve trace: %s\n", err.message);
         ic_cli_traced_free(&t);

@@ -54,6 +54,8 @@ static double conversion_error(ic_surface *s, const case_net *net)
     return worst;
 }
 
+static int collect_specials(const ic_trace_result *res, peer_output *out);
+
 static int collect(const ic_trace_result *res, peer_output *out)
 {
     out->ncurves = ic_trace_result_num_curves(res);
@@ -68,6 +70,12 @@ static int collect(const ic_trace_result *res, peer_output *out)
                 return -1;
         }
     }
+    return collect_specials(res, out);
+}
+
+/* The isolated points, the types of the special points, the report. */
+static int collect_specials(const ic_trace_result *res, peer_output *out)
+{
     for (int i = 0; i < ic_trace_result_num_specials(res); i++) {
         const ic_trace_special *sp = ic_trace_result_special(res, i);
         peer_output_note(out, "%s%s; ", ic_point_type_name(sp->type),
@@ -117,9 +125,8 @@ static int collect_bsplines(const ic_trace_result *res, peer_output *out)
                 return -1;
         }
     }
-    peer_output_note(out, "fit error %.1e; complete=%d", ic_trace_result_report(res)->fit_error,
-                     ic_trace_result_report(res)->complete);
-    return 0;
+    peer_output_note(out, "fit error %.1e; ", ic_trace_result_report(res)->fit_error);
+    return collect_specials(res, out);
 }
 
 /* intercurve, traced (and with `fitted`, its curves fitted as B-splines,

@@ -257,10 +257,10 @@ IC_API IC_NODISCARD ic_status ic_trace_fit(ic_trace_result *res, ic_pair *pair, 
 /** Curve i's B-splines, or NULL (not fitted, or i out of range). */
 IC_API const ic_curve_fit *ic_trace_result_fit(const ic_trace_result *res, int i);
 
-/** Fits curve c of a trace of `pair` (curves of at least 2 points); fit_tol
- *  (length) is what a pcurve's image may stray from the curve. The curve's
- *  own error is measured (fit_error), not yet refined where it exceeds
- *  fit_tol. */
+/** Fits curve c of a trace of `pair` (curves of at least 2 points) to
+ *  fit_tol (a length): stretches that miss it get a located point at their
+ *  middle, for up to 4 rounds; a pcurve whose image strays beyond it is
+ *  dropped. fit_error is what is left. */
 IC_API IC_NODISCARD ic_status ic_curve_fit_new(ic_curve_fit **fit, ic_pair *pair,
                                                const ic_trace_curve *c, double fit_tol,
                                                ic_error *err);

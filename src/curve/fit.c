@@ -527,8 +527,10 @@ static double check_at(ic_pair *pair, const ic_curve_fit *f, const ic_trace_poin
 
 /* Checks the fit at the middle of every stretch between traced points. */
 static void check_fit(ic_pair *pair, ic_curve_fit *f, const ic_trace_curve *c,
-                      const hermite_node *nodes, const int *source, int n)
+                      const hermite_node *nodes, const int *source, int n, double tol,
+                      double *bad, int *nbad)
 {
+    *nbad = 0;
     f->fit_error = 0;
     f->checks = 0;
     ic_jet_space *sp[2] = {NULL, NULL};
@@ -542,19 +544,20 @@ static void check_fit(ic_pair *pair, ic_curve_fit *f, const ic_trace_curve *c,
             continue;
         f->fit_error = fmax(f->fit_error, e);
         f->checks++;
+        if (e > tol) /* to be refined: a node at its middle */
+            bad[(*nbad)++] = 0.5 * (nodes[k].s + nodes[k + 1].s);
     }
     ic_jet_space_free(sp[0]);
     ic_jet_space_free(sp[1]);
 }
 
-ic_status ic_curve_fit_new(ic_curve_fit **out, ic_pair *pair, const ic_trace_curve *c,
-                           double fit_tol, ic_error *err)
+/* One fit of the points of c; bad (c->npoints doubles) receives the middles
+ * of the stretches beyond tol. */
+static ic_status fit_once(ic_curve_fit **out, ic_pair *pair, const ic_trace_curve *c,
+                          double fit_tol, double *bad, int *nbad, ic_error *err)
 {
     *out = NULL;
-    if (!pair || !c || c->npoints < 2 || !c->points)
-        return ic_error_set(err, IC_ERR_INVALID, 0, "curve fit: no curve of two points or more");
-    if (!(fit_tol > 0) || !isfinite(fit_tol))
-        return ic_error_set(err, IC_ERR_INVALID, 0, "curve fit: the tolerance must be positive");
+    *nbad = 0;
     ic_curve_fit *f = calloc(1, sizeof *f);
     hermite_node *nodes = malloc(sizeof *nodes * (size_t)c->npoints * 2);
     int *source = malloc(sizeof *source * (size_t)c->npoints * 2), *pinned = source + c->npoints;
@@ -576,11 +579,116 @@ ic_status ic_curve_fit_new(ic_curve_fit **out, ic_pair *pair, const ic_trace_cur
             st = piecewise(&f->pcurves[s], nodes + c->npoints, n, 2, err);
     if (st == IC_OK) {
         check_pcurves(pair, f, nodes, n, fit_tol);
-        check_fit(pair, f, c, nodes, source, n);
+        check_fit(pair, f, c, nodes, source, n, fit_tol, bad, nbad);
     }
     ic_jet_space_free(sp);
     free(nodes);
     free(source);
+    if (st != IC_OK) {
+        ic_curve_fit_free(f);
+        return st;
+    }
+    *out = f;
+    return IC_OK;
+}
+
+/* A point of the intersection at the fitted curve's s: located from the
+ * curve's point (the pcurves' parameters, else the node's, as the guess),
+ * with its apparatus oriented along the curve. 0 where that fails (a
+ * tangential point: no refinement there). */
+static int point_at(ic_pair *pair, const ic_curve_fit *f, const ic_trace_point *near, double s,
+                    ic_trace_point *p)
+{
+    double d[6], params[2][2];
+    if (ic_bspline_eval(&f->curve, s, 1, d, NULL) != IC_OK)
+        return 0;
+    memcpy(params, near->params, sizeof params);
+    for (int k = 0; k < 2; k++)
+        if (f->pcurves[k].ncontrol && ic_bspline_eval(&f->pcurves[k], s, 0, params[k], NULL) != IC_OK)
+            return 0;
+    ic_local_options opt;
+    ic_local_defaults(&opt);
+    ic_local_point pt;
+    ic_local_result res;
+    if ((ic_local_locate_guess(pair, &pt, d, params, &opt, NULL) != IC_OK &&
+         ic_local_locate(pair, &pt, d, &opt, NULL) != IC_OK) ||
+        ic_local_apparatus(pair, &res, &pt, 2, IC_METHOD_JET, &opt, NULL) != IC_OK ||
+        res.type != IC_POINT_TRANSVERSAL)
+        return 0;
+    const ic_branch *br = &res.branches[0];
+    const double sign = ic_dot3(br->t, d + 3) < 0 ? -1 : 1;
+    memset(p, 0, sizeof *p);
+    p->s = s;
+    memcpy(p->xyz, pt.xyz, sizeof p->xyz);
+    memcpy(p->params, pt.params, sizeof p->params);
+    ic_scale3(p->t, br->t, sign);
+    memcpy(p->n, br->n, sizeof p->n);
+    ic_scale3(p->b, br->b, sign);
+    p->kappa = br->kappa;
+    p->tau = br->tau;
+    p->frame_defined = br->frame_defined;
+    return 1;
+}
+
+/* The points of c with a located point at each s of bad[] (sorted) put in:
+ * a new point array in *pts (owned by the caller); 0 when none could be
+ * made. */
+static int refined_points(ic_pair *pair, const ic_curve_fit *f, const ic_trace_curve *c,
+                          const double *bad, int nbad, ic_trace_point **pts, int *n)
+{
+    ic_trace_point *out = malloc(sizeof *out * (size_t)(c->npoints + nbad));
+    if (!out)
+        return 0;
+    int k = 0, b = 0;
+    for (int i = 0; i < c->npoints; i++) {
+        for (; b < nbad && bad[b] < c->points[i].s; b++)
+            k += point_at(pair, f, &c->points[i > 0 ? i - 1 : 0], bad[b], &out[k]);
+        out[k++] = c->points[i];
+    }
+    *pts = out;
+    *n = k;
+    return k > c->npoints;
+}
+
+/* rounds of refinement: each halves the stretches that missed the tolerance */
+#define FIT_MAX_ROUNDS 4
+
+ic_status ic_curve_fit_new(ic_curve_fit **out, ic_pair *pair, const ic_trace_curve *c,
+                           double fit_tol, ic_error *err)
+{
+    *out = NULL;
+    if (!pair || !c || c->npoints < 2 || !c->points)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "curve fit: no curve of two points or more");
+    if (!(fit_tol > 0) || !isfinite(fit_tol))
+        return ic_error_set(err, IC_ERR_INVALID, 0, "curve fit: the tolerance must be positive");
+    ic_trace_curve cur = *c;
+    ic_trace_point *owned = NULL;
+    ic_curve_fit *f = NULL;
+    ic_status st = IC_OK;
+    for (int round = 0; st == IC_OK && round <= FIT_MAX_ROUNDS; round++) {
+        double *bad = malloc(sizeof *bad * (size_t)cur.npoints);
+        int nbad = 0;
+        if (!bad) {
+            st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory fitting a curve");
+            break;
+        }
+        ic_curve_fit_free(f);
+        st = fit_once(&f, pair, &cur, fit_tol, bad, &nbad, err);
+        ic_trace_point *next = NULL;
+        int n = 0;
+        const int more = st == IC_OK && nbad > 0 && round < FIT_MAX_ROUNDS &&
+                         refined_points(pair, f, &cur, bad, nbad, &next, &n);
+        free(bad);
+        if (!more) {
+            free(next);
+            break;
+        }
+        free(owned);
+        owned = next;
+        cur.points = owned;
+        cur.npoints = n;
+    }
+    free(owned);
     if (st != IC_OK) {
         ic_curve_fit_free(f);
         return st;

@@ -284,6 +284,99 @@ done:
     ic_problem_free(p);
 }
 
+/* The helix of a cylinder (radius 1, implicit) and a helicoid (u cos v,
+ * u sin v, v): (cos v, sin v, v), kappa = tau = 1/2 everywhere, at 1000
+ * points of the fitted curve: on the cylinder, at the helicoid's height for
+ * its angle, kappa and tau; the helicoid's pcurve (u = 1, v = z) on it. */
+static void check_helix(void)
+{
+    static const char *doc =
+        "{\"surfaces\": [{\"name\": \"helicoid\", \"type\": \"parametric\", "
+        "\"xyz\": [\"u*cos(v)\", \"u*sin(v)\", \"v\"], \"domain\": [[0.5, 1.5], [0, 6]]}, "
+        "{\"name\": \"cylinder\", \"type\": \"implicit\", \"f\": \"x^2 + y^2 - 1\"}]}";
+    ic_problem *p = NULL;
+    ic_pair *pair = NULL;
+    ic_trace_result *r = NULL;
+    ic_curve_fit *f = NULL;
+    ic_error err;
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    if (!REQUIRE(ic_problem_parse(&p, doc, strlen(doc), &err) == IC_OK &&
+                     ic_pair_new(&pair, ic_problem_surface(p, 0), ic_problem_surface(p, 1), &err) ==
+                         IC_OK &&
+                     ic_trace(&r, pair, &opt, &err) == IC_OK &&
+                     ic_trace_result_num_curves(r) == 1 &&
+                     ic_curve_fit_new(&f, pair, ic_trace_result_curve(r, 0), FIT_TOL, &err) == IC_OK,
+                 "helix: %s", err.message))
+        goto done;
+    const ic_trace_curve *tc = ic_trace_result_curve(r, 0);
+    double worst_d = 0, worst_k = 0, worst_t = 0, worst_p = 0;
+    const double s0 = tc->points[0].s, s1 = tc->points[tc->npoints - 1].s;
+    for (int k = 0; k <= SAMPLES; k++) {
+        const double s = s0 + (s1 - s0) * k / SAMPLES;
+        double kappa, tau, x[3], uv[2];
+        frenet(&f->curve, s, &kappa, &tau, x);
+        worst_d = fmax(worst_d, fabs(hypot(x[0], x[1]) - 1));
+        worst_d = fmax(worst_d, hypot(x[0] - cos(x[2]), x[1] - sin(x[2])));
+        worst_k = fmax(worst_k, fabs(kappa - 0.5) / 0.5);
+        worst_t = fmax(worst_t, fabs(fabs(tau) - 0.5) / 0.5);
+        if (ic_bspline_eval(&f->pcurves[0], s, 0, uv, NULL) == IC_OK)
+            worst_p = fmax(worst_p, fabs(uv[0] - 1) + fabs(uv[1] - x[2]));
+        else
+            worst_p = INFINITY;
+    }
+    CHECK(worst_d <= FIT_TOL && worst_k <= KAPPA_TOL && worst_t <= TAU_TOL && worst_p <= FIT_TOL,
+          "helix: off %g, kappa %g, tau %g, pcurve off %g", worst_d, worst_k, worst_t, worst_p);
+    printf("%-48s off %.2g, kappa %.2g, tau %.2g, pcurves %.2g\n", "helix of a cylinder and a helicoid",
+           worst_d, worst_k, worst_t, worst_p);
+done:
+    ic_curve_fit_free(f);
+    ic_trace_result_free(r);
+    ic_pair_free(pair);
+    ic_problem_free(p);
+}
+
+/* The Steinmetz curves of examples/cylinders-equal.json (x^2 + y^2 = 1,
+ * x^2 + z^2 = 1): the ellipses (cos t, sin t, +-sin t), kappa = sqrt(2) /
+ * (1 + cos^2 t)^(3/2) with cos t = x, tau = 0; at 1000 points of each
+ * fitted curve, on both cylinders, and away from the branch points
+ * (+-1, 0, 0) kappa and tau. */
+static void check_steinmetz(void)
+{
+    char path[600];
+    snprintf(path, sizeof path, "%s/examples/cylinders-equal.json", source_dir);
+    traced t;
+    if (trace_file(&t, path) != 0)
+        return;
+    double worst_d = 0, worst_k = 0, worst_t = 0;
+    for (int c = 0; c < ic_trace_result_num_curves(t.res); c++) {
+        const ic_trace_curve *tc = ic_trace_result_curve(t.res, c);
+        ic_curve_fit *f = NULL;
+        ic_error err;
+        if (!REQUIRE(ic_curve_fit_new(&f, t.pair, tc, FIT_TOL, &err) == IC_OK, "steinmetz: %s",
+                     err.message))
+            continue;
+        const double s0 = tc->points[0].s, s1 = tc->points[tc->npoints - 1].s;
+        for (int k = 0; k <= SAMPLES; k++) {
+            double kappa, tau, x[3];
+            frenet(&f->curve, s0 + (s1 - s0) * k / SAMPLES, &kappa, &tau, x);
+            worst_d = fmax(worst_d, fabs(hypot(x[0], x[1]) - 1) + fabs(hypot(x[0], x[2]) - 1));
+            if (hypot(fabs(x[0]) - 1, hypot(x[1], x[2])) < 0.05)
+                continue; /* beside a branch point */
+            const double K = sqrt(2) / pow(1 + x[0] * x[0], 1.5);
+            worst_k = fmax(worst_k, fabs(kappa - K) / K);
+            worst_t = fmax(worst_t, fabs(tau) / K);
+        }
+        ic_curve_fit_free(f);
+    }
+    CHECK(ic_trace_result_num_curves(t.res) == 2 && worst_d <= FIT_TOL && worst_k <= KAPPA_TOL &&
+              worst_t <= TAU_TOL,
+          "steinmetz: off %g, kappa %g, tau %g", worst_d, worst_k, worst_t);
+    printf("%-48s off %.2g, kappa %.2g, tau %.2g\n", "examples/cylinders-equal.json", worst_d,
+           worst_k, worst_t);
+    release(&t);
+}
+
 int main(int argc, char **argv)
 {
     if (!REQUIRE(argc > 1, "usage: test_bspline SOURCE_DIR"))
@@ -295,6 +388,10 @@ int main(int argc, char **argv)
     check_circles("tests/data/nurbs/problem-cylinder-sphere.json", 1, sqrt(3), 2);
     check_circles("tests/data/nurbs/problem-cylinder-sphere-primitive.json", 1, sqrt(3), 2);
     check_viviani();
+    check_helix();
+    check_steinmetz();
+    /* the tangential circle of the NURBS torus and the sphere of radius 2.5 */
+    check_circles("tests/data/nurbs/problem-torus-sphere-tangential.json", 2.5, 0, 1);
     check_refinement();
     check_own("tests/data/nurbs/problem-knotline-plane.json", 1);
     check_own("tests/data/nurbs/problem-knotline-plane-reversed.json", 1);

@@ -8,6 +8,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "harness.h"
@@ -126,6 +127,34 @@ static inline double fitted_largest_distance(const fitted_case *c, const ic_bspl
             worst = fmax(worst, c->distance[s](x));
     }
     return worst;
+}
+
+/* A writer of a fitted trace (ic_trace_write_step, ic_trace_write_iges). */
+typedef ic_status (*fitted_writer)(FILE *f, const ic_trace_result *res, const char *title,
+                                   ic_error *err);
+
+/* The file a writer makes of t, in memory (free it); NULL when it fails. */
+static inline char *fitted_write(fitted_writer w, const fitted *t, const char *title,
+                                 ic_status *st, ic_error *err)
+{
+    char *buf = NULL;
+    size_t size = 0;
+    FILE *f = open_memstream(&buf, &size);
+    if (!f)
+        return NULL;
+    *st = w(f, t->res, title, err);
+    fclose(f);
+    if (*st != IC_OK) {
+        free(buf);
+        return NULL;
+    }
+    return buf;
+}
+
+/* n doubles equal bit for bit. */
+static inline int same_doubles(const double *a, const double *b, int n)
+{
+    return n == 0 || memcmp(a, b, (size_t)n * sizeof *a) == 0;
 }
 
 #endif

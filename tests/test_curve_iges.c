@@ -14,28 +14,6 @@
 #include "intercurve.h"
 #include "trace/trace_internal.h"
 
-/* The IGES file of t in memory (free it); NULL when the writer fails. */
-static char *write_iges(const fitted *t, const char *title, ic_status *st, ic_error *err)
-{
-    char *buf = NULL;
-    size_t size = 0;
-    FILE *f = open_memstream(&buf, &size);
-    if (!f)
-        return NULL;
-    *st = ic_trace_write_iges(f, t->res, title, err);
-    fclose(f);
-    if (*st != IC_OK) {
-        free(buf);
-        return NULL;
-    }
-    return buf;
-}
-
-static int same_doubles(const double *a, const double *b, int n)
-{
-    return n == 0 || memcmp(a, b, (size_t)n * sizeof *a) == 0;
-}
-
 static int all_ones(const double *w, int n)
 {
     for (int k = 0; k < n; k++)
@@ -130,7 +108,7 @@ static void check_file(const fitted_case *c, const fitted *t, const char *title,
 {
     ic_error err;
     ic_status st = IC_OK;
-    char *buf = write_iges(t, title, &st, &err);
+    char *buf = fitted_write(ic_trace_write_iges, t, title, &st, &err);
     iges_file g;
     if (REQUIRE(buf, "%s: IGES written: %s", c->name, err.message) &&
         REQUIRE(iges_read(&g, buf) == 0,
@@ -171,7 +149,7 @@ static void check_unfitted(const char *dir)
     t.res->fits[1] = NULL;
     ic_error err;
     ic_status st = IC_OK;
-    char *buf = write_iges(&t, NULL, &st, &err);
+    char *buf = fitted_write(ic_trace_write_iges, &t, NULL, &st, &err);
     CHECK(!buf && st == IC_ERR_INVALID && strstr(err.message, "ic_trace_fit"),
           "no fit: IC_ERR_INVALID saying to fit first (%s)", err.message);
     free(buf);

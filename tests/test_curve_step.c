@@ -13,28 +13,6 @@
 #include "step_readback.h"
 #include "trace/trace_internal.h"
 
-/* The STEP file of t in memory (free it); NULL when the writer fails. */
-static char *write_step(const fitted *t, const char *title, ic_status *st, ic_error *err)
-{
-    char *buf = NULL;
-    size_t size = 0;
-    FILE *f = open_memstream(&buf, &size);
-    if (!f)
-        return NULL;
-    *st = ic_trace_write_step(f, t->res, title, err);
-    fclose(f);
-    if (*st != IC_OK) {
-        free(buf);
-        return NULL;
-    }
-    return buf;
-}
-
-static int same_doubles(const double *a, const double *b, int n)
-{
-    return n == 0 || memcmp(a, b, (size_t)n * sizeof *a) == 0;
-}
-
 /* The curve read back is the fit's B-spline, bit for bit, and lies on both
  * surfaces within the fit tolerance. */
 static void check_curve(const fitted_case *c, const fitted *t, const p21_curve *k, int i)
@@ -111,7 +89,7 @@ static void check_case(const fitted_case *c, const char *dir)
         return;
     ic_error err;
     ic_status st = IC_OK;
-    char *buf = write_step(&t, "Viviani's \\ curve", &st, &err);
+    char *buf = fitted_write(ic_trace_write_step, &t, "Viviani's \\ curve", &st, &err);
     p21_file pf;
     if (REQUIRE(buf, "%s: STEP written: %s", c->name, err.message) &&
         REQUIRE(p21_read(&pf, buf) == 0, "%s: the file splits into header and instances",
@@ -144,7 +122,7 @@ static void check_unfitted(const char *dir)
     ic_status st = IC_OK;
     ic_curve_fit *const kept[2] = {t.res->fits[0], t.res->fits[1]};
     t.res->fits[0] = NULL;
-    char *buf = write_step(&t, NULL, &st, &err);
+    char *buf = fitted_write(ic_trace_write_step, &t, NULL, &st, &err);
     p21_file pf;
     if (REQUIRE(buf && p21_read(&pf, buf) == 0, "one fit of two: written")) {
         CHECK(p21_count(&pf, "B_SPLINE_CURVE_WITH_KNOTS") == 1 &&
@@ -158,7 +136,7 @@ static void check_unfitted(const char *dir)
     }
     free(buf);
     t.res->fits[1] = NULL;
-    buf = write_step(&t, NULL, &st, &err);
+    buf = fitted_write(ic_trace_write_step, &t, NULL, &st, &err);
     CHECK(!buf && st == IC_ERR_INVALID && strstr(err.message, "ic_trace_fit"),
           "no fit: IC_ERR_INVALID saying to fit first (%s)", err.message);
     free(buf);

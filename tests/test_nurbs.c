@@ -83,6 +83,19 @@ static ic_nurbs sample_patch(const double *pts, const double *w)
     return d;
 }
 
+/* The sample patch as a surface (the surface keeps its own copy of the
+ * net); NULL, after a failed check, when it cannot be made. */
+static ic_surface *sample_surface(void)
+{
+    double pts[NU * NV * 3], w[NU * NV];
+    make_net(pts, w);
+    const ic_nurbs d = sample_patch(pts, w);
+    ic_surface *s = NULL;
+    ic_error err;
+    return REQUIRE(ic_surface_new_nurbs(&s, &d, &err) == IC_OK, "create: %s", err.message) ? s
+                                                                                          : NULL;
+}
+
 /* length: the sample net's coordinates reach about 8; the two evaluators
  * each round O(p q) products of such terms (measured worst 2 ulps of 8);
  * 64 ulps of 8 is the bound */
@@ -134,15 +147,13 @@ static double r_uu(ic_surface *s, double u, double v, int c)
  * heading to larger u the right one's, and they differ. */
 static void test_side_on_knot_line(void)
 {
-    double pts[NU * NV * 3], w[NU * NV];
-    make_net(pts, w);
-    const ic_nurbs d = sample_patch(pts, w);
-    ic_surface *s = NULL;
+    ic_surface *s = sample_surface();
     ic_jet_space *sp = NULL;
     ic_error err;
-    if (!REQUIRE(ic_surface_new_nurbs(&s, &d, &err) == IC_OK, "create: %s", err.message) ||
-        !REQUIRE(ic_jet_space_new(&sp, 1, 2, &err) == IC_OK, "space"))
+    if (!s || !REQUIRE(ic_jet_space_new(&sp, 1, 2, &err) == IC_OK, "space")) {
+        ic_surface_free(s);
         return;
+    }
     const double knot = 0.6, v = 0.1, h = 1e-7;
     for (int heading = -1; heading <= 1; heading += 2) {
         double ju[3] = {knot, heading, 0}, jv[3] = {v, 0, 0}, out[9];
@@ -233,12 +244,9 @@ static double check_boxes(ic_surface *s, const double dom[2][2], double width, i
 
 static void test_enclosures(void)
 {
-    double pts[NU * NV * 3], w[NU * NV];
-    make_net(pts, w);
-    const ic_nurbs d = sample_patch(pts, w);
-    ic_surface *s = NULL;
+    ic_surface *s = sample_surface();
     ic_error err;
-    if (!REQUIRE(ic_surface_new_nurbs(&s, &d, &err) == IC_OK, "create: %s", err.message))
+    if (!s)
         return;
     const double dom[2][2] = {{0, 1}, {-1, 1}};
     harness_rng rng = {0xb0c5ull};

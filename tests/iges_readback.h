@@ -202,7 +202,7 @@ static inline int iges_curve_read(const iges_file *g, int k, iges_curve *c)
     const int want = 7 + c->nknots + 4 * (K + 1) + 5;
     int ok = n == want && atoi(f[0]) == 126 && K >= M && M >= 1;
     c->reals_ok = 1;
-    c->b = (ic_bspline){3, M, K + 1, NULL, NULL};
+    c->b = (ic_bspline){.dim = 3, .degree = M, .ncontrol = K + 1};
     c->b.knots = ok ? malloc(sizeof(double) * (size_t)c->nknots) : NULL;
     c->b.control = ok ? malloc(sizeof(double) * 3 * (size_t)(K + 1)) : NULL;
     c->weights = ok ? malloc(sizeof(double) * (size_t)(K + 1)) : NULL;

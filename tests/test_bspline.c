@@ -27,7 +27,7 @@ static char source_dir[400];
 static void test_eval(void)
 {
     double knots[6] = {0, 0, 0, 2, 2, 2}, ctrl[6] = {0, 0, 1, 2, 2, 0};
-    const ic_bspline c = {2, 2, 3, knots, ctrl};
+    const ic_bspline c = {.dim = 2, .degree = 2, .ncontrol = 3, .knots = knots, .control = ctrl};
     for (int k = 0; k <= 8; k++) {
         const double t = 0.25 * k, w = t / 2;
         double out[6];
@@ -44,7 +44,7 @@ static void test_eval(void)
     double out[6];
     ic_error err;
     CHECK(ic_bspline_eval(&c, 0.5, 3, out, &err) == IC_ERR_INVALID, "a derivative above the degree");
-    const ic_bspline bad = {4, 2, 3, knots, ctrl};
+    const ic_bspline bad = {.dim = 4, .degree = 2, .ncontrol = 3, .knots = knots, .control = ctrl};
     CHECK(ic_bspline_eval(&bad, 0.5, 0, out, &err) == IC_ERR_INVALID, "a dimension of 4");
 }
 

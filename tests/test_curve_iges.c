@@ -48,8 +48,8 @@ static void check_curve(const fitted_case *c, const fitted *t, const iges_curve 
     CHECK(strcmp(e->label, "   CURVE") == 0 && e->subscript == i, "%s: label CURVE %d ('%s' %d)",
           c->name, i, e->label, e->subscript);
     CHECK(e->prop[0] == 0 && e->prop[1] == ic_trace_result_curve(t->res, i)->closed &&
-              e->prop[2] == 1 && e->prop[3] == 0,
-          "%s curve %d: PROP1..4 = 0, closed, 1 (polynomial), 0", c->name, i);
+              e->prop[2] == 1 && e->prop[3] == b->periodic,
+          "%s curve %d: PROP1..4 = 0, closed, 1 (polynomial), periodic", c->name, i);
     CHECK(e->b.degree == b->degree && e->b.ncontrol == b->ncontrol,
           "%s curve %d: degree %d, %d points", c->name, i, e->b.degree, e->b.ncontrol);
     if (e->b.degree != b->degree || e->b.ncontrol != b->ncontrol)

@@ -47,12 +47,14 @@ static int point_matches(const cJSON *o, const ic_trace_point *p, const ic_trace
     return ok;
 }
 
-/* A B-spline read back: degree, knots and control points bit for bit. */
+/* A B-spline read back: degree, periodic, knots and control points bit
+ * for bit. */
 static int bspline_matches(const cJSON *o, const ic_bspline *b)
 {
-    static const char *const keys[] = {"degree", "knots", "control_points", NULL};
-    const cJSON *pts = doc_get(o, "control_points");
+    static const char *const keys[] = {"degree", "periodic", "knots", "control_points", NULL};
+    const cJSON *pts = doc_get(o, "control_points"), *periodic = doc_get(o, "periodic");
     int ok = doc_keys_are(o, keys) && doc_number_is(doc_get(o, "degree"), b->degree) &&
+             cJSON_IsBool(periodic) && cJSON_IsTrue(periodic) == !!b->periodic &&
              doc_vector_is(doc_get(o, "knots"), b->knots, b->ncontrol + b->degree + 1) &&
              cJSON_GetArraySize(pts) == b->ncontrol;
     for (int i = 0; ok && i < b->ncontrol; i++)

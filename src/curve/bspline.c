@@ -22,6 +22,12 @@ ic_status ic_bspline_eval(const ic_bspline *c, double t, int nderiv, double *out
         return malformed(err, "derivative order out of 0..degree");
     if (!isfinite(t) || !(c->knots[p] < c->knots[n]))
         return malformed(err, "parameter not finite, or an empty parameter range");
+    if (c->periodic) { /* into [lo, hi) */
+        const double lo = c->knots[p], period = c->knots[n] - lo;
+        t -= period * floor((t - lo) / period);
+        if (!(t < c->knots[n]))
+            t = lo;
+    }
     const int s = ic_knot_span(c->knots, p, n, t, IC_NURBS_RIGHT);
     double b[IC_NURBS_MAX_DEGREE + 1][IC_NURBS_MAX_DEGREE + 1];
     ic_basis_taylor(b, c->knots, s, p, t, nderiv);

@@ -10,110 +10,8 @@
 #include <string.h>
 
 #include "common/vec3.h"
+#include "curve/hermite.h"
 #include "intercurve/trace.h"
-
-enum { DEGREE = 5 };
-
-/* the data of one curve point: position and its first two derivatives with
- * respect to arc length, in dim coordinates */
-typedef struct {
-    double s;
-    double x[3];
-    double d1[3], d2[3];   /* of the stretch after the node (larger s) */
-    double d1b[3], d2b[3]; /* of the stretch before it: different on a knot line */
-} hermite_node;
-
-/* Quintic Bezier of one segment matching x, x', x'' at both ends (with
- * respect to s over h = s1 - s0): b1 = x0 + h x0'/5, b2 = x0 + 2h x0'/5 +
- * h^2 x0''/20, and symmetrically at the far end. */
-static void hermite_bezier(double *b, const hermite_node *a, const hermite_node *z, int dim)
-{
-    const double h = z->s - a->s;
-    for (int j = 0; j < dim; j++) {
-        b[0 * dim + j] = a->x[j];
-        b[1 * dim + j] = a->x[j] + h * a->d1[j] / 5;
-        b[2 * dim + j] = a->x[j] + 2 * h * a->d1[j] / 5 + h * h * a->d2[j] / 20;
-        b[3 * dim + j] = z->x[j] - 2 * h * z->d1b[j] / 5 + h * h * z->d2b[j] / 20;
-        b[4 * dim + j] = z->x[j] - h * z->d1b[j] / 5;
-        b[5 * dim + j] = z->x[j];
-    }
-}
-
-/* Whether the curve is C^2 at a node: the stretches on both sides share
- * its derivatives (not so on a knot line where they jump). */
-static int smooth_at(const hermite_node *h, int dim)
-{
-    for (int j = 0; j < dim; j++)
-        if (h->d1[j] != h->d1b[j] || h->d2[j] != h->d2b[j])
-            return 0;
-    return 1;
-}
-
-static void put(ic_bspline *c, int *nc, const double *x)
-{
-    memcpy(c->control + (size_t)c->dim * (*nc)++, x, sizeof(double) * (size_t)c->dim);
-}
-
-static void put_knot(ic_bspline *c, int *nk, double s, int times)
-{
-    for (int r = 0; r < times; r++)
-        c->knots[(*nk)++] = s;
-}
-
-/* The piecewise quintic through the nodes as one clamped B-spline. Where
- * it is C^2 (every node but those on knot lines) its knot has multiplicity
- * 3: the two Bezier points either side of the joint and the joint itself
- * give way to one de Boor point, d = b4 + (h1/h0)(b4 - b3) = b1' +
- * (h0/h1)(b1' - b2') (the two agree when the pieces meet with equal x, x',
- * x''; Farin 2002, the C^2 condition for Bezier pieces); elsewhere the
- * Bezier nets are laid end to end (multiplicity 5). */
-static ic_status piecewise(ic_bspline *c, const hermite_node *nodes, int n, int dim, ic_error *err)
-{
-    const int segments = n - 1;
-    memset(c, 0, sizeof *c);
-    c->dim = dim;
-    c->degree = DEGREE;
-    const size_t most = (size_t)DEGREE * segments + 1; /* every joint a Bezier one */
-    c->knots = malloc(sizeof(double) * (most + DEGREE + 1));
-    c->control = malloc(sizeof(double) * most * (size_t)dim);
-    double *b = malloc(sizeof(double) * 12 * (size_t)dim); /* two pieces' nets */
-    if (!c->knots || !c->control || !b) {
-        free(b);
-        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory fitting a curve");
-    }
-    int nc = 0, nk = 0;
-    double *prev = b, *next = b + 6 * dim;
-    hermite_bezier(prev, &nodes[0], &nodes[1], dim);
-    put_knot(c, &nk, nodes[0].s, DEGREE + 1);
-    for (int r = 0; r < 4; r++)
-        put(c, &nc, prev + r * dim);
-    for (int i = 1; i < segments; i++) {
-        hermite_bezier(next, &nodes[i], &nodes[i + 1], dim);
-        if (smooth_at(&nodes[i], dim)) {
-            const double ratio = (nodes[i + 1].s - nodes[i].s) / (nodes[i].s - nodes[i - 1].s);
-            double d[3];
-            for (int j = 0; j < dim; j++)
-                d[j] = prev[4 * dim + j] + ratio * (prev[4 * dim + j] - prev[3 * dim + j]);
-            put(c, &nc, d);
-            put_knot(c, &nk, nodes[i].s, 3);
-        } else {
-            put(c, &nc, prev + 4 * dim);
-            put(c, &nc, prev + 5 * dim);
-            put(c, &nc, next + 1 * dim);
-            put_knot(c, &nk, nodes[i].s, DEGREE);
-        }
-        put(c, &nc, next + 2 * dim);
-        put(c, &nc, next + 3 * dim);
-        double *t = prev;
-        prev = next, next = t;
-    }
-    put(c, &nc, prev + 4 * dim);
-    put(c, &nc, prev + 5 * dim);
-    put_knot(c, &nk, nodes[n - 1].s, DEGREE + 1);
-    c->ncontrol = nc;
-    free(b);
-    return IC_OK;
-}
 
 /* (u', v') and (u'', v'') of a parametric sheet along the curve from c'
  * and c'': c' = R_u u' + R_v v' and c'' - (R_uu u'^2 + 2 R_uv u'v' + R_vv
@@ -183,7 +81,7 @@ static int stands_on_line(ic_pair *pair, const ic_trace_point *p)
 /* The space nodes of a traced curve: x, c' = t, c'' = kappa n (0 where the
  * curvature is 0 or not finite, a cusp at an end). Returns the number of
  * nodes; source[k] is node k's point. */
-static int space_nodes(ic_pair *pair, const ic_trace_curve *c, hermite_node *nodes, int *source,
+static int space_nodes(ic_pair *pair, const ic_trace_curve *c, ic_hermite_node *nodes, int *source,
                        int *pinned)
 {
     const double shortest = FIT_MIN_STRETCH_REL * (c->points[c->npoints - 1].s - c->points[0].s);
@@ -201,7 +99,7 @@ static int space_nodes(ic_pair *pair, const ic_trace_curve *c, hermite_node *nod
             else if (!(p->s > nodes[n - 1].s))
                 continue;
         }
-        hermite_node *h = &nodes[n];
+        ic_hermite_node *h = &nodes[n];
         h->s = p->s;
         const int curved = p->frame_defined && isfinite(p->kappa);
         for (int k = 0; k < 3; k++) {
@@ -278,7 +176,7 @@ static int side_curvature(ic_pair *pair, const ic_trace_point *p, const double o
 /* The knot sides of every sheet at a point on knot lines, for the stretch
  * before (sides[0]) and after (sides[1]) it. */
 static void knot_ways(ic_pair *pair, const ic_trace_point *p, const ic_jet_space *sp,
-                      const hermite_node *h, int sides[2][2][2], double on[2][2])
+                      const ic_hermite_node *h, int sides[2][2][2], double on[2][2])
 {
     memset(sides, 0, sizeof(int) * 8);
     memcpy(on, p->params, sizeof(double) * 4);
@@ -296,7 +194,7 @@ static void knot_ways(ic_pair *pair, const ic_trace_point *p, const ic_jet_space
 
 /* Both sides' c'' at a point on knot lines (the trace gives one side's). */
 static void knot_node(ic_pair *pair, const ic_trace_point *p, const ic_jet_space *sp,
-                      hermite_node *h)
+                      ic_hermite_node *h)
 {
     int sides[2][2][2];
     double on[2][2];
@@ -313,7 +211,7 @@ static void knot_node(ic_pair *pair, const ic_trace_point *p, const ic_jet_space
 /* Sheet s's (u', v') and (u'', v'') on both sides of a node (its pieces on
  * each side of a knot line where it is on one). 0 where degenerate. */
 static int param_node(ic_pair *pair, int s, const ic_trace_point *p, const ic_jet_space *sp,
-                      const hermite_node *space, hermite_node *h)
+                      const ic_hermite_node *space, ic_hermite_node *h)
 {
     ic_surface *S = ic_pair_surface(pair, s);
     int sides[2][2][2] = {{{0}}};
@@ -362,7 +260,7 @@ static int branch_along(ic_pair *pair, const ic_trace_point *p, const double cho
 }
 
 /* Nodes where branches cross: each side takes the branch along its chord. */
-static void junction_nodes(ic_pair *pair, const ic_trace_curve *c, hermite_node *nodes,
+static void junction_nodes(ic_pair *pair, const ic_trace_curve *c, ic_hermite_node *nodes,
                            const int *source, int n)
 {
     for (int k = 0; k < n; k++) {
@@ -396,8 +294,8 @@ static double unwrap(double x, double predicted, double period)
 
 /* The nodes of sheet s's parameter curve from the space nodes; 0 where the
  * sheet is degenerate at some node (a pole): no pcurve then. */
-static int param_nodes(ic_pair *pair, int s, const ic_trace_curve *c, const hermite_node *space,
-                       const int *source, int n, const ic_jet_space *sp, hermite_node *out)
+static int param_nodes(ic_pair *pair, int s, const ic_trace_curve *c, const ic_hermite_node *space,
+                       const int *source, int n, const ic_jet_space *sp, ic_hermite_node *out)
 {
     ic_surface *S = ic_pair_surface(pair, s);
     double dom[2][2];
@@ -405,7 +303,7 @@ static int param_nodes(ic_pair *pair, int s, const ic_trace_curve *c, const herm
     ic_surface_get_domain(S, dom, periodic);
     for (int k = 0; k < n; k++) {
         const double *uv = c->points[source[k]].params[s];
-        hermite_node *h = &out[k];
+        ic_hermite_node *h = &out[k];
         memset(h, 0, sizeof *h);
         h->s = space[k].s;
         if (!param_node(pair, s, &c->points[source[k]], sp, &space[k], h))
@@ -449,7 +347,7 @@ static double pcurve_off(ic_pair *pair, const ic_curve_fit *f, int k, double s, 
  * curve by more than tol somewhere (a stretch across a point where its
  * sheet's parametrisation degenerates, a sphere's pole: the parameters jump
  * there) is dropped, and said so. */
-static void check_pcurves(ic_pair *pair, ic_curve_fit *f, const hermite_node *nodes, int n,
+static void check_pcurves(ic_pair *pair, ic_curve_fit *f, const ic_hermite_node *nodes, int n,
                           double tol)
 {
     for (int k = 0; k < 2; k++)
@@ -527,7 +425,7 @@ static double check_at(ic_pair *pair, const ic_curve_fit *f, const ic_trace_poin
 
 /* Checks the fit at the middle of every stretch between traced points. */
 static void check_fit(ic_pair *pair, ic_curve_fit *f, const ic_trace_curve *c,
-                      const hermite_node *nodes, const int *source, int n, double tol,
+                      const ic_hermite_node *nodes, const int *source, int n, double tol,
                       double *bad, int *nbad)
 {
     *nbad = 0;
@@ -559,7 +457,7 @@ static ic_status fit_once(ic_curve_fit **out, ic_pair *pair, const ic_trace_curv
     *out = NULL;
     *nbad = 0;
     ic_curve_fit *f = calloc(1, sizeof *f);
-    hermite_node *nodes = malloc(sizeof *nodes * (size_t)c->npoints * 2);
+    ic_hermite_node *nodes = malloc(sizeof *nodes * (size_t)c->npoints * 2);
     int *source = malloc(sizeof *source * (size_t)c->npoints * 2), *pinned = source + c->npoints;
     ic_jet_space *sp = NULL;
     ic_status st = f && nodes && source ? ic_jet_space_new(&sp, 2, 2, err)
@@ -572,11 +470,13 @@ static ic_status fit_once(ic_curve_fit **out, ic_pair *pair, const ic_trace_curv
     if (st == IC_OK && n < 2)
         st = ic_error_set(err, IC_ERR_INVALID, 0, "curve fit: the curve has no length");
     if (st == IC_OK)
-        st = piecewise(&f->curve, nodes, n, 3, err);
+        st = ic_hermite_bspline(&f->curve, nodes, n, 3, c->closed && ic_hermite_closes(nodes, n, 3),
+                                err);
     for (int s = 0; st == IC_OK && s < 2; s++)
         if (ic_surface_get_kind(ic_pair_surface(pair, s)) == IC_PARAMETRIC &&
             param_nodes(pair, s, c, nodes, source, n, sp, nodes + c->npoints))
-            st = piecewise(&f->pcurves[s], nodes + c->npoints, n, 2, err);
+            st = ic_hermite_bspline(&f->pcurves[s], nodes + c->npoints, n, 2,
+                                    c->closed && ic_hermite_closes(nodes + c->npoints, n, 2), err);
     if (st == IC_OK) {
         check_pcurves(pair, f, nodes, n, fit_tol);
         check_fit(pair, f, c, nodes, source, n, fit_tol, bad, nbad);

@@ -116,7 +116,7 @@ static void put_curve(iges_records *r, const ic_trace_result *res, int i)
     put_int(r, 0, ',');                                     /* PROP1: not said planar */
     put_int(r, ic_trace_result_curve(res, i)->closed, ','); /* PROP2: closed */
     put_int(r, 1, ',');                                     /* PROP3: polynomial */
-    put_int(r, 0, ',');                                     /* PROP4: not periodic */
+    put_int(r, b->periodic, ',');                             /* PROP4: periodic */
     for (int k = 0; k < b->ncontrol + b->degree + 1; k++)
         put_real(r, b->knots[k], ',');
     for (int k = 0; k < b->ncontrol; k++)

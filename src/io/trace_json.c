@@ -36,11 +36,13 @@ static cJSON *point_json(json_out *j, const ic_trace_point *p, const ic_trace_cu
     return o;
 }
 
-/* A B-spline as {"degree", "knots", "control_points"} (docs/bspline.md). */
+/* A B-spline as {"degree", "periodic", "knots", "control_points"}
+ * (docs/bspline.md). */
 static cJSON *bspline_json(json_out *j, const ic_bspline *b)
 {
     cJSON *o = cJSON_CreateObject();
     ic_json_out_add(j, o, "degree", cJSON_CreateNumber(b->degree));
+    ic_json_out_add(j, o, "periodic", cJSON_CreateBool(b->periodic));
     ic_json_out_add(j, o, "knots", ic_json_out_vector(j, b->knots, b->ncontrol + b->degree + 1));
     cJSON *pts = cJSON_CreateArray();
     for (int i = 0; i < b->ncontrol; i++)

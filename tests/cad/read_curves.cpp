@@ -3,9 +3,10 @@
 // (docs/testing.md, "STEP and IGES curves read by OpenCASCADE"), and checks
 // that every edge lands on the problem's two surfaces: at kSamples points
 // per edge, the distance to each surface, from its closed form below.
-// usage: read_curves CASE CURVES TOL FILE
+// usage: read_curves CASE CURVES CLOSED TOL FILE
 //   CASE: viviani (examples/viviani-implicit.json) or cylinders
 //   (examples/cylinders.json); CURVES: how many edges the file must give;
+//   CLOSED: how many of them must be closed (their ends within TOL);
 //   TOL: the largest distance allowed (the problem's length unit).
 // Prints the edges, the points checked and the largest distance to each
 // surface; exits 1 when a count or a distance is wrong.
@@ -94,8 +95,8 @@ bool read_shape(const std::string &path, TopoDS_Shape &shape)
 
 int main(int argc, char **argv)
 {
-    if (argc != 5) {
-        std::fprintf(stderr, "usage: read_curves viviani|cylinders CURVES TOL FILE\n");
+    if (argc != 6) {
+        std::fprintf(stderr, "usage: read_curves viviani|cylinders CURVES CLOSED TOL FILE\n");
         return 2;
     }
     const Case *c = nullptr;
@@ -103,31 +104,36 @@ int main(int argc, char **argv)
         if (std::strcmp(k.name, argv[1]) == 0)
             c = &k;
     const int want_curves = std::atoi(argv[2]);
-    const double tol = std::atof(argv[3]);
-    const std::string path = argv[4];
+    const int want_closed = std::atoi(argv[3]);
+    const double tol = std::atof(argv[4]);
+    const std::string path = argv[5];
     TopoDS_Shape shape;
     if (!c || !read_shape(path, shape)) {
         std::fprintf(stderr, "read_curves: %s: an unknown case, or the file was not read\n", path.c_str());
         return 1;
     }
-    int edges = 0, points = 0;
+    int edges = 0, points = 0, closed = 0, periodic = 0;
     double worst[2] = {0, 0};
     for (TopExp_Explorer e(shape, TopAbs_EDGE); e.More(); e.Next(), edges++) {
         Standard_Real first, last;
         Handle(Geom_Curve) curve = BRep_Tool::Curve(TopoDS::Edge(e.Current()), first, last);
         if (curve.IsNull())
             continue;
+        closed += curve->Value(first).Distance(curve->Value(last)) <= tol;
+        periodic += curve->IsPeriodic();
         for (int k = 0; k <= kSamples; k++, points++) {
             const gp_Pnt p = curve->Value(first + (last - first) * k / kSamples);
             for (int s = 0; s < 2; s++)
                 worst[s] = std::fmax(worst[s], c->distance[s](p));
         }
     }
-    std::printf("%s: %d edges, %d points, largest distances %.3g and %.3g\n", path.c_str(), edges,
-                points, worst[0], worst[1]);
-    const bool ok = edges == want_curves && points == edges * (kSamples + 1) &&
-                    worst[0] <= tol && worst[1] <= tol;
+    std::printf("%s: %d edges (%d closed, %d periodic), %d points, largest distances %.3g and "
+                "%.3g\n",
+                path.c_str(), edges, closed, periodic, points, worst[0], worst[1]);
+    const bool ok = edges == want_curves && closed == want_closed &&
+                    points == edges * (kSamples + 1) && worst[0] <= tol && worst[1] <= tol;
     if (!ok)
-        std::printf("read_curves: FAIL (want %d edges, distances <= %g)\n", want_curves, tol);
+        std::printf("read_curves: FAIL (want %d edges, %d closed, distances <= %g)\n", want_curves,
+                    want_closed, tol);
     return ok ? 0 : 1;
 }

@@ -66,6 +66,10 @@ static const ic_cli_option PLOT_OPTIONS[NOPTIONS] = {
                    .help = "as for 'intercurve trace'"},
 };
 
+/* relative to the problem's size: the curves' B-splines, as `trace --fit-tol`'s
+ * default (docs/bspline.md) */
+#define PLOT_FIT_TOL 1e-9
+
 static const ic_cli_command PLOT = {
     .name = "plot",
     .summary = "Traces the intersection (as 'intercurve trace') and draws it: both surfaces as\n"
@@ -105,7 +109,10 @@ int ic_cmd_plot(int argc, char **argv)
     ic_plot_scene_of_problem(&scene, t.problem, t.res);
     ic_error err;
     ic_error_clear(&err);
-    const ic_status st = ic_plot_write(v[OPT_OUTPUT].text, &scene, &po, &err);
+    /* the curves are drawn through their B-splines (docs/plots.md) */
+    ic_status st = ic_trace_fit(t.res, t.pair, PLOT_FIT_TOL, &err);
+    if (st == IC_OK)
+        st = ic_plot_write(v[OPT_OUTPUT].text, &scene, &po, &err);
     if (st != IC_OK)
         fprintf(stderr, "intercurve plot: %s\n", err.message);
     ic_cli_traced_free(&t);

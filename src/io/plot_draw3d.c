@@ -83,16 +83,13 @@ static const ic_trace_point *curve_point(const ctx3d *c, int curve, int k)
 static void draw_seg(ctx3d *c, int curve, int k)
 {
     const ic_trace_point *p = curve_point(c, curve, k), *q = curve_point(c, curve, k + 1);
-    double rgb[3], x0, y0, x1, y1;
+    double rgb[3];
     const double kap = 0.5 * (p->kappa + q->kappa);
     ic_plot_colormap(c->kmax > c->kmin ? (kap - c->kmin) / (c->kmax - c->kmin) : 0.5, rgb);
-    ic_plot_camera_project(&c->cam, p->xyz, &x0, &y0, NULL);
-    ic_plot_camera_project(&c->cam, q->xyz, &x1, &y1, NULL);
     cairo_set_source_rgb(c->cr, rgb[0], rgb[1], rgb[2]);
     cairo_set_line_width(c->cr, PLOT_CURVE_WIDTH);
     cairo_set_line_cap(c->cr, CAIRO_LINE_CAP_ROUND);
-    cairo_move_to(c->cr, x0, y0);
-    cairo_line_to(c->cr, x1, y1);
+    ic_plot_curve_path(c->cr, &c->cam, c->trace, curve, k);
     cairo_stroke(c->cr);
 }
 

@@ -62,6 +62,17 @@ void ic_plot_camera_fit(plot_camera *cam, const double box[3][2], double x0, dou
 void ic_plot_camera_project(const plot_camera *cam, const double *p, double *sx, double *sy,
                          double *depth);
 
+/* The stretch of curve `curve` from its traced point k to k + 1 as smooth
+ * cubic pieces on the screen (plot_curve.c): b[i] = x0, y0, ..., x3, y3 of
+ * piece i, the first starting at point k; returns how many (1 to
+ * PLOT_MAX_PIECES). ic_plot_curve_path appends them to cr's path (a
+ * move_to, then curve_to's; cairo keeps 1/256 of a unit of them). */
+enum { PLOT_MAX_PIECES = 64 };
+int ic_plot_curve_pieces(const plot_camera *cam, const ic_trace_result *tr, int curve, int k,
+                         double (*b)[8]);
+void ic_plot_curve_path(cairo_t *cr, const plot_camera *cam, const ic_trace_result *tr, int curve,
+                        int k);
+
 /* Colours (the same in every figure): viridis for curvature, fixed ones for
  * t, n, b, the two surfaces, the curves of the chart and point types. */
 void ic_plot_colormap(double t, double rgb[3]);

@@ -144,12 +144,12 @@ static void check_vtk(const traced *t, const char *name)
     double v[3];
     CHECK(fscanf(f, "%lf %lf %lf", &v[0], &v[1], &v[2]) == 3 && memcmp(v, p0->t, sizeof v) == 0,
           "%s: t of the first point", name);
-    /* every array is announced once: t, n, b, kappa, tau, s, curve */
+    /* every array is announced once: t, n, b, kappa, tau, s, curve, traced */
     rewind(f);
     int arrays = 0;
     while (fgets(line, sizeof line, f))
         arrays += strncmp(line, "VECTORS ", 8) == 0 || strncmp(line, "SCALARS ", 8) == 0;
-    CHECK(arrays == 7, "%s: 7 point data arrays, not %d", name, arrays);
+    CHECK(arrays == 8, "%s: 8 point data arrays, not %d", name, arrays);
     fclose(f);
 }
 

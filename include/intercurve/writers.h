@@ -36,7 +36,11 @@ IC_API IC_NODISCARD ic_status ic_trace_write_csv(FILE *f, const ic_trace_result 
                                                  const ic_pair *pair, ic_error *err);
 
 /** VTK legacy ASCII PolyData: one polyline per curve, one vertex per special
- *  point, point data t, n, b (vectors), kappa, tau, s, curve (scalars). */
+ *  point, point data t, n, b (vectors), kappa, tau, s, curve, traced
+ *  (scalars). Where a curve has its B-spline (ic_trace_fit), a stretch
+ *  turning more than 0.02 rad gets points of the B-spline between its
+ *  traced points, with the B-spline's apparatus there and traced = 0
+ *  (docs/output-formats.md). */
 IC_API IC_NODISCARD ic_status ic_trace_write_vtk(FILE *f, const ic_trace_result *res,
                                                  ic_error *err);
 

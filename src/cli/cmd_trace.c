@@ -95,10 +95,11 @@ typedef struct {
     const char *title;
 } trace_output;
 
-/* The formats that carry the curves' B-splines (ic_trace_fit first). */
+/* The formats that carry or draw on the curves' B-splines (ic_trace_fit
+ * first). */
 static int has_bsplines(out_format fmt)
 {
-    return fmt == FORMAT_JSON || fmt == FORMAT_STEP || fmt == FORMAT_IGES;
+    return fmt == FORMAT_JSON || fmt == FORMAT_STEP || fmt == FORMAT_IGES || fmt == FORMAT_VTK;
 }
 
 /* Writes the result in its format to an open stream (an ic_file_writer). */

@@ -1,4 +1,4 @@
-/* Traced intersections as CSV, VTK PolyData and OBJ
+/* Traced intersections as CSV and OBJ (VTK: trace_vtk.c)
  * (docs/output-formats.md). Numbers are written with 17 significant digits so
  * that they read back to the same doubles. */
 #include "intercurve/writers.h"
@@ -73,93 +73,6 @@ ic_status ic_trace_write_csv(FILE *f, const ic_trace_result *res, const ic_pair 
         fprintf(f, ",,,,,,,,,,,,,,,,%s\n", ic_point_type_name(sp->type));
     }
     return ferror(f) ? io_failed(err, "CSV") : IC_OK;
-}
-
-static int total_points(const ic_trace_result *res)
-{
-    int n = ic_trace_result_num_specials(res);
-    for (int i = 0; i < ic_trace_result_num_curves(res); i++)
-        n += ic_trace_result_curve(res, i)->npoints;
-    return n;
-}
-
-/* One point-data array over every curve point, then the special points
- * (which have no frame: zero vectors, zero scalars, curve -1). */
-typedef enum { FIELD_T, FIELD_N, FIELD_B, FIELD_KAPPA, FIELD_TAU, FIELD_S, FIELD_CURVE } field;
-
-static void vtk_array(FILE *f, const ic_trace_result *res, field which)
-{
-    static const char *const names[] = {"t", "n", "b", "kappa", "tau", "s", "curve"};
-    const int vector = which <= FIELD_B;
-    if (vector)
-        fprintf(f, "VECTORS %s double\n", names[which]);
-    else
-        fprintf(f, "SCALARS %s %s 1\nLOOKUP_TABLE default\n", names[which],
-                which == FIELD_CURVE ? "int" : "double");
-    for (int i = 0; i < ic_trace_result_num_curves(res); i++) {
-        const ic_trace_curve *c = ic_trace_result_curve(res, i);
-        for (int k = 0; k < c->npoints; k++) {
-            const ic_trace_point *p = &c->points[k];
-            const double zero[3] = {0, 0, 0};
-            const double *v = which == FIELD_T    ? p->t
-                              : !p->frame_defined ? zero
-                              : which == FIELD_N  ? p->n
-                                                  : p->b;
-            if (vector)
-                fprintf(f, "%.17g %.17g %.17g\n", v[0], v[1], v[2]);
-            else if (which == FIELD_CURVE)
-                fprintf(f, "%d\n", i);
-            else
-                fprintf(f, "%.17g\n",
-                        which == FIELD_KAPPA ? p->kappa
-                        : which == FIELD_S   ? p->s
-                        : p->frame_defined   ? p->tau
-                                             : 0.0);
-        }
-    }
-    for (int i = 0; i < ic_trace_result_num_specials(res); i++)
-        fputs(vector ? "0 0 0\n" : which == FIELD_CURVE ? "-1\n" : "0\n", f);
-}
-
-ic_status ic_trace_write_vtk(FILE *f, const ic_trace_result *res, ic_error *err)
-{
-    const int ncurves = ic_trace_result_num_curves(res);
-    const int nspecial = ic_trace_result_num_specials(res), npts = total_points(res);
-    fputs("# vtk DataFile Version 3.0\nintercurve trace\nASCII\nDATASET POLYDATA\n", f);
-    fprintf(f, "POINTS %d double\n", npts);
-    for (int i = 0; i < ncurves; i++) {
-        const ic_trace_curve *c = ic_trace_result_curve(res, i);
-        for (int k = 0; k < c->npoints; k++)
-            fprintf(f, "%.17g %.17g %.17g\n", c->points[k].xyz[0], c->points[k].xyz[1],
-                    c->points[k].xyz[2]);
-    }
-    for (int i = 0; i < nspecial; i++) {
-        const double *x = ic_trace_result_special(res, i)->xyz;
-        fprintf(f, "%.17g %.17g %.17g\n", x[0], x[1], x[2]);
-    }
-    const int curve_points = npts - nspecial;
-    if (nspecial > 0) {
-        fprintf(f, "VERTICES %d %d\n", nspecial, 2 * nspecial);
-        for (int i = 0; i < nspecial; i++)
-            fprintf(f, "1 %d\n", curve_points + i);
-    }
-    if (ncurves > 0) {
-        fprintf(f, "LINES %d %d\n", ncurves, ncurves + curve_points);
-        for (int i = 0, first = 0; i < ncurves; i++) {
-            const int n = ic_trace_result_curve(res, i)->npoints;
-            fprintf(f, "%d", n);
-            for (int k = 0; k < n; k++)
-                fprintf(f, " %d", first + k);
-            fputc('\n', f);
-            first += n;
-        }
-    }
-    if (npts > 0) {
-        fprintf(f, "POINT_DATA %d\n", npts);
-        for (field w = FIELD_T; w <= FIELD_CURVE; w++)
-            vtk_array(f, res, w);
-    }
-    return ferror(f) ? io_failed(err, "VTK") : IC_OK;
 }
 
 ic_status ic_trace_write_obj(FILE *f, const ic_trace_result *res, ic_error *err)

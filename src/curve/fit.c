@@ -107,6 +107,7 @@ static int space_nodes(ic_pair *pair, const ic_trace_curve *c, ic_hermite_node *
             h->d1[k] = h->d1b[k] = p->t[k];
             h->d2[k] = h->d2b[k] = curved ? p->kappa * p->n[k] : 0;
         }
+        h->tau = curved ? p->tau : NAN;
         pinned[n] = keep;
         source[n++] = i;
     }
@@ -423,17 +424,19 @@ static double check_at(ic_pair *pair, const ic_curve_fit *f, const ic_trace_poin
     return worst;
 }
 
-/* Checks the fit at the middle of every stretch between traced points. */
-static void check_fit(ic_pair *pair, ic_curve_fit *f, const ic_trace_curve *c,
-                      const ic_hermite_node *nodes, const int *source, int n, double tol,
-                      double *bad, int *nbad)
+/* Checks the fit at the middle of every stretch between its nodes. */
+static ic_status check_fit(ic_pair *pair, ic_curve_fit *f, const ic_trace_curve *c,
+                           const ic_hermite_node *nodes, const int *source, int n, double tol,
+                           double *bad, int *nbad, ic_error *err)
 {
     *nbad = 0;
     f->fit_error = 0;
     f->checks = 0;
     ic_jet_space *sp[2] = {NULL, NULL};
-    if (ic_jet_space_new(&sp[0], 2, 1, NULL) != IC_OK || ic_jet_space_new(&sp[1], 3, 1, NULL) != IC_OK)
-        n = 0; /* out of memory: nothing checked, said by checks */
+    if (ic_jet_space_new(&sp[0], 2, 1, err) != IC_OK || ic_jet_space_new(&sp[1], 3, 1, err) != IC_OK) {
+        ic_jet_space_free(sp[0]);
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory checking a curve's fit");
+    }
     for (int k = 0; k + 1 < n; k++) {
         const ic_trace_point *near = &c->points[source[k]];
         const double e = check_at(pair, f, near, 0.5 * (nodes[k].s + nodes[k + 1].s),
@@ -447,6 +450,62 @@ static void check_fit(ic_pair *pair, ic_curve_fit *f, const ic_trace_curve *c,
     }
     ic_jet_space_free(sp[0]);
     ic_jet_space_free(sp[1]);
+    return IC_OK;
+}
+
+/* The nodes of the traced points of c: positions and derivatives, with
+ * their sides on knot lines and at junctions; returns how many (source[k]:
+ * node k's point; pinned[k]: it must stay). */
+static int curve_nodes(ic_pair *pair, const ic_trace_curve *c, const ic_jet_space *sp,
+                       ic_hermite_node *nodes, int *source, int *pinned)
+{
+    const int n = space_nodes(pair, c, nodes, source, pinned);
+    for (int k = 0; k < n; k++)
+        knot_node(pair, &c->points[source[k]], sp, &nodes[k]);
+    junction_nodes(pair, c, nodes, source, n);
+    return n;
+}
+
+/* relative to the fit tolerance: a stretch grows over a traced point only
+ * where its quintic passes this close to it, leaving the rest of the
+ * tolerance to the error between the points (checked after) */
+#define FIT_MERGE_POS 0.1
+/* relative: and with its c' and c'' (of max(kappa, 1 / length)) this
+ * close to the point's exact ones, and its torsion within FIT_MERGE_TAU of
+ * max(kappa, 1 / length), so that curvature and torsion between the knots
+ * stay well within 1e-6 and 1e-5 (docs/bspline.md) */
+#define FIT_MERGE_DERIV 1e-7
+#define FIT_MERGE_TAU 1e-6
+
+/* The points of c that a coarser fit keeps (ic_hermite_merge, the knots
+ * merged where the error allows): a new array in *pts (owned by the
+ * caller), or NULL where nothing is merged. */
+static ic_status merged_points(ic_pair *pair, const ic_trace_curve *c, double fit_tol,
+                               ic_trace_point **pts, int *npts, ic_error *err)
+{
+    *pts = NULL;
+    ic_hermite_node *nodes = malloc(sizeof *nodes * (size_t)c->npoints);
+    int *source = malloc(sizeof *source * (size_t)c->npoints * 3);
+    int *pinned = source ? source + c->npoints : NULL, *keep = source ? pinned + c->npoints : NULL;
+    ic_jet_space *sp = NULL;
+    ic_status st = nodes && source ? ic_jet_space_new(&sp, 2, 2, err)
+                                   : ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
+    const int n = st == IC_OK ? curve_nodes(pair, c, sp, nodes, source, pinned) : 0;
+    const int m = n >= 2 ? ic_hermite_merge(nodes, pinned, n, 3, FIT_MERGE_POS * fit_tol,
+                                            FIT_MERGE_DERIV, FIT_MERGE_TAU, keep)
+                         : 0;
+    if (m >= 2 && m < c->npoints) {
+        *pts = malloc(sizeof **pts * (size_t)m);
+        if (!*pts)
+            st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory fitting a curve");
+        for (int k = 0; *pts && k < m; k++)
+            (*pts)[k] = c->points[source[keep[k]]];
+        *npts = m;
+    }
+    ic_jet_space_free(sp);
+    free(nodes);
+    free(source);
+    return st;
 }
 
 /* One fit of the points of c; bad (c->npoints doubles) receives the middles
@@ -462,11 +521,7 @@ static ic_status fit_once(ic_curve_fit **out, ic_pair *pair, const ic_trace_curv
     ic_jet_space *sp = NULL;
     ic_status st = f && nodes && source ? ic_jet_space_new(&sp, 2, 2, err)
                                         : ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
-    const int n = st == IC_OK ? space_nodes(pair, c, nodes, source, pinned) : 0;
-    for (int k = 0; k < n; k++)
-        knot_node(pair, &c->points[source[k]], sp, &nodes[k]);
-    if (st == IC_OK)
-        junction_nodes(pair, c, nodes, source, n);
+    const int n = st == IC_OK ? curve_nodes(pair, c, sp, nodes, source, pinned) : 0;
     if (st == IC_OK && n < 2)
         st = ic_error_set(err, IC_ERR_INVALID, 0, "curve fit: the curve has no length");
     if (st == IC_OK)
@@ -479,7 +534,7 @@ static ic_status fit_once(ic_curve_fit **out, ic_pair *pair, const ic_trace_curv
                                     c->closed && ic_hermite_closes(nodes + c->npoints, n, 2), err);
     if (st == IC_OK) {
         check_pcurves(pair, f, nodes, n, fit_tol);
-        check_fit(pair, f, c, nodes, source, n, fit_tol, bad, nbad);
+        st = check_fit(pair, f, c, nodes, source, n, fit_tol, bad, nbad, err);
     }
     ic_jet_space_free(sp);
     free(nodes);
@@ -497,7 +552,7 @@ static ic_status fit_once(ic_curve_fit **out, ic_pair *pair, const ic_trace_curv
  * with its apparatus oriented along the curve. 0 where that fails (a
  * tangential point: no refinement there). */
 static int point_at(ic_pair *pair, const ic_curve_fit *f, const ic_trace_point *near, double s,
-                    ic_trace_point *p)
+                    ic_trace_point *p, int *nomem)
 {
     double d[6], params[2][2];
     if (ic_bspline_eval(&f->curve, s, 1, d, NULL) != IC_OK)
@@ -510,10 +565,13 @@ static int point_at(ic_pair *pair, const ic_curve_fit *f, const ic_trace_point *
     ic_local_defaults(&opt);
     ic_local_point pt;
     ic_local_result res;
-    if ((ic_local_locate_guess(pair, &pt, d, params, &opt, NULL) != IC_OK &&
-         ic_local_locate(pair, &pt, d, &opt, NULL) != IC_OK) ||
-        ic_local_apparatus(pair, &res, &pt, 2, IC_METHOD_JET, &opt, NULL) != IC_OK ||
-        res.type != IC_POINT_TRANSVERSAL)
+    ic_status st = ic_local_locate_guess(pair, &pt, d, params, &opt, NULL);
+    if (st != IC_OK && st != IC_ERR_NOMEM)
+        st = ic_local_locate(pair, &pt, d, &opt, NULL);
+    if (st == IC_OK)
+        st = ic_local_apparatus(pair, &res, &pt, 2, IC_METHOD_JET, &opt, NULL);
+    *nomem |= st == IC_ERR_NOMEM;
+    if (st != IC_OK || res.type != IC_POINT_TRANSVERSAL)
         return 0;
     const ic_branch *br = &res.branches[0];
     const double sign = ic_dot3(br->t, d + 3) < 0 ? -1 : 1;
@@ -531,23 +589,25 @@ static int point_at(ic_pair *pair, const ic_curve_fit *f, const ic_trace_point *
 }
 
 /* The points of c with a located point at each s of bad[] (sorted) put in:
- * a new point array in *pts (owned by the caller); 0 when none could be
- * made. */
-static int refined_points(ic_pair *pair, const ic_curve_fit *f, const ic_trace_curve *c,
-                          const double *bad, int nbad, ic_trace_point **pts, int *n)
+ * a new point array in *pts (owned by the caller); *more = 0 when none
+ * could be made. IC_ERR_NOMEM when memory ran out (never a coarser fit). */
+static ic_status refined_points(ic_pair *pair, const ic_curve_fit *f, const ic_trace_curve *c,
+                                const double *bad, int nbad, ic_trace_point **pts, int *n,
+                                int *more, ic_error *err)
 {
+    *more = 0;
     ic_trace_point *out = malloc(sizeof *out * (size_t)(c->npoints + nbad));
-    if (!out)
-        return 0;
-    int k = 0, b = 0;
-    for (int i = 0; i < c->npoints; i++) {
+    int k = 0, b = 0, nomem = !out;
+    for (int i = 0; out && i < c->npoints; i++) {
         for (; b < nbad && bad[b] < c->points[i].s; b++)
-            k += point_at(pair, f, &c->points[i > 0 ? i - 1 : 0], bad[b], &out[k]);
+            k += point_at(pair, f, &c->points[i > 0 ? i - 1 : 0], bad[b], &out[k], &nomem);
         out[k++] = c->points[i];
     }
     *pts = out;
     *n = k;
-    return k > c->npoints;
+    *more = k > c->npoints;
+    return nomem ? ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory refining a curve's fit")
+                 : IC_OK;
 }
 
 /* rounds of refinement: each halves the stretches that missed the tolerance */
@@ -564,7 +624,9 @@ ic_status ic_curve_fit_new(ic_curve_fit **out, ic_pair *pair, const ic_trace_cur
     ic_trace_curve cur = *c;
     ic_trace_point *owned = NULL;
     ic_curve_fit *f = NULL;
-    ic_status st = IC_OK;
+    ic_status st = merged_points(pair, c, fit_tol, &owned, &cur.npoints, err);
+    if (owned)
+        cur.points = owned;
     for (int round = 0; st == IC_OK && round <= FIT_MAX_ROUNDS; round++) {
         double *bad = malloc(sizeof *bad * (size_t)cur.npoints);
         int nbad = 0;
@@ -575,11 +637,11 @@ ic_status ic_curve_fit_new(ic_curve_fit **out, ic_pair *pair, const ic_trace_cur
         ic_curve_fit_free(f);
         st = fit_once(&f, pair, &cur, fit_tol, bad, &nbad, err);
         ic_trace_point *next = NULL;
-        int n = 0;
-        const int more = st == IC_OK && nbad > 0 && round < FIT_MAX_ROUNDS &&
-                         refined_points(pair, f, &cur, bad, nbad, &next, &n);
+        int n = 0, more = 0;
+        if (st == IC_OK && nbad > 0 && round < FIT_MAX_ROUNDS)
+            st = refined_points(pair, f, &cur, bad, nbad, &next, &n, &more, err);
         free(bad);
-        if (!more) {
+        if (!more || st != IC_OK) {
             free(next);
             break;
         }

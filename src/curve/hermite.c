@@ -24,6 +24,91 @@ static void hermite_bezier(double *b, const ic_hermite_node *a, const ic_hermite
     }
 }
 
+void ic_hermite_eval(const ic_hermite_node *a, const ic_hermite_node *z, int dim, double s,
+                     double out[4][3])
+{
+    double b[6 * 3];
+    hermite_bezier(b, a, z, dim);
+    const double h = z->s - a->s, u = (s - a->s) / h, v = 1 - u;
+    /* Bernstein polynomials of degree 5, 4 and 3 at u */
+    const double B5[6] = {v * v * v * v * v, 5 * u * v * v * v * v, 10 * u * u * v * v * v,
+                          10 * u * u * u * v * v, 5 * u * u * u * u * v, u * u * u * u * u};
+    const double B4[5] = {v * v * v * v, 4 * u * v * v * v, 6 * u * u * v * v, 4 * u * u * u * v,
+                          u * u * u * u};
+    const double B3[4] = {v * v * v, 3 * u * v * v, 3 * u * u * v, u * u * u};
+    const double B2[3] = {v * v, 2 * u * v, u * u};
+    for (int j = 0; j < dim; j++) {
+        double x = 0, d1 = 0, d2 = 0, d3 = 0;
+        for (int i = 0; i < 6; i++)
+            x += B5[i] * b[i * dim + j];
+        for (int i = 0; i < 5; i++)
+            d1 += B4[i] * (b[(i + 1) * dim + j] - b[i * dim + j]);
+        for (int i = 0; i < 4; i++)
+            d2 += B3[i] * (b[(i + 2) * dim + j] - 2 * b[(i + 1) * dim + j] + b[i * dim + j]);
+        for (int i = 0; i < 3; i++)
+            d3 += B2[i] * (b[(i + 3) * dim + j] - 3 * b[(i + 2) * dim + j] +
+                           3 * b[(i + 1) * dim + j] - b[i * dim + j]);
+        out[0][j] = x;
+        out[1][j] = 5 * d1 / h;
+        out[2][j] = 20 * d2 / (h * h);
+        out[3][j] = 60 * d3 / (h * h * h);
+    }
+}
+
+/* The torsion of a space curve from its first three derivatives: (c' x
+ * c'') . c''' / |c' x c''|^2; NAN where c' x c'' vanishes. */
+static double torsion(const double d[4][3])
+{
+    const double *a = d[1], *b = d[2];
+    const double cr[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                          a[0] * b[1] - a[1] * b[0]};
+    const double cc = cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2];
+    return cc > 0 ? (cr[0] * d[3][0] + cr[1] * d[3][1] + cr[2] * d[3][2]) / cc : NAN;
+}
+
+/* Whether the quintic from nodes[a] to nodes[z] passes the nodes between
+ * them (hermite.h, ic_hermite_merge). */
+static int bridges(const ic_hermite_node *nodes, int a, int z, int dim, double pos_tol,
+                   double deriv_tol, double tau_tol, double curvature_floor)
+{
+    for (int k = a + 1; k < z; k++) {
+        double h[4][3], e0 = 0, e1 = 0, e2 = 0, size2 = 0;
+        ic_hermite_eval(&nodes[a], &nodes[z], dim, nodes[k].s, h);
+        for (int j = 0; j < dim; j++) {
+            e0 = fmax(e0, fabs(h[0][j] - nodes[k].x[j]));
+            e1 = fmax(e1, fabs(h[1][j] - nodes[k].d1[j]));
+            e2 = fmax(e2, fabs(h[2][j] - nodes[k].d2[j]));
+            size2 += nodes[k].d2[j] * nodes[k].d2[j];
+        }
+        const double scale = fmax(sqrt(size2), curvature_floor);
+        if (!(e0 <= pos_tol && e1 <= deriv_tol && e2 <= deriv_tol * scale))
+            return 0;
+        if (dim == 3 && isfinite(nodes[k].tau) &&
+            !(fabs(torsion(h) - nodes[k].tau) <= tau_tol * scale))
+            return 0;
+    }
+    return 1;
+}
+
+int ic_hermite_merge(const ic_hermite_node *nodes, const int *pinned, int n, int dim,
+                     double pos_tol, double deriv_tol, double tau_tol, int *keep)
+{
+    if (n < 1)
+        return 0;
+    const double floor = 1 / fmax(nodes[n - 1].s - nodes[0].s, 1e-300);
+    int m = 0;
+    keep[m++] = 0;
+    for (int a = 0; a < n - 1;) {
+        int z = a + 1;
+        while (z + 1 < n && z - a < IC_HERMITE_MAX_MERGE && !pinned[z] &&
+               bridges(nodes, a, z + 1, dim, pos_tol, deriv_tol, tau_tol, floor))
+            z++;
+        keep[m++] = z;
+        a = z;
+    }
+    return m;
+}
+
 /* Whether the curve is C^2 at a node: the stretches on both sides share
  * its derivatives (not so on a knot line where they jump). */
 static int smooth_at(const ic_hermite_node *h, int dim)

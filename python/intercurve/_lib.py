@@ -2,6 +2,7 @@
 its errors as Python exceptions (docs/python.md, "The library")."""
 
 import ctypes
+import ctypes.util
 import os
 import threading
 
@@ -17,7 +18,6 @@ _ERROR_PATH_LEN = 160
 _ERROR_MESSAGE_LEN = 320
 
 _LIB_NAME = "libintercurve.so"
-_SONAME = "libintercurve.so.0"
 
 
 class Error(Exception):
@@ -75,14 +75,15 @@ def _candidates():
     """Where the library is looked for, in order: $INTERCURVE_LIB; the
     library installed with this package (make install); the build directory
     of the source tree this package sits in (python/intercurve ->
-    build/libintercurve.so); the system's loader (libintercurve.so.0)."""
+    build/libintercurve.so); the system's loader (ctypes.util.find_library)."""
     env = os.environ.get("INTERCURVE_LIB")
     if env:
         return [env]
     here = os.path.dirname(os.path.abspath(__file__))
     found = [_installed_library(),
              os.path.normpath(os.path.join(here, "..", "..", "build", _LIB_NAME))]
-    return [f for f in found if f and os.path.exists(f)] + [_SONAME]
+    system = ctypes.util.find_library("intercurve") or _LIB_NAME
+    return [f for f in found if f and os.path.exists(f)] + [system]
 
 
 def _declare(lib):

@@ -206,7 +206,7 @@ IC_API IC_NODISCARD ic_status ic_local_locate_degenerate(ic_pair *pair, ic_local
  *  leaves five digits for ill-conditioned sheets. */
 #define IC_LOCAL_ON_SURFACE_REL 1e-10
 /**
- * The point `intercurve point` reports (docs/local.md, "Locating"): located
+ * The point `intercurve point` reports (docs/local.md, "Locating the point"): located
  * from values (count 3 coordinates, or with by_params the parameters as
  * ic_local_locate_params takes them), then held to the surfaces' residual
  * test: at most IC_LOCAL_ON_SURFACE_REL (1 + |X|) from either surface, whatever

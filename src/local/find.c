@@ -1,9 +1,10 @@
 /*
  * The point `intercurve point` and the bindings report: located from
  * coordinates or parameters, then held to the surfaces' own residual test
- * (docs/local.md, "Locating"), whatever opt->point_tol let the search start
- * from. A tangential point, where the refinement has no plane normal to the
- * curve to work in, is moved onto the nearest tangential point instead.
+ * (docs/local.md, "Locating the point"), whatever opt->point_tol let the
+ * search start from. A tangential point, where the refinement has no plane
+ * normal to the curve to work in, is moved onto the nearest tangential
+ * point instead.
  */
 #include "local_internal.h"
 #include "common/vec3.h"

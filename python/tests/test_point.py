@@ -10,6 +10,9 @@ from conftest import example, viviani_derivatives, viviani_kappa_tau
 # exact to rounding at a located point (docs/local.md): a few ulps of the
 # values (~1), left three digits
 POINT_TOL = 1e-12
+# against central differences of step 1e-5: their h^2 error, ~1e-10, and
+# rounding eps/h ~ 1e-11
+DIFFERENCE_TOL = 1e-8
 
 
 @pytest.fixture(scope="module")
@@ -59,12 +62,23 @@ def test_transversal_point(viviani, by):
     # Frenet: c''' = -kappa^2 t + kappa' n + kappa tau b
     assert np.dot(c[2], br.t) == pytest.approx(-kappa ** 2, abs=POINT_TOL)
     assert np.dot(c[2], br.b) == pytest.approx(kappa * tau, abs=POINT_TOL)
-    assert np.dot(c[2], br.n) == pytest.approx(br.kappa_prime, abs=POINT_TOL)
+    # kappa' and tau' by central differences of the closed forms in theta
+    # (error ~h^2 = 1e-10 times the third derivative), over ds/dtheta = |r'|
+    h = 1e-5
+    kp, tp = (np.array(viviani_kappa_tau(theta + h)) - viviani_kappa_tau(theta - h)) / (2 * h)
+    kp, tp = sign * kp / speed, sign * tp / speed  # s along the library's t
+    assert br.kappa_prime == pytest.approx(kp, abs=DIFFERENCE_TOL)
+    assert br.tau_prime == pytest.approx(tp, abs=DIFFERENCE_TOL)
+    assert np.dot(c[2], br.n) == pytest.approx(kp, abs=DIFFERENCE_TOL)
+    # the fourth derivative: -3 kappa kappa' t + (...) n + (2 kappa' tau + kappa tau') b
+    assert np.dot(c[3], br.t) == pytest.approx(-3 * kappa * kp, abs=DIFFERENCE_TOL)
+    assert np.dot(c[3], br.b) == pytest.approx(2 * kp * tau + kappa * tp, abs=DIFFERENCE_TOL)
 
 
 def test_order_sets_the_derivatives(viviani):
     q = viviani.point(at=(1.5, np.sqrt(3) / 2, 1), order=7)
     assert q.order == 7 and q.branches[0].derivatives.shape == (7, 3)
+    assert np.isfinite(q.branches[0].derivatives).all()
 
 
 def test_not_on_the_surfaces(viviani):
@@ -72,6 +86,12 @@ def test_not_on_the_surfaces(viviani):
         viviani.point(at=(1.5, np.sqrt(3) / 2, 1.2))
     assert e.value.message.startswith("not on the surfaces: residual")
     assert e.value.code == 5  # IC_ERR_UNABLE
+    # a wide search (point_tol 10) from the origin ends on neither surface: the
+    # residual test refuses it whatever point_tol allowed (docs/local.md)
+    with pytest.raises(ic.ComputationError) as e:
+        viviani.point(at=(0, 0, 0), point_tol=10)
+    first, why = e.value.message.split("\n", 1)
+    assert first.startswith("not on the surfaces: residual") and "only widens" in why
 
 
 @pytest.mark.parametrize("kwargs, match", [

@@ -19,6 +19,11 @@ DEFAULT_ORDER = 4          # highest derivative at a point
 DEFAULT_POINT_TOL = 1e-6   # length: how far from the surfaces a point search may start
 
 
+# a problem that cannot be read is the caller's input too; only running out
+# of memory is not
+_LOAD_INPUT_CODES = (_lib.IC_ERR_INVALID, _lib.IC_ERR_PARSE, _lib.IC_ERR_IO)
+
+
 def _free_problem(handle):
     _lib.library().ic_problem_free(handle)
 
@@ -56,7 +61,7 @@ class Problem:
         lib = _lib.library()
         handle, err = ctypes.c_void_p(), _lib.new_error()
         st = lib.ic_problem_load(ctypes.byref(handle), path.encode(), ctypes.byref(err))
-        _lib.check(st, err, input_codes=range(1, 7))
+        _lib.check(st, err, input_codes=_LOAD_INPUT_CODES)
         return cls(handle.value, None, path)
 
     @classmethod
@@ -66,7 +71,7 @@ class Problem:
         lib = _lib.library()
         handle, err = ctypes.c_void_p(), _lib.new_error()
         st = lib.ic_problem_parse(ctypes.byref(handle), data, len(data), ctypes.byref(err))
-        _lib.check(st, err, input_codes=range(1, 7))
+        _lib.check(st, err, input_codes=_LOAD_INPUT_CODES)
         return cls(handle.value, data.decode("utf-8"), None, name)
 
     @classmethod
@@ -219,8 +224,9 @@ class TraceResult:
         through pickling."""
         if self._handles is None:
             again = self.problem.trace(**self.options)
-            self._handles, self._finalizer = again._handles, again._finalizer
-            again._handles = None
+            again._finalizer.detach()  # the handles are this result's from here
+            self._handles = again._handles
+            self._finalizer = weakref.finalize(self, _free_trace, *self._handles)
         return self._handles
 
     def __getstate__(self):

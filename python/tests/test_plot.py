@@ -37,6 +37,23 @@ def test_plot_of_a_result_and_surfaces_only(cusp, tmp_path):
     assert a.startswith(MAGIC[".png"]) and b.startswith(MAGIC[".png"]) and a != b
 
 
+def test_plot_of_an_unpickled_result(tmp_path):
+    import gc
+    import pickle
+    p = ic.Problem.load(example("cusp.json"))
+    r = p.trace()
+    back = pickle.loads(pickle.dumps(r))
+    assert back == r and back._handles is None  # the document only
+    back.problem.plot(tmp_path / "a.svg", result=back, size=(400, 300), mesh=8)
+    gc.collect()  # the result traced again owns its handles: still valid
+    back.plot(tmp_path / "b.svg", size=(400, 300), mesh=8)
+    # the same picture, but for cairo's ids, numbered per process
+    a, b = ((tmp_path / f).read_bytes() for f in ("a.svg", "b.svg"))
+    assert re.sub(rb"[a-z]+[0-9]+", b"id", a) == re.sub(rb"[a-z]+[0-9]+", b"id", b)
+    del back
+    gc.collect()
+
+
 def test_plot_errors(cusp, tmp_path):
     with pytest.raises(ic.InputError, match="format"):
         cusp.plot(tmp_path / "figure.xyz")

@@ -72,3 +72,16 @@ def test_batch_raises_the_failure():
     with pytest.raises(ic.InputError) as e:
         ic.batch([sphere_and_plane(0)[0], bad], workers=2)
     assert e.value.path == "surfaces[1].f"
+
+
+def test_threads_on_separate_and_shared_problems(problems, single):
+    """ctypes lets the GIL go during a call: separate Problems trace at once
+    in threads, and calls on one Problem wait for each other (its lock)."""
+    import concurrent.futures
+    separate = [ic.Problem.from_dict(p) for p, _ in problems[:8]]
+    shared = ic.Problem.from_dict(problems[0][0])
+    with concurrent.futures.ThreadPoolExecutor(4) as pool:
+        got = list(pool.map(lambda q: q.trace(depth=4), separate))
+        again = list(pool.map(lambda _: shared.trace(depth=4), range(4)))
+    assert got == single[:8]
+    assert all(r == single[0] for r in again)

@@ -14,8 +14,10 @@ BUILD ?= build
 PREFIX ?= /usr/local
 FUZZ_SECONDS ?= 60
 CMAKE_FLAGS ?=
-# g++: the test that the headers work from C++ (tests/test_cxx.cpp)
-DEB_PACKAGES = cmake pkg-config g++ libcjson-dev libcairo2-dev libxml2-dev poppler-utils
+# g++: the test that the headers work from C++ (tests/test_cxx.cpp); the
+# python3 ones: the Python package's tests (docs/python.md)
+DEB_PACKAGES = cmake pkg-config g++ libcjson-dev libcairo2-dev libxml2-dev poppler-utils \
+               python3-numpy python3-pytest python3-dask python3-distributed
 # more, for one run: .ci/run adds clang
 EXTRA_DEB_PACKAGES ?=
 # the peers of `make bench-peers` (docs/peers.md), never needed by the build or CI

@@ -17,6 +17,7 @@
 #include "intercurve/problem.h"
 #include "intercurve/writers.h"
 #include "intercurve/plot.h"
+#include "intercurve/bindings.h"
 
 #define IC_VERSION "0.1.0"
 

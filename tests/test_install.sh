@@ -6,14 +6,17 @@
 #      shared one, so the linker can only take libintercurve.a);
 #  (c) a CMake project with find_package(intercurve CONFIG): intercurve::intercurve
 #      and intercurve::intercurve_static; and the version file refuses an older
-#      API generation.
-# usage: test_install.sh BUILD_DIR SOURCE_DIR C_COMPILER [EXTRA_CFLAGS]
+#      API generation;
+#  (d) given PYTHON: the installed Python package imported from the prefix,
+#      loading the installed library, tracing Viviani's curve.
+# usage: test_install.sh BUILD_DIR SOURCE_DIR C_COMPILER [EXTRA_CFLAGS [PYTHON]]
 set -u
 build="$1"
 src="$2"
 cc="$3"
 # sanitizer builds: the consumers need the same runtime
 read -r -a extra <<<"${4:-}"
+python="${5:-}"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 pass=0
@@ -108,4 +111,29 @@ if [ "$major" -eq 0 ]; then older="0.$((minor - 1))"; else older="$((major - 1))
 check "find_package(intercurve $older) refused by the version file" $?
 grep -q "intercurveConfig.cmake, version: $version" "$work/older.log"
 check "the refusal names the installed version $version" $?
+
+# (d) the Python package, run from elsewhere than the sources, no
+# INTERCURVE_LIB: it finds the library installed beside it
+if [ -n "$python" ]; then
+    pkg=$(find "$prefix" -path '*/intercurve/__init__.py' -printf '%h\n')
+    test -n "$pkg" -a -f "$pkg/_installed.py"
+    check "the Python package and its _installed.py are installed ($pkg)" $?
+    (cd "$work" && env -u INTERCURVE_LIB PYTHONPATH="$(dirname "$pkg")" PYTHONDONTWRITEBYTECODE=1 \
+        "$python" -c '
+import math, sys
+import intercurve as ic
+pkg, libdir, problem = sys.argv[1:4]
+assert ic.__file__.startswith(pkg), ic.__file__
+assert ic.library_path().startswith(libdir + "/libintercurve.so"), ic.library_path()
+r = ic.Problem.load(problem).trace(tol=1e-10)
+(c,) = r.curves
+# the length of Viviani s curve, the integral of sqrt(1 + cos^2(t/2)) over [0, 4 pi]
+# by the midpoint rule on 20000 panels (error ~1e-9)
+n = 20000
+length = sum(math.sqrt(1 + math.cos((k + 0.5) * 4 * math.pi / n / 2) ** 2)
+             for k in range(n)) * 4 * math.pi / n
+assert c.closed and abs(c.length - length) < 1e-7, (c.length, length)
+' "$pkg" "$libdir" "$problem") >"$work/python.log" 2>&1
+    check "the installed Python package traces Viviani's curve ($(tail -3 "$work/python.log"))" $?
+fi
 finish

@@ -554,6 +554,42 @@ static ic_status writers(ic_error *err, char *summary)
     return st;
 }
 
+/* The entry points for other languages (bindings.h): a problem parsed and
+ * traced, its document in memory, a point's document. Not fitted (fit_tol
+ * 0): ic_curve_fit_new's check of the fit takes out of memory for "nothing
+ * checked" and gives another fit (src/curve/fit.c, check_fit), which this
+ * test would report as a different answer. */
+static ic_status bindings(ic_error *err, char *summary)
+{
+    const char *json = "{\"surfaces\": [{\"type\": \"implicit\", \"f\": \"x^2+y^2+z^2-4\"},"
+                       " {\"type\": \"implicit\", \"f\": \"z - 1\"}],"
+                       " \"box\": [[-3, 3], [-3, 3], [-3, 3]]}";
+    ic_problem *p = NULL;
+    ic_trace_result *res = NULL;
+    ic_pair *pair = NULL;
+    char *doc = NULL;
+    size_t len = 0;
+    ic_status st = ic_problem_parse(&p, json, strlen(json), err);
+    if (st == IC_OK)
+        st = ic_problem_trace(&res, &pair, p, 1e-11, 3, 0, 0, err);
+    if (st == IC_OK)
+        st = ic_trace_json_alloc(&doc, &len, res, pair, err);
+    if (st == IC_OK)
+        say(summary, "trace %zu bytes %.40s; ", len, doc);
+    ic_free(doc);
+    doc = NULL;
+    const double at[3] = {sqrt(3.0), 0, 1};
+    if (st == IC_OK)
+        st = ic_problem_point_json(&doc, &len, p, at, 3, 0, 4, "auto", 1e-6, err);
+    if (st == IC_OK)
+        say(summary, "point %zu bytes", len);
+    ic_free(doc);
+    ic_trace_result_free(res);
+    ic_pair_free(pair);
+    ic_problem_free(p);
+    return st;
+}
+
 /* ---- the driver ---- */
 
 typedef struct {
@@ -681,6 +717,7 @@ int main(int argc, char **argv)
         {"trace, tangential", trace_tangential},
         {"problem file", problem_file},
         {"writers", writers},
+        {"bindings", bindings},
     };
     for (size_t i = 0; i < sizeof SCENARIOS / sizeof SCENARIOS[0]; i++)
         if (strstr(SCENARIOS[i].name, only))

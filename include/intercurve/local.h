@@ -200,6 +200,25 @@ IC_API IC_NODISCARD ic_status ic_local_locate_degenerate(ic_pair *pair, ic_local
                                                          const ic_local_options *opt,
                                                          ic_error *err);
 
+/** Dimensionless: a point ic_local_find reports is at most this times
+ *  (1 + |X|) (a length) from either surface: the tracer's test for a point on
+ *  both surfaces; the refinement stops near 1e-15 of that scale, so it
+ *  leaves five digits for ill-conditioned sheets. */
+#define IC_LOCAL_ON_SURFACE_REL 1e-10
+/**
+ * The point `intercurve point` reports (docs/local.md, "Locating the point"): located
+ * from values (count 3 coordinates, or with by_params the parameters as
+ * ic_local_locate_params takes them), then held to the surfaces' residual
+ * test: at most IC_LOCAL_ON_SURFACE_REL (1 + |X|) from either surface, whatever
+ * opt->point_tol let the search start from; a tangential point that fails
+ * it is moved onto the nearest tangential point within point_tol. A point
+ * off the surfaces is IC_ERR_UNABLE (or the locator's status) with a
+ * message whose first line is "not on the surfaces: residual R at ..." and
+ * whose second line says why; IC_ERR_INVALID for a wrong count.
+ */
+IC_API IC_NODISCARD ic_status ic_local_find(ic_pair *pair, ic_local_point *pt,
+                                            const double *values, int count, int by_params,
+                                            const ic_local_options *opt, ic_error *err);
 /** Darboux quantities of the curve on one surface (docs/local.md, "Outputs"). */
 typedef struct {
     double kappa_n; /**< normal curvature c'' . N */

@@ -1,19 +1,9 @@
 /* intercurve point: the intersection's Frenet apparatus at one point. */
 #include "cli/cli.h"
-#include "common/vec3.h"
 
 #include <math.h>
 #include <string.h>
 
-/* The surfaces' own residual test for a point the command reports: its
- * largest distance to either surface (a length) at most ON_SURFACE_REL
- * times the problem's length scale at the point, 1 + |X| (the unit keeps
- * points near the origin from asking for zero). The same test the tracer
- * uses for a point on both surfaces (src/trace/search.c); the locator's
- * refinement stops near 1e-15 of that scale, so 1e-10 leaves five digits
- * for ill-conditioned sheets. --point-tol never loosens it: it only lets
- * the search start that far from the surfaces. */
-#define ON_SURFACE_REL 1e-10
 #define STRINGIFY_(x) #x
 #define STRINGIFY(x) STRINGIFY_(x) /* the constant's value in the help text */
 
@@ -77,7 +67,7 @@ static const ic_cli_option POINT_OPTIONS[NOPTIONS] = {
                                "start (a length); farther is an error saying how far. It\n"
                                "widens the search only: the point found must pass the\n"
                                "surfaces' residual test, at most " STRINGIFY(
-                                   ON_SURFACE_REL) " (1 + |X|) from both"},
+                                   IC_LOCAL_ON_SURFACE_REL) " (1 + |X|) from both"},
 };
 
 static const ic_cli_command POINT = {
@@ -102,89 +92,19 @@ static const ic_cli_command POINT = {
         "  intercurve point examples/viviani.json --at 2,0,0 --format text   (a branch point)\n",
 };
 
-/* The largest residual (a length) the command accepts at X. */
-static double accepted_residual(const double X[3])
-{
-    return ON_SURFACE_REL * (1.0 + hypot(hypot(X[0], X[1]), X[2]));
-}
-
-/* 1 when the sheets' normals at the point are parallel within the
- * tangential angle: the locator then has no plane normal to the curve to
- * refine in, so the point is where the search left it. */
-static int normals_parallel(ic_pair *pair, const ic_local_point *pt, const ic_local_options *opt)
-{
-    double N[2][3];
-    for (int s = 0; s < 2; s++) {
-        ic_surface *srf = ic_pair_surface(pair, s);
-        const int par = ic_surface_get_kind(srf) == IC_PARAMETRIC;
-        ic_surface_geometry g;
-        if (ic_surface_normal_at(srf, &g, par ? pt->params[s] : pt->xyz, NULL) != IC_OK)
-            return 0;
-        memcpy(N[s], g.normal, sizeof N[s]);
-    }
-    double c[3];
-    ic_cross3(c, N[0], N[1]);
-    return ic_norm3(c) < sin(opt->tangential_angle);
-}
-
-/* "not on the surfaces", the first message whenever the point is off them:
- * before the locator's reasons (a singular sheet, no convergence). */
-static void say_not_on_surfaces(const char *file, double residual, const char *where)
-{
-    if (isinf(residual))
-        fprintf(stderr,
-                "intercurve: %s: not on the surfaces: residual unknown: %s is off a surface "
-                "whose gradient vanishes there\n",
-                file, where);
-    else
-        fprintf(stderr, "intercurve: %s: not on the surfaces: residual %.3g at %s\n", file,
-                residual, where);
-}
-
-/* A located point off the surfaces at a tangential place (unrefined) is
- * moved onto the nearest tangential point within --point-tol; 1 if moved. */
-static int snap_tangential(ic_pair *pair, ic_local_point *pt, const ic_local_options *opt)
-{
-    ic_local_point on;
-    if (!normals_parallel(pair, pt, opt) ||
-        ic_local_locate_tangential(pair, &on, pt, opt->point_tol, opt, NULL) != IC_OK ||
-        !(on.residual <= accepted_residual(on.xyz)))
-        return 0;
-    *pt = on;
-    return 1;
-}
-
-/* Locates the point of --at or --params; 0, or the exit code after the
- * messages. The point must pass the surfaces' residual test
- * (ON_SURFACE_REL) whatever --point-tol allowed the search. */
+/* Locates the point of --at or --params (ic_local_find: "not on the
+ * surfaces" first when it is off them); 0, or the exit code after the
+ * message. */
 static int locate_point(const char *file, ic_pair *pair, ic_local_point *pt, const double *values,
                         int count, int by_params, const ic_local_options *opt)
 {
     ic_error err;
     ic_error_clear(&err);
-    ic_status st = by_params ? ic_local_locate_params(pair, pt, values, count, opt, &err)
-                             : ic_local_locate(pair, pt, values, opt, &err);
-    if (st != IC_OK) {
-        /* pt->residual: how far the given point is, as far as measured */
-        const double *X = by_params ? pt->xyz : values;
-        if (pt->residual > accepted_residual(X))
-            say_not_on_surfaces(file, pt->residual,
-                                by_params ? "the point of the given parameters"
-                                          : "the given point");
-        ic_cli_print_error(file, &err);
-        return st == IC_ERR_INVALID ? EXIT_INPUT : EXIT_COMPUTE;
-    }
-    if (pt->residual <= accepted_residual(pt->xyz) || snap_tangential(pair, pt, opt))
+    const ic_status st = ic_local_find(pair, pt, values, count, by_params, opt, &err);
+    if (st == IC_OK)
         return 0;
-    char where[160];
-    snprintf(where, sizeof where, "the nearest point found (%.17g, %.17g, %.17g)", pt->xyz[0],
-             pt->xyz[1], pt->xyz[2]);
-    say_not_on_surfaces(file, pt->residual, where);
-    fprintf(stderr,
-            "intercurve: %s: the surfaces' residual test allows %.3g there (%g of 1 + |X|); "
-            "--point-tol %g only widens the search for the point\n",
-            file, accepted_residual(pt->xyz), ON_SURFACE_REL, opt->point_tol);
-    return EXIT_COMPUTE;
+    ic_cli_print_error(file, &err);
+    return st == IC_ERR_INVALID ? EXIT_INPUT : EXIT_COMPUTE;
 }
 
 /* The point's apparatus, printed as the document or as text; 0 or the

@@ -1,0 +1,253 @@
+"""A problem (docs/problem-files.md) and what the library computes on it:
+traces, points, pictures (docs/python.md)."""
+
+import ctypes
+import json
+import os
+import threading
+import weakref
+
+from . import _lib
+from ._view import view_html
+from .results import Curve, PointResult, SpecialPoint
+
+# The defaults of `intercurve trace`, `point` and `plot` (docs/cli.md).
+DEFAULT_TOL = 1e-11        # relative: truncation error per step
+DEFAULT_DEPTH = 6          # start-point search: 2^6 cells per axis
+DEFAULT_FIT_TOL = 1e-9     # relative: B-spline fit; 0: no B-splines
+DEFAULT_ORDER = 4          # highest derivative at a point
+DEFAULT_POINT_TOL = 1e-6   # length: how far from the surfaces a point search may start
+
+
+# a problem that cannot be read is the caller's input too; only running out
+# of memory is not
+_LOAD_INPUT_CODES = (_lib.IC_ERR_INVALID, _lib.IC_ERR_PARSE, _lib.IC_ERR_IO)
+
+
+def _free_problem(handle):
+    _lib.library().ic_problem_free(handle)
+
+
+def _free_trace(res, pair):
+    lib = _lib.library()
+    lib.ic_trace_result_free(res)
+    lib.ic_pair_free(pair)
+
+
+class Problem:
+    """Two surfaces, or one that crosses itself, with an optional box: a
+    problem file of docs/problem-files.md. Make one with Problem.load(path),
+    Problem.from_dict(dict) or Problem.from_json(text).
+
+    Calls on one Problem are serialised (its surfaces keep evaluation
+    workspaces); different Problems run in parallel in threads, and a
+    Problem pickles (by its file's path, or by its text), so it travels to
+    other processes (intercurve.batch)."""
+
+    def __init__(self, handle, text, path=None, name=None):
+        # use load, from_dict or from_json; the handle is owned from here
+        self._handle = ctypes.c_void_p(handle)
+        self._finalizer = weakref.finalize(self, _free_problem, self._handle)
+        self._text = text
+        self._path = path
+        self._name = name or path or "<problem>"
+        self._lock = threading.Lock()
+
+    @classmethod
+    def load(cls, path):
+        """Reads and validates a problem file; InputError (with .path and
+        .column) when it is malformed or cannot be read."""
+        path = os.path.abspath(os.fspath(path))
+        lib = _lib.library()
+        handle, err = ctypes.c_void_p(), _lib.new_error()
+        st = lib.ic_problem_load(ctypes.byref(handle), path.encode(), ctypes.byref(err))
+        _lib.check(st, err, input_codes=_LOAD_INPUT_CODES)
+        return cls(handle.value, None, path)
+
+    @classmethod
+    def from_json(cls, text, name="<json>"):
+        """A problem from the text of a problem file."""
+        data = text.encode("utf-8") if isinstance(text, str) else bytes(text)
+        lib = _lib.library()
+        handle, err = ctypes.c_void_p(), _lib.new_error()
+        st = lib.ic_problem_parse(ctypes.byref(handle), data, len(data), ctypes.byref(err))
+        _lib.check(st, err, input_codes=_LOAD_INPUT_CODES)
+        return cls(handle.value, data.decode("utf-8"), None, name)
+
+    @classmethod
+    def from_dict(cls, problem):
+        """A problem from a dict with the keys of a problem file
+        ("surfaces", "box", "title", ...)."""
+        try:
+            text = json.dumps(problem)
+        except (TypeError, ValueError) as e:
+            raise _lib.InputError("the problem is not JSON data: %s" % e) from None
+        return cls.from_json(text, "<dict>")
+
+    # pickling: by path when loaded from a file, else by text
+    def __reduce__(self):
+        if self._path is not None:
+            return (Problem.load, (self._path,))
+        return (Problem.from_json, (self._text, self._name))
+
+    @property
+    def title(self):
+        """The problem's title ("" when it has none)."""
+        return _lib.library().ic_problem_title(self._handle).decode("utf-8")
+
+    @property
+    def surface_names(self):
+        """The names of its surfaces (one for a self-intersection)."""
+        lib = _lib.library()
+        return [lib.ic_problem_surface_name(self._handle, i).decode("utf-8")
+                for i in range(lib.ic_problem_num_surfaces(self._handle))]
+
+    @property
+    def is_self(self):
+        """True for a self-intersection problem."""
+        return bool(_lib.library().ic_problem_is_self(self._handle))
+
+    def trace(self, tol=DEFAULT_TOL, depth=DEFAULT_DEPTH, fit_tol=DEFAULT_FIT_TOL,
+              time_limit=0.0):
+        """Traces the whole intersection, as `intercurve trace`: tol is the
+        truncation error per step and fit_tol the B-splines' tolerance, both
+        fractions of the problem's size (fit_tol 0: no B-splines); depth the
+        start-point search (1..9); time_limit seconds (0: none). Returns a
+        TraceResult; InputError for values out of range, ComputationError
+        when the trace fails."""
+        lib = _lib.library()
+        res, pair, err = ctypes.c_void_p(), ctypes.c_void_p(), _lib.new_error()
+        with self._lock:
+            st = lib.ic_problem_trace(ctypes.byref(res), ctypes.byref(pair), self._handle,
+                                      float(tol), int(depth), float(time_limit),
+                                      float(fit_tol), ctypes.byref(err))
+            _lib.check(st, err)
+            try:
+                buf, length = ctypes.c_void_p(), ctypes.c_size_t()
+                st = lib.ic_trace_json_alloc(ctypes.byref(buf), ctypes.byref(length), res,
+                                             pair, ctypes.byref(err))
+                _lib.check(st, err)
+                document = json.loads(_lib.take_text(buf, length))
+            except BaseException:
+                _free_trace(res, pair)
+                raise
+        options = dict(tol=tol, depth=depth, fit_tol=fit_tol, time_limit=time_limit)
+        return TraceResult(document, self, options, (res, pair))
+
+    def point(self, at=None, params=None, order=DEFAULT_ORDER, method="auto",
+              point_tol=DEFAULT_POINT_TOL):
+        """The intersection's apparatus at one point, as `intercurve point`:
+        the point by its coordinates `at` (x, y, z) or by `params` (the
+        parametric surfaces' parameters, in problem order; for a
+        self-intersection both preimages u, v, p, q); derivatives to `order`
+        (1..16); method "auto", "jet", "closed-form", "perturbation" or
+        "height-difference"; point_tol how far (a length) from the surfaces
+        the search may start. Returns a PointResult. ComputationError when
+        the point is not on the intersection (its message starts "not on the
+        surfaces"), InputError for wrong values."""
+        if (at is None) == (params is None):
+            raise _lib.InputError("give the point by `at` or by `params`, not both or neither")
+        values = [float(x) for x in (at if at is not None else params)]
+        arr = (ctypes.c_double * max(len(values), 1))(*values)
+        lib = _lib.library()
+        buf, length, err = ctypes.c_void_p(), ctypes.c_size_t(), _lib.new_error()
+        with self._lock:
+            st = lib.ic_problem_point_json(ctypes.byref(buf), ctypes.byref(length),
+                                           self._handle, arr, len(values),
+                                           int(params is not None), int(order),
+                                           str(method).encode(), float(point_tol),
+                                           ctypes.byref(err))
+            _lib.check(st, err)
+            text = _lib.take_text(buf, length)
+        return PointResult(json.loads(text))
+
+    def plot(self, path, result=None, surfaces_only=False, size=(1400, 800), view=(35, 25),
+             frames=8, chart=True, mesh=36, tol=DEFAULT_TOL, depth=DEFAULT_DEPTH,
+             time_limit=0.0):
+        """Draws the problem, as `intercurve plot`, into `path`; the format
+        follows its extension (every format `intercurve plot` writes: .svg,
+        .png, .pdf, ...; docs/plots.md). result: a TraceResult of this
+        problem to draw; without one the problem is traced now with tol,
+        depth and time_limit (as trace() takes them), or with
+        surfaces_only=True not at all. size (width, height) in pixels (PNG)
+        or points, view (azimuth, elevation) in degrees, frames: Frenet
+        frames drawn along the curves (0..200), chart: the curvature and
+        torsion panel, mesh: cells per parameter or box axis (4..200)."""
+        if result is None and not surfaces_only:
+            result = self.trace(tol=tol, depth=depth, time_limit=time_limit, fit_tol=0.0)
+        handle = None
+        if result is not None and not surfaces_only:
+            if result.problem is not self:
+                raise _lib.InputError("the result is a trace of another problem")
+            handle = result._native()[0]
+        lib = _lib.library()
+        err = _lib.new_error()
+        with self._lock:
+            st = lib.ic_problem_plot(os.fspath(path).encode(), self._handle, handle,
+                                     int(size[0]), int(size[1]), float(view[0]),
+                                     float(view[1]), int(frames), int(bool(chart)), int(mesh),
+                                     ctypes.byref(err))
+            _lib.check(st, err)
+
+    def _repr_html_(self):
+        """The interactive view in a notebook (the surfaces only: a trace is
+        shown by the TraceResult's own view)."""
+        return view_html(lambda path, **kw: self.plot(path, surfaces_only=True, **kw))
+
+    def __repr__(self):
+        return "Problem(%r%s)" % (self.title or self._name, ", self" if self.is_self else "")
+
+
+class TraceResult:
+    """The whole intersection: `curves` (Curve objects), `points`
+    (SpecialPoint objects: tangential and singular points), `report` (a
+    dict: what was proven, docs/output-formats.md), `complete` (the
+    report's verdict), `document` (the whole trace document), `problem` and
+    `options` (the trace's). Pickles without its native handles (a plot of
+    an unpickled result traces again with the same options)."""
+
+    def __init__(self, document, problem, options, handles=None):
+        self.document = document
+        self.problem = problem
+        self.options = dict(options)
+        self.curves = [Curve(c) for c in document["curves"]]
+        self.points = [SpecialPoint(p) for p in document["points"]]
+        self.report = document["report"]
+        self.complete = bool(self.report["complete"])
+        self._handles = None
+        if handles is not None:
+            self._handles = handles
+            self._finalizer = weakref.finalize(self, _free_trace, *handles)
+
+    def _native(self):
+        """The library's result and pair, traced again if this result came
+        through pickling."""
+        if self._handles is None:
+            again = self.problem.trace(**self.options)
+            again._finalizer.detach()  # the handles are this result's from here
+            self._handles = again._handles
+            self._finalizer = weakref.finalize(self, _free_trace, *self._handles)
+        return self._handles
+
+    def __getstate__(self):
+        return {"document": self.document, "problem": self.problem, "options": self.options}
+
+    def __setstate__(self, state):
+        self.__init__(state["document"], state["problem"], state["options"])
+
+    def __eq__(self, other):
+        """Equal when the documents are (every number the same double)."""
+        return isinstance(other, TraceResult) and self.document == other.document
+
+    __hash__ = None
+
+    def plot(self, path, **options):
+        """Draws this result: Problem.plot(path, result=self, ...)."""
+        self.problem.plot(path, result=self, **options)
+
+    def _repr_html_(self):
+        return view_html(lambda path, **kw: self.plot(path, **kw))
+
+    def __repr__(self):
+        return "TraceResult(%d curves, %d points, complete=%s)" % (
+            len(self.curves), len(self.points), self.complete)

@@ -1,0 +1,165 @@
+/* Entry points for other languages (include/intercurve/bindings.h): the
+ * commands' work with only handles, numbers and strings crossing. */
+#include "intercurve/bindings.h"
+#include "intercurve/plot.h"
+#include "intercurve/writers.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+/* The ranges of `intercurve trace` and `plot` (src/cli/cmd_trace.c,
+ * cmd_plot.c): relative tolerances at most MAX_REL_TOL of the problem's
+ * size, frames and mesh cells per axis within these counts. */
+#define MAX_REL_TOL 1e-2
+#define MAX_FRAMES 200
+#define MIN_MESH 4
+#define MAX_MESH 200
+
+void ic_free(void *mem) { free(mem); }
+
+/* The pair of a problem's surfaces (its one surface twice for a
+ * self-intersection). */
+static ic_status problem_pair(ic_pair **pair, const ic_problem *problem, ic_error *err)
+{
+    const int self = ic_problem_is_self(problem);
+    return ic_pair_new(pair, ic_problem_surface(problem, 0),
+                       self ? NULL : ic_problem_surface(problem, 1), err);
+}
+
+ic_status ic_problem_trace(ic_trace_result **res, ic_pair **pair, const ic_problem *problem,
+                           double tol, int depth, double time_limit, double fit_tol,
+                           ic_error *err)
+{
+    if (!res || !pair || !problem)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "ic_problem_trace: NULL argument");
+    *res = NULL;
+    *pair = NULL;
+    if (!(tol > 0 && tol <= MAX_REL_TOL))
+        return ic_error_set(err, IC_ERR_INVALID, 0, "tol %g is not in (0, %g]", tol, MAX_REL_TOL);
+    if (!(fit_tol >= 0 && fit_tol <= MAX_REL_TOL))
+        return ic_error_set(err, IC_ERR_INVALID, 0, "fit_tol %g is not in [0, %g]", fit_tol,
+                            MAX_REL_TOL);
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    opt.tol = tol;
+    opt.depth = depth;
+    opt.time_limit = time_limit;
+    opt.has_box = ic_problem_box(problem, opt.box);
+    ic_status st = problem_pair(pair, problem, err);
+    if (st == IC_OK)
+        st = ic_trace(res, *pair, &opt, err);
+    if (st == IC_OK && fit_tol > 0)
+        st = ic_trace_fit(*res, *pair, fit_tol, err);
+    if (st != IC_OK) {
+        ic_trace_result_free(*res);
+        ic_pair_free(*pair);
+        *res = NULL;
+        *pair = NULL;
+    }
+    return st;
+}
+
+/* What a document writer needs, to be printed into a memory stream. */
+typedef struct {
+    const ic_trace_result *trace;
+    const ic_local_result *point;
+    const ic_pair *pair;
+    int order;
+} document;
+
+/* Prints the document into a NUL-terminated text the caller frees. */
+static ic_status write_memory(char **json, size_t *len, const document *d, ic_error *err)
+{
+    size_t size = 0;
+    FILE *mem = open_memstream(json, &size);
+    if (!mem) {
+        *json = NULL;
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory for the document");
+    }
+    ic_status st = d->trace ? ic_trace_write_json(mem, d->trace, d->pair, err)
+                            : ic_local_write_json(mem, d->point, d->pair, d->order, err);
+    /* a memory stream fails only for want of memory */
+    if (fclose(mem) != 0 || st == IC_ERR_IO)
+        st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory for the document");
+    if (st != IC_OK) {
+        free(*json);
+        *json = NULL;
+        return st;
+    }
+    if (len)
+        *len = size;
+    return IC_OK;
+}
+
+ic_status ic_trace_json_alloc(char **json, size_t *len, const ic_trace_result *res,
+                              const ic_pair *pair, ic_error *err)
+{
+    if (!json || !res || !pair)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "ic_trace_json_alloc: NULL argument");
+    const document d = {res, NULL, pair, 0};
+    return write_memory(json, len, &d, err);
+}
+
+ic_status ic_problem_point_json(char **json, size_t *len, const ic_problem *problem,
+                                const double *values, int count, int by_params, int order,
+                                const char *method, double point_tol, ic_error *err)
+{
+    if (!json || !problem || !values || !method)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "ic_problem_point_json: NULL argument");
+    *json = NULL;
+    const int m = ic_method_from_name(method);
+    if (m < 0)
+        return ic_error_set(err, IC_ERR_INVALID, 0,
+                            "unknown method '%.40s': auto, jet, closed-form, perturbation or "
+                            "height-difference",
+                            method);
+    if (!(point_tol > 0))
+        return ic_error_set(err, IC_ERR_INVALID, 0, "point_tol %g is not positive", point_tol);
+    ic_local_options opt;
+    ic_local_defaults(&opt);
+    opt.point_tol = point_tol;
+    ic_pair *pair = NULL;
+    ic_status st = problem_pair(&pair, problem, err);
+    ic_local_point pt;
+    if (st == IC_OK)
+        st = ic_local_find(pair, &pt, values, count, by_params, &opt, err);
+    ic_local_result *res = st == IC_OK ? malloc(sizeof *res) : NULL; /* a large record */
+    if (st == IC_OK && !res)
+        st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory for the point's analysis");
+    if (st == IC_OK)
+        st = ic_local_apparatus(pair, res, &pt, order, (ic_method)m, &opt, err);
+    if (st == IC_OK) {
+        const document d = {NULL, res, pair, order};
+        st = write_memory(json, len, &d, err);
+    }
+    free(res);
+    ic_pair_free(pair);
+    return st;
+}
+
+ic_status ic_problem_plot(const char *path, const ic_problem *problem, const ic_trace_result *res,
+                          int width, int height, double azimuth, double elevation, int frames,
+                          int chart, int mesh, ic_error *err)
+{
+    if (!path || !problem)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "ic_problem_plot: NULL argument");
+    if (frames < 0 || frames > MAX_FRAMES || mesh < MIN_MESH || mesh > MAX_MESH)
+        return ic_error_set(err, IC_ERR_INVALID, 0,
+                            "frames %d is not in 0..%d, or mesh %d not in %d..%d", frames,
+                            MAX_FRAMES, mesh, MIN_MESH, MAX_MESH);
+    if (!isfinite(azimuth) || !isfinite(elevation))
+        return ic_error_set(err, IC_ERR_INVALID, 0, "the view's angles must be finite");
+    ic_plot_options po;
+    ic_plot_defaults(&po);
+    po.width = width;
+    po.height = height;
+    po.azimuth = azimuth;
+    po.elevation = elevation;
+    po.frames = frames;
+    po.chart = chart != 0;
+    po.mesh = mesh;
+    ic_plot_scene scene;
+    ic_plot_scene_of_problem(&scene, problem, res);
+    return ic_plot_write(path, &scene, &po, err);
+}

@@ -13,6 +13,7 @@
 
 #include <string.h>
 
+#include "tacnode_parabolas.h"
 #include "traced_example.h"
 
 /* relative: lengths of curves that avoid the parametric poles (measured
@@ -442,6 +443,12 @@ static void test_polynomial_kinds(const char *dir)
                      dist3(sp->xyz, origin) <= TIER_LOCATED;
         }
         CHECK(found, "%s: no exact %s at the origin", cases[k].nurbs, cases[k].kind);
+        for (int c = 0; cases[k].type == IC_POINT_TACNODE && c < n; c++) {
+            const ic_trace_curve *tc = ic_trace_result_curve(t.res, c);
+            const double ek = tacnode_kappa_error(tc, tacnode_parabola_of(tc));
+            CHECK(ek <= TACNODE_KAPPA_REL, "%s curve %d: kappa %g off at a traced point",
+                  cases[k].nurbs, c, ek);
+        }
         if (cases[k].type == IC_POINT_CUSP && n == 2 &&
             trace_example(&f, dir, cases[k].formula) == 0) {
             int used[8] = {0};

@@ -10,6 +10,7 @@
 #include "curve_lengths.h"
 #include "harness.h"
 #include "intercurve.h"
+#include "tacnode_parabolas.h"
 #include "traced_example.h"
 
 #define PI_L 3.14159265358979323846264338327950288L
@@ -93,6 +94,8 @@ static void check_tacnode(const traced *t)
             }
         }
         CHECK(through, "tacnode curve %d passes through the tacnode", i);
+        const double ek = tacnode_kappa_error(c, k == 0 ? 1.5 : -0.5);
+        CHECK(ek <= TACNODE_KAPPA_REL, "tacnode curve %d: kappa %g off at a traced point", i, ek);
     }
     printf("%-24s 2 parabolas through the tacnode, length error %.2g\n", "tacnode", worst);
 }

@@ -377,33 +377,51 @@ static double implicit_distance(ic_surface *S, const ic_jet_space *sp3, const do
 }
 
 /* The distance from X to a parametric sheet near uv: Gauss-Newton on
- * |R(u, v) - X|^2 from uv (a sheet without a pcurve: its nearest node's
- * parameters), a few steps. */
+ * |R(u, v) - X|^2 from uv (a sheet without a pcurve: the parameters the
+ * stretch's end points give its middle), a few steps. Every |R(u, v) - X|
+ * met bounds the distance from above: the least is returned, so a step
+ * that goes astray (near a degenerate point) never makes the fit look
+ * better or worse than a point of the sheet shows. */
 static double sheet_distance(ic_surface *S, const ic_jet_space *sp2, const double X[3],
                              const double uv0[2])
 {
-    double uv[2] = {uv0[0], uv0[1]}, d[3] = {0, 0, 0};
+    double uv[2] = {uv0[0], uv0[1]}, least = INFINITY;
     for (int it = 0; it < 8; it++) {
-        double t[9];
+        double t[9], d[3];
         if (ic_surface_taylor(S, t, uv, sp2, NULL) != IC_OK)
-            return -1;
+            break;
         const double Ru[3] = {t[1], t[4], t[7]}, Rv[3] = {t[2], t[5], t[8]};
         for (int k = 0; k < 3; k++)
             d[k] = t[3 * k] - X[k];
+        least = fmin(least, ic_norm3(d));
         const double E = ic_dot3(Ru, Ru), F = ic_dot3(Ru, Rv), G = ic_dot3(Rv, Rv);
         const double a = ic_dot3(Ru, d), b = ic_dot3(Rv, d), det = E * G - F * F;
         if (!(det > 0))
             break;
         uv[0] -= (G * a - F * b) / det, uv[1] -= (E * b - F * a) / det;
     }
-    return ic_norm3(d);
+    return isfinite(least) ? least : -1;
 }
 
-/* The fitted curve's point at s against both surfaces: its distance to each
- * (through a pcurve's image where the sheet has one). -1 where it cannot be
- * measured. */
-static double check_at(ic_pair *pair, const ic_curve_fit *f, const ic_trace_point *near, double s,
-                       const ic_jet_space *sp[2])
+/* Sheet k's parameters at the middle of the stretch from a to b: the mean
+ * of theirs, across a periodic seam by the nearer representative. */
+static void middle_params(ic_surface *S, const ic_trace_point *a, const ic_trace_point *b, int k,
+                          double uv[2])
+{
+    double dom[2][2];
+    int periodic[2];
+    ic_surface_get_domain(S, dom, periodic);
+    for (int i = 0; i < 2; i++) {
+        const double period = periodic[i] ? dom[i][1] - dom[i][0] : 0;
+        uv[i] = 0.5 * (a->params[k][i] + unwrap(b->params[k][i], a->params[k][i], period));
+    }
+}
+
+/* The fitted curve's point at s, the middle of the stretch from point a to
+ * point b, against both surfaces: its distance to each (through a pcurve's
+ * image where the sheet has one). -1 where it cannot be measured. */
+static double check_at(ic_pair *pair, const ic_curve_fit *f, const ic_trace_point *a,
+                       const ic_trace_point *b, double s, const ic_jet_space *sp[2])
 {
     double X[3], worst = 0;
     if (ic_bspline_eval(&f->curve, s, 0, X, NULL) != IC_OK)
@@ -415,8 +433,10 @@ static double check_at(ic_pair *pair, const ic_curve_fit *f, const ic_trace_poin
             e = implicit_distance(S, sp[1], X);
         else if (f->pcurves[k].ncontrol)
             e = pcurve_off(pair, f, k, s, X, uv);
-        else
-            e = sheet_distance(S, sp[0], X, near->params[k]);
+        else {
+            middle_params(S, a, b, k, uv);
+            e = sheet_distance(S, sp[0], X, uv);
+        }
         if (e < 0)
             return -1;
         worst = fmax(worst, e);
@@ -438,8 +458,8 @@ static ic_status check_fit(ic_pair *pair, ic_curve_fit *f, const ic_trace_curve 
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory checking a curve's fit");
     }
     for (int k = 0; k + 1 < n; k++) {
-        const ic_trace_point *near = &c->points[source[k]];
-        const double e = check_at(pair, f, near, 0.5 * (nodes[k].s + nodes[k + 1].s),
+        const double e = check_at(pair, f, &c->points[source[k]], &c->points[source[k + 1]],
+                                  0.5 * (nodes[k].s + nodes[k + 1].s),
                                   (const ic_jet_space **)sp);
         if (e < 0) /* no corrected point there: unchecked, said by checks */
             continue;

@@ -179,7 +179,7 @@ void ic_trace_refit_near_special(ic_trace_point *pts, int n, const ic_branch *br
                 for (int c = 0; c < 3; c++)
                     D[j - 1][c] += f * br->derivs[j + i - 1][c];
                 if (j == 3 && j + i == K)
-                    last = f * ic_norm3(br->derivs[K - 1]);
+                    last = fabs(f) * ic_norm3(br->derivs[K - 1]);
                 f *= sb / (i + 1);
             }
             if (j % 2 == 1 && sg < 0) /* c^(j) of the curve = sg^j c^(j) of the branch */

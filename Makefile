@@ -1,6 +1,7 @@
 # intercurve: the commands for people. CMake does the building underneath.
 #   make          build (build/)
-#   make test     install missing Debian packages, build with warnings as errors, run every test
+#   make test     install missing Debian packages and web/'s npm packages, build with
+#                 warnings as errors, run every test (the browser test too)
 #   make demo     run the main job on a bundled example (writes demo.png)
 #   make gallery  draw every bundled example into docs/gallery/
 #   make bench    build and run the benchmarks
@@ -15,7 +16,11 @@ PREFIX ?= /usr/local
 FUZZ_SECONDS ?= 60
 CMAKE_FLAGS ?=
 # g++: the test that the headers work from C++ (tests/test_cxx.cpp)
-DEB_PACKAGES = cmake pkg-config g++ libcjson-dev libcairo2-dev libxml2-dev poppler-utils
+# chromium: the browser test of the interactive page (tests/browser, docs/testing.md)
+DEB_PACKAGES = cmake pkg-config g++ libcjson-dev libcairo2-dev libxml2-dev poppler-utils chromium
+# node and npm for that page (three.js) and its test (playwright-core), from
+# Debian only where there is no npm already (NodeSource's nodejs has its own)
+WEB_DEB_PACKAGES = $(if $(shell command -v npm 2>/dev/null),,nodejs npm)
 # more, for one run: .ci/run adds clang
 EXTRA_DEB_PACKAGES ?=
 # the peers of `make bench-peers` (docs/peers.md), never needed by the build or CI
@@ -36,10 +41,10 @@ all: configure
 # CMake says what it cannot find.
 deps:
 	@if ! command -v dpkg-query >/dev/null 2>&1 || ! command -v apt-get >/dev/null 2>&1; then \
-	  echo "not a Debian system: the build needs $(DEB_PACKAGES) $(EXTRA_DEB_PACKAGES) (or your system's equivalents)"; \
+	  echo "not a Debian system: the build needs $(DEB_PACKAGES) $(WEB_DEB_PACKAGES) $(EXTRA_DEB_PACKAGES) (or your system's equivalents)"; \
 	  exit 0; \
 	fi; \
-	missing=""; for p in $(DEB_PACKAGES) $(EXTRA_DEB_PACKAGES); do \
+	missing=""; for p in $(DEB_PACKAGES) $(WEB_DEB_PACKAGES) $(EXTRA_DEB_PACKAGES); do \
 	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
 	done; \
 	if [ -n "$$missing" ]; then \
@@ -47,6 +52,16 @@ deps:
 	  if [ "$$(id -u)" = 0 ]; then SUDO=""; else SUDO=sudo; fi; \
 	  $$SUDO apt-get update -qq && $$SUDO env DEBIAN_FRONTEND=noninteractive \
 	    apt-get install -y -qq -o DPkg::Lock::Timeout=$(APT_LOCK_WAIT) $$missing; \
+	fi
+	@# three.js and playwright-core as web/package-lock.json pins them, when
+	@# web/node_modules is missing or older than the lock file (docs/plots.md)
+	@if [ ! -f web/node_modules/.package-lock.json ] || \
+	    [ web/package-lock.json -nt web/node_modules/.package-lock.json ]; then \
+	  if command -v npm >/dev/null 2>&1; then \
+	    echo "npm ci in web/"; (cd web && npm ci --no-audit --no-fund); \
+	  else \
+	    echo "no npm: the interactive page (.html) and its test need 'npm ci' in web/"; \
+	  fi; \
 	fi
 
 configure: deps

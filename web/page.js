@@ -22,6 +22,9 @@ const ARROW_BOX = 0.08;
 const ARROW_CURVE = 0.2;
 const MARKER_SIZE = 0.012; // fraction of the region's diagonal: singular points, hover mark
 const CURVE_POINT_PX = 3; // CSS pixels: the traced points drawn along the curves
+const LINE_STEP_PX = 0.5; // CSS pixels: the vertices of a curve's line drawn at least this far apart
+const DOT_STEP_PX = 2; // CSS pixels: its dots drawn at least this far apart
+const DETAIL_CHANGE = 1.25; // the drawn vertices are chosen anew when the zoom changed by this factor
 const HOVER_RADIUS_PX = 12; // CSS pixels: a traced point this close to the pointer is picked
 const GRID_CELL_PX = 16; // CSS pixels: a cell of the screen grid the projected points are sorted into
 const DIGITS = 10; // significant digits of the values shown
@@ -73,7 +76,7 @@ const box = sceneData.box;
 const centre = new THREE.Vector3(...box.map((r) => 0.5 * (r[0] + r[1])));
 const diagonal = Math.hypot(...box.map((r) => r[1] - r[0]));
 const view = document.getElementById('ic-view');
-const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+const renderer = new THREE.WebGLRenderer({ antialias: false, preserveDrawingBuffer: true });
 renderer.setPixelRatio(window.devicePixelRatio);
 renderer.setClearColor(0xffffff, 1);
 view.prepend(renderer.domElement);
@@ -100,17 +103,39 @@ scene.add(new THREE.Box3Helper(new THREE.Box3(
   new THREE.Vector3(box[0][0], box[1][0], box[2][0]),
   new THREE.Vector3(box[0][1], box[1][1], box[2][1])), 0xb0b0b0));
 
+// A mesh whose triangles come as three separate vertices each, with each
+// vertex stored once and the triangles indexing them: software rendering
+// then transforms a sixth of the vertices.
+function sharedVertices(positions) {
+  const seen = new Map(), unique = [], index = new Uint32Array(positions.length / 3);
+  for (let v = 0; v < index.length; v++) {
+    const x = positions[3 * v], y = positions[3 * v + 1], z = positions[3 * v + 2];
+    const key = x + ',' + y + ',' + z;
+    let i = seen.get(key);
+    if (i === undefined) {
+      i = unique.length / 3;
+      seen.set(key, i);
+      unique.push(x, y, z);
+    }
+    index[v] = i;
+  }
+  const g = new THREE.BufferGeometry();
+  g.setAttribute('position', new THREE.Float32BufferAttribute(unique, 3));
+  g.setIndex(new THREE.BufferAttribute(index, 1));
+  return g;
+}
+
 const surfaces = new THREE.Group();
 for (const m of sceneData.meshes) {
   if (m.positions.length === 0) continue;
-  const g = new THREE.BufferGeometry();
-  g.setAttribute('position', new THREE.Float32BufferAttribute(m.positions, 3));
-  g.computeVertexNormals(); // per triangle: the vertices are not shared
+  const g = sharedVertices(m.positions);
+  g.computeVertexNormals(); // smooth: averaged over the triangles around a vertex
   const material = new THREE.MeshLambertMaterial({
     color: srgb(SURFACE_RGB[m.surface]), transparent: true,
     opacity: SURFACE_OPACITY, side: THREE.DoubleSide, depthWrite: false,
     // pushed back a little: a curve lying on the surface is not dimmed by it
     polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1,
+    forceSinglePass: true, // both sides in one pass: half the work of software rendering
   });
   surfaces.add(new THREE.Mesh(g, material));
 }
@@ -119,6 +144,7 @@ scene.add(surfaces);
 // ---- the curves, coloured by curvature
 const kappaRange = valueRange('kappa');
 const tauRange = valueRange('tau');
+const curveViews = []; // per curve: arc lengths, the line's and the dots' geometry
 let npoints = 0;
 for (const c of curves) npoints += c.points.length;
 // every traced point in one list: its curve, its index and where it is
@@ -138,16 +164,55 @@ const pointXyz = new Float64Array(3 * npoints);
       col[3 * k] = lin.r; col[3 * k + 1] = lin.g; col[3 * k + 2] = lin.b;
       g++;
     });
-    const geometry = new THREE.BufferGeometry();
-    geometry.setAttribute('position', new THREE.BufferAttribute(pos, 3));
-    geometry.setAttribute('color', new THREE.BufferAttribute(col, 3));
+    const position = new THREE.BufferAttribute(pos, 3), color = new THREE.BufferAttribute(col, 3);
+    const view = (n) => {
+      const geometry = new THREE.BufferGeometry();
+      geometry.setAttribute('position', position);
+      geometry.setAttribute('color', color);
+      geometry.setIndex(new THREE.BufferAttribute(new Uint32Array(n), 1));
+      return geometry;
+    };
+    const line = view(c.points.length), dots = view(c.points.length);
     const material = new THREE.LineBasicMaterial({ vertexColors: true });
-    scene.add(c.closed ? new THREE.LineLoop(geometry, material) : new THREE.Line(geometry, material));
+    scene.add(c.closed ? new THREE.LineLoop(line, material) : new THREE.Line(line, material));
     // WebGL draws lines 1 px wide: the points drawn over them make the curve
     // thicker where they are dense and show where they are
-    scene.add(new THREE.Points(geometry, new THREE.PointsMaterial({
+    scene.add(new THREE.Points(dots, new THREE.PointsMaterial({
       vertexColors: true, size: CURVE_POINT_PX, sizeAttenuation: false })));
+    curveViews.push({ s: Float64Array.from(c.points, (p) => p.s), line, dots });
   });
+}
+
+// The vertices drawn: of a long trace, only points at least `step` apart in
+// arc length (and the ends), so that the view draws about what the screen
+// can show (LINE_STEP_PX and DOT_STEP_PX apart) whatever the trace's length;
+// remade when the zoom changed by a quarter. The search of the point
+// pointed at uses every point.
+function thin(geometry, s, step) {
+  const index = geometry.index.array;
+  let m = 0, last = -Infinity;
+  for (let k = 0; k < s.length; k++) {
+    if (s[k] - last >= step || k === s.length - 1) {
+      index[m++] = k;
+      last = s[k];
+    }
+  }
+  geometry.index.needsUpdate = true;
+  geometry.setDrawRange(0, m);
+}
+
+let detailScale = 0; // pixels per unit length the drawn vertices were chosen for
+function updateDetail() {
+  const d = camera.position.distanceTo(controls.target);
+  // the scale at the nearest the curves can be: the front of the region
+  const near = Math.max(d - 0.5 * diagonal, 0.1 * d);
+  const scale = renderer.domElement.clientHeight / (2 * near * Math.tan(THREE.MathUtils.degToRad(camera.fov / 2)));
+  if (detailScale > 0 && Math.abs(Math.log(scale / detailScale)) < Math.log(DETAIL_CHANGE)) return;
+  detailScale = scale;
+  for (const v of curveViews) {
+    thin(v.line, v.s, LINE_STEP_PX / scale);
+    thin(v.dots, v.s, DOT_STEP_PX / scale);
+  }
 }
 
 // ---- Frenet frames at points equally spaced in arc length over all curves
@@ -457,6 +522,7 @@ function animate() {
   }
   if (!needsRender) return;
   needsRender = false;
+  updateDetail();
   placeLabels();
   renderer.render(scene, camera);
   framesDrawn++;

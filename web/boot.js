@@ -1,7 +1,7 @@
 // The page's bootstrap (docs/plots.md, "The interactive page"): three.js
-// and the page's module are held as text in <script type="text/plain">
-// elements, so that the one file opens offline; each becomes a module
-// (a blob URL), its imports pointed at the others' URLs.
+// and the page's module are held as text, in script elements of type
+// text/plain, so that the one file opens offline; each becomes a module (a
+// blob URL), its imports pointed at the others' URLs.
 (function () {
   'use strict';
   function fail(e) {

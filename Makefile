@@ -5,6 +5,8 @@
 #   make demo     run the main job on a bundled example (writes demo.png)
 #   make gallery  draw every bundled example into docs/gallery/
 #   make bench    build and run the benchmarks
+#   make bench-page  the interactive page's frames per second for 100,000 points in
+#                 headless Chromium (docs/plots.md)
 #   make bench-peers  install OpenCASCADE and SISL, run the benchmark against them
 #                 (docs/peers.md)
 #   make install  install both libraries, headers, pkg-config file, CMake package and
@@ -31,7 +33,7 @@ PEERS_TIMEOUT ?= 60
 # seconds apt-get waits for a dpkg lock another install holds
 APT_LOCK_WAIT ?= 600
 
-.PHONY: all deps configure test demo gallery bench bench-peers install fuzz sanitize clean
+.PHONY: all deps configure test demo gallery bench bench-page bench-peers install fuzz sanitize clean
 
 all: configure
 	cmake --build $(BUILD) -j2
@@ -102,6 +104,11 @@ bench: configure
 	./$(BUILD)/bench/bench_local
 	./$(BUILD)/bench/bench_trace examples
 	./$(BUILD)/bench/bench_torture .
+
+bench-page: configure
+	cmake -S . -B $(BUILD) -DIC_BUILD_BENCH=ON >/dev/null
+	cmake --build $(BUILD) -j2 --target bench_page_trace
+	node bench/bench_page.mjs $(BUILD)
 
 # intercurve, OpenCASCADE and SISL on the same exact NURBS (docs/peers.md):
 # their Debian packages installed when missing, a build of its own, the

@@ -487,7 +487,27 @@ document.getElementById('ic-download').addEventListener('click', () => {
 // ---- drawing: only when something changed
 let needsRender = true;
 let framesDrawn = 0;
-controls.addEventListener('change', () => { needsRender = true; picker.dirty = true; });
+// While the view moves it is drawn at MOVING_RESOLUTION of the full one in
+// each direction (half the pixels: software rendering spends its time on
+// the translucent surfaces' pixels), and again in full SETTLE_MS after the
+// last move.
+const MOVING_RESOLUTION = 0.7;
+const SETTLE_MS = 200;
+const motion = { adaptive: true, moving: false, timer: 0 };
+function moved() {
+  if (!motion.adaptive) return;
+  if (!motion.moving) {
+    motion.moving = true;
+    renderer.setPixelRatio(window.devicePixelRatio * MOVING_RESOLUTION);
+  }
+  clearTimeout(motion.timer);
+  motion.timer = setTimeout(() => {
+    motion.moving = false;
+    renderer.setPixelRatio(window.devicePixelRatio);
+    needsRender = true;
+  }, SETTLE_MS);
+}
+controls.addEventListener('change', () => { needsRender = true; picker.dirty = true; moved(); });
 
 function resize() {
   const w = view.clientWidth, h = view.clientHeight;
@@ -545,5 +565,7 @@ window.intercurveScene = {
     return { x: r.left + (v.x + 1) * 0.5 * r.width, y: r.top + (1 - v.y) * 0.5 * r.height };
   },
   setAutoRotate(on) { controls.autoRotate = on; controls.autoRotateSpeed = 30; },
+  // on (the default): drawn coarser while the view moves
+  setAdaptive(on) { motion.adaptive = on; },
   showFrames(on) { frames.visible = on; needsRender = true; },
 };

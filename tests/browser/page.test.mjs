@@ -2,11 +2,12 @@
 // page"; docs/testing.md): Debian's Chromium, headless with software
 // WebGL, driven by playwright-core from web/node_modules.
 //   node tests/browser/page.test.mjs BUILD_DIR SOURCE_DIR
-// Exit 0 when every check passes, 1 otherwise, 77 (ctest: skipped) when
+// Then every bundled example's page must load without error, drawn and
+// labelled. Exit 0 when every check passes, 1 otherwise, 77 (ctest: skipped) when
 // Chromium or web/node_modules is missing. Writes BUILD_DIR/tests/browser/
 // page.png, the screenshot docs/interactive-page.png is a copy of.
 import { execFileSync } from 'node:child_process';
-import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
@@ -184,6 +185,20 @@ try {
   check('its trace read whole', (await h.page.evaluate(() => window.intercurveScene.points)) ===
     traced.curves.reduce((a, c) => a + c.points.length, 0));
   check('no console error or page error (hostile title)', h.errors.length === 0, h.errors.join(' | '));
+
+  // ---- every bundled example's page: loads without error, drawn, labelled
+  for (const name of readdirSync(join(source, 'examples')).filter((f) => f.endsWith('.json'))) {
+    const out = join(tmp, name.replace(/\.json$/, '.html'));
+    run('plot', join(source, 'examples', name), '-o', out);
+    const e = await open(out);
+    const ink = await canvasPixels(e.page, [0, 0, 0]);
+    check(`${name}: drawn`, ink.ink > INK_FRACTION * ink.total, `${ink.ink} of ${ink.total} pixels`);
+    const [nlabels, nspecials] = await e.page.evaluate(() => [document.querySelectorAll('.ic-label').length,
+      JSON.parse(document.getElementById('ic-trace').textContent).points.length]);
+    check(`${name}: a label per singular point`, nlabels === nspecials, `${nlabels} labels, ${nspecials} points`);
+    check(`${name}: no console error or page error`, e.errors.length === 0, e.errors.join(' | '));
+    await e.page.close();
+  }
 } catch (e) {
   check('the browser test ran', false, e.stack || String(e));
 } finally {

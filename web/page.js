@@ -461,6 +461,17 @@ function showPoint(g) {
   markChart(p);
 }
 
+// Nothing traced: said where the values would go, with what was not
+// proven (as the pictures say it).
+if (trace.report && curves.length === 0 && specials.length === 0) {
+  const r = trace.report;
+  info.textContent = 'no intersection';
+  if (!r.exclusion_proven || r.uncovered_cells > 0 || r.unproven_cells > 0)
+    info.textContent += `\nfound: not proven (${r.exclusion_proven ? '' : 'sampled only, '}` +
+      `${r.uncovered_cells} cells uncovered, ${r.unproven_cells} unproven)`;
+  info.classList.add('ic-none');
+}
+
 renderer.domElement.addEventListener('pointermove', (e) => {
   const r = renderer.domElement.getBoundingClientRect();
   Object.assign(hover, { x: e.clientX - r.left, y: e.clientY - r.top, moved: true });

@@ -186,6 +186,20 @@ try {
     traced.curves.reduce((a, c) => a + c.points.length, 0));
   check('no console error or page error (hostile title)', h.errors.length === 0, h.errors.join(' | '));
 
+  // ---- nothing to trace: two spheres apart
+  writeFileSync(join(tmp, 'apart.json'), JSON.stringify({
+    title: 'two spheres apart',
+    surfaces: [{ name: 'a', type: 'implicit', f: 'x^2 + y^2 + z^2 - 1' },
+      { name: 'b', type: 'implicit', f: '(x - 3)^2 + y^2 + z^2 - 1' }],
+    box: [[-1.5, 4.5], [-1.5, 1.5], [-1.5, 1.5]],
+  }));
+  run('plot', join(tmp, 'apart.json'), '-o', join(tmp, 'apart.html'), '--mesh', '12');
+  const apart = await open(join(tmp, 'apart.html'));
+  const said = await apart.page.textContent('#ic-info');
+  check('two spheres apart: "no intersection"', said.startsWith('no intersection'), said);
+  check('no console error or page error (apart)', apart.errors.length === 0, apart.errors.join(' | '));
+  await apart.page.close();
+
   // ---- every bundled example's page: loads without error, drawn, labelled
   for (const name of readdirSync(join(source, 'examples')).filter((f) => f.endsWith('.json'))) {
     const out = join(tmp, name.replace(/\.json$/, '.html'));

@@ -104,8 +104,8 @@ scene.add(new THREE.Box3Helper(new THREE.Box3(
   new THREE.Vector3(box[0][1], box[1][1], box[2][1])), 0xb0b0b0));
 
 // A mesh whose triangles come as three separate vertices each, with each
-// vertex stored once and the triangles indexing them: software rendering
-// then transforms a sixth of the vertices.
+// vertex stored once and the triangles indexing them, so that its normal is
+// the average over the triangles around it (smooth shading).
 function sharedVertices(positions) {
   const seen = new Map(), unique = [], index = new Uint32Array(positions.length / 3);
   for (let v = 0; v < index.length; v++) {

@@ -5,8 +5,8 @@
 // bench_page_trace writes the page; the view then turns (OrbitControls'
 // auto-rotation, so every frame is drawn anew) while the pointer sweeps the
 // view (the nearest-point search after every camera move), for SECONDS,
-// once as the page is (drawn coarser while the view moves) and once always
-// at full resolution. Prints the page's size, its load time, the frames
+// once as the page is (drawn coarser while the view moves), once always
+// at full resolution, and once so without the surfaces. Prints the page's size, its load time, the frames
 // drawn per second of each and the machine's load average.
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, rmSync, statSync } from 'node:fs';
@@ -61,6 +61,10 @@ try {
     console.log(`${fps.toFixed(1)} frames per second while turning and pointing, ` +
       (adaptive ? 'drawn coarser while moving (the page as it is)' : 'always at full resolution'));
   }
+  // what the curve costs without the surfaces' translucent pixels
+  await tab.click('#ic-show-surfaces');
+  console.log(`${(await framesPerSecond(tab)).toFixed(1)} frames per second at full resolution ` +
+    'with the surfaces switched off');
   console.log(`load average ${loadavg().map((x) => x.toFixed(2)).join(' ')} on this machine`);
 } finally {
   await browser.close();

@@ -168,8 +168,9 @@ try {
   // the Frenet frames: off at first, in t's colour once switched on
   const T_RGB = [214, 39, 40]; // web/page.js FRAME_RGB.t
   const before = await canvasPixels(page, T_RGB);
+  const drawn = await page.evaluate(() => window.intercurveScene.framesDrawn);
   await page.check('#ic-show-frames');
-  await page.waitForTimeout(200);
+  await page.waitForFunction((n) => window.intercurveScene.framesDrawn > n, drawn, { timeout: 5000 });
   const after = await canvasPixels(page, T_RGB);
   check('frames switched on draw t', after.near > before.near + 50, `${before.near} -> ${after.near} pixels`);
 

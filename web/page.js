@@ -103,33 +103,14 @@ scene.add(new THREE.Box3Helper(new THREE.Box3(
   new THREE.Vector3(box[0][0], box[1][0], box[2][0]),
   new THREE.Vector3(box[0][1], box[1][1], box[2][1])), 0xb0b0b0));
 
-// A mesh whose triangles come as three separate vertices each, with each
-// vertex stored once and the triangles indexing them, so that its normal is
-// the average over the triangles around it (smooth shading).
-function sharedVertices(positions) {
-  const seen = new Map(), unique = [], index = new Uint32Array(positions.length / 3);
-  for (let v = 0; v < index.length; v++) {
-    const x = positions[3 * v], y = positions[3 * v + 1], z = positions[3 * v + 2];
-    const key = x + ',' + y + ',' + z;
-    let i = seen.get(key);
-    if (i === undefined) {
-      i = unique.length / 3;
-      seen.set(key, i);
-      unique.push(x, y, z);
-    }
-    index[v] = i;
-  }
-  const g = new THREE.BufferGeometry();
-  g.setAttribute('position', new THREE.Float32BufferAttribute(unique, 3));
-  g.setIndex(new THREE.BufferAttribute(index, 1));
-  return g;
-}
-
 const surfaces = new THREE.Group();
 for (const m of sceneData.meshes) {
   if (m.positions.length === 0) continue;
-  const g = sharedVertices(m.positions);
-  g.computeVertexNormals(); // smooth: averaged over the triangles around a vertex
+  const g = new THREE.BufferGeometry();
+  g.setAttribute('position', new THREE.Float32BufferAttribute(m.positions, 3));
+  // flat: each triangle's own normal (marching tetrahedra do not orient
+  // neighbouring triangles alike, so averaged normals would cancel)
+  g.computeVertexNormals();
   const material = new THREE.MeshLambertMaterial({
     color: srgb(SURFACE_RGB[m.surface]), transparent: true,
     opacity: SURFACE_OPACITY, side: THREE.DoubleSide, depthWrite: false,

@@ -227,7 +227,7 @@ if command -v pdftotext >/dev/null 2>&1; then
     check "the figure of two spheres apart says 'no intersection'" $?
 fi
 expect_error 1 "plot $src/examples/viviani-implicit.json" "needs PROBLEM.json and -o FIGURE"
-expect_error 1 "plot $src/examples/viviani-implicit.json -o $pdir/v.gif" "use .svg, .png or .pdf"
+expect_error 1 "plot $src/examples/viviani-implicit.json -o $pdir/v.gif" "use .svg, .png, .pdf or .html"
 expect_error 1 "plot $src/examples/viviani-implicit.json -o $pdir/v.png --view 30" "--view expects"
 expect_error 1 "plot $src/examples/viviani-implicit.json -o $pdir/v.png --size 10x10" "--size expects"
 expect_error 1 "plot $src/examples/viviani-implicit.json -o $pdir/v.png --frames 1000" "--frames"

@@ -89,6 +89,7 @@ bench: configure
 	./$(BUILD)/bench/bench_local
 	./$(BUILD)/bench/bench_trace examples
 	./$(BUILD)/bench/bench_torture .
+	./$(BUILD)/bench/bench_json examples
 
 # intercurve, OpenCASCADE and SISL on the same exact NURBS (docs/peers.md):
 # their Debian packages installed when missing, a build of its own, the

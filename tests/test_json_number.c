@@ -2,7 +2,8 @@
  * the rule they replace: "%.15g" where it reads back to the number, else
  * "%.17g"; 0 for -0. Byte for byte, on numbers of every exponent, on exact
  * decimal ties at the 15th and 17th digit (glibc rounds them to even), on
- * the neighbours of powers of ten and of the %g switches to exponents. */
+ * the neighbours of powers of ten and of the %g switches to exponents, and
+ * on the tiny numbers that need 512-bit digits (io/json_wide.h). */
 #include <float.h>
 #include <stdint.h>
 #include <string.h>
@@ -72,6 +73,12 @@ int main(void)
         compare(x);
     }
     check("numbers of 1e-13 to 1e12");
+    for (int i = 0; i < 200000; i++) { /* rounding noise about zero: 512-bit digits */
+        const double x = ((double)(next(&state) >> 11) / 9007199254740992.0 - 0.5) *
+                         pow(10, -(int)(next(&state) % 180) - 17);
+        compare(x);
+    }
+    check("numbers of 1e-197 to 1e-17");
     /* integers of 16 and 18 digits ending in 5: exact ties at the 15th and
      * 17th significant digit (below 2^53 and 2^63 where exactly a double) */
     for (int64_t i = 0; i < 100000; i++) {
@@ -93,6 +100,15 @@ int main(void)
         compare(1.0000000000000005 * t);
     }
     check("powers of ten");
+    for (int p = -1074; p <= 1023; p++) { /* the ulp below a power of two is half as wide */
+        const double t = ldexp(1, p);
+        compare(t);
+        compare(-t);
+        compare(nextafter(t, 0));
+        compare(nextafter(t, INFINITY));
+        compare(3 * t);
+    }
+    check("powers of two");
     const double special[] = {1e-4, 9.99999999999999e-5, 1e-5, 1e15, 1e17, 123456789012345678.0,
                               DBL_MAX, DBL_MIN, DBL_TRUE_MIN, 0.1, 0.2, 0.3, 1.0 / 3, 3.141592653589793,
                               -0.0, 1, -1, 0.5, 2.5, 1e22, 1e23, 8.41e21, 5e-324};

@@ -2,11 +2,13 @@
  *
  * A double is m 2^e with an integer m < 2^53. Its P significant digits are
  * the integer nearest to y = m 2^e 10^k, k = P - 1 - X where X is the
- * decimal exponent; for the exponents met in practice (|k| <= 27, small
- * shifts) y's numerator fits 128 bits, so the rounding is exact, ties to
- * even as glibc rounds them. Every other number (and a compiler without
- * 128-bit integers) takes printf and strtod. */
+ * decimal exponent; for the exponents met in practice (|k| <= 32, small
+ * shifts) y's numerator fits 128 bits, for smaller numbers down to about
+ * 1e-180 512 bits (json_wide.c), so the rounding is exact, ties to even as
+ * glibc rounds them. Every other number (and a compiler without 128-bit
+ * integers) takes printf and strtod. */
 #include "io/json_number.h"
+#include "io/json_wide.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -83,10 +85,12 @@ static uint64_t scaled(uint64_t m, int e, int k)
 {
     if (k >= 0) {
         const u128 p5 = pow5_wide(k);
-        if (!p5)
-            return 0;
-        const u128 n = m * p5; /* below 2^128 */
         const int s = e + k;
+        if (!p5) { /* a tiny number: 512 bits */
+            int within = -1;
+            return s < 0 ? ic_json_wide_round(m, k, -s, &within) : 0;
+        }
+        const u128 n = m * p5; /* below 2^128 */
         if (s >= 0) /* an integer, and y < 10^18 where X is at most one off */
             return s < 64 && (n << s) >> s == n ? (uint64_t)(n << s) : 0;
         return s > -127 ? round_shift(n, -s) : 0;
@@ -111,25 +115,29 @@ static int x_is_high(uint64_t m, int e, int P, int x, uint64_t hi, uint64_t *dig
     return 1;
 }
 
-/* floor(log10(a)), or one less, for a = m 2^e: from the binary exponent,
- * then a comparison with an exact power of ten where there is one. */
+/* floor(log10(a)), perhaps one off, for a = m 2^e: from the binary
+ * exponent and a comparison with an exact power of ten where there is one,
+ * else from log10. */
 static int decimal_exponent(double a, int e)
 {
     const int binary = e + 52; /* 2^binary <= a < 2^(binary + 1) */
     int x = (int)floor(binary * 0.30102999566398120); /* log10(2) */
-    if (x + 1 >= 0 && x + 1 <= MAX_EXACT_POW10 && a >= pow10_exact[x + 1])
+    if (x + 1 < 0 || x + 1 > MAX_EXACT_POW10)
+        return (int)floor(log10(a)); /* far from 1: one off at most */
+    if (a >= pow10_exact[x + 1])
         x++;
     return x;
 }
 
-/* The P significant digits of a = m 2^e (positive, normal) as the integer *digits
+/* The P significant digits of a = m 2^e (positive, normal; x its decimal
+ * exponent or one off) as the integer *digits
  * and the decimal exponent *X of the rounded number; 0 where the exact
  * arithmetic cannot reach. */
-static int significant_digits(double a, uint64_t m, int e, int P, uint64_t *digits, int *X)
+static int significant_digits(uint64_t m, int e, int P, int x, uint64_t *digits, int *X)
 {
     const uint64_t lo = pow10_int[P - 1], hi = pow10_int[P]; /* lo <= digits < hi */
-    int x = decimal_exponent(a, e), high;
-    for (int tries = 0; tries < 3; tries++) { /* log10 may be one off */
+    int high;
+    for (int tries = 0; tries < 3; tries++) { /* the estimate x may be one off */
         const uint64_t d = scaled(m, e, P - 1 - x);
         if (d == 0)
             return 0;
@@ -151,13 +159,19 @@ static int significant_digits(double a, uint64_t m, int e, int P, uint64_t *digi
 
 /* Whether digits, the rounding of y = m 2^e 10^k (k >= 0, e + k < 0), is
  * within half an ulp of a = m 2^e, where strtod reads it back to a: in
- * units of 2^(e + k), y's numerator is n = m 5^k and half an ulp 5^k / 2.
- * -1 where it cannot tell (at a power of two, whose ulp below is half). */
+ * units of 2^(e + k), y's numerator is n = m 5^k and half an ulp 5^k / 2
+ * (5^k / 4 below a power of two: no power of two between 1e-18 and 1e-8
+ * has a 15-digit decimal in between, so only json_wide.c, below 1e-18,
+ * takes that case; here printf does). -1 where it cannot tell. */
 static int within_half_ulp(uint64_t m, int e, int k, uint64_t digits)
 {
     const int sh = -(e + k);
     const u128 p5 = pow5_wide(k);
-    if (!p5 || sh <= 0 || sh >= 127 || m == 1ULL << 52)
+    if (!p5 && sh > 0) { /* a tiny number: 512 bits */
+        int within = -1;
+        return ic_json_wide_round(m, k, sh, &within) == digits ? within : -1;
+    }
+    if (sh <= 0 || sh >= 127 || m == 1ULL << 52) /* powers of two: printf (34 numbers) */
         return -1;
     const u128 n = m * p5, q = n >> sh, r = n & (((u128)1 << sh) - 1);
     u128 dist;
@@ -204,7 +218,13 @@ static size_t g_format(char *out, int negative, uint64_t digits, int X, int P)
             memcpy(o, d + 1, (size_t)nd - 1);
             o += nd - 1;
         }
-        o += sprintf(o, "e%c%02d", X < 0 ? '-' : '+', abs(X));
+        *o++ = 'e';
+        *o++ = X < 0 ? '-' : '+';
+        const int ex = abs(X); /* at least two digits, as printf */
+        if (ex >= 100)
+            *o++ = (char)('0' + ex / 100);
+        *o++ = (char)('0' + ex / 10 % 10);
+        *o++ = (char)('0' + ex % 10);
     } else if (X >= 0) {
         memcpy(o, d, (size_t)X + 1);
         o += X + 1;
@@ -238,14 +258,14 @@ static size_t fast_text(char out[IC_JSON_NUMBER_MAX], double x)
     const int e = biased - 1075;
     uint64_t digits;
     int X;
-    if (!significant_digits(a, m, e, SHORT_DIGITS, &digits, &X))
+    if (!significant_digits(m, e, SHORT_DIGITS, decimal_exponent(a, e), &digits, &X))
         return 0;
     const int back = reads_back(a, m, e, digits, X, SHORT_DIGITS);
     if (back < 0)
         return 0;
     if (back)
         return g_format(out, x < 0, digits, X, SHORT_DIGITS);
-    if (!significant_digits(a, m, e, LONG_DIGITS, &digits, &X))
+    if (!significant_digits(m, e, LONG_DIGITS, X, &digits, &X)) /* X, or one less */
         return 0;
     return g_format(out, x < 0, digits, X, LONG_DIGITS);
 }

@@ -252,7 +252,7 @@ static size_t fast_text(char out[IC_JSON_NUMBER_MAX], double x)
     uint64_t bits;
     memcpy(&bits, &a, sizeof bits);
     const int biased = (int)(bits >> 52);
-    if (biased == 0) /* subnormal: printf */
+    if (biased == 0 || biased == 2047) /* subnormal, or not finite: printf */
         return 0;
     const uint64_t m = (bits & ((1ULL << 52) - 1)) | (1ULL << 52); /* a = m 2^e */
     const int e = biased - 1075;

@@ -106,6 +106,7 @@ bench: configure
 	./$(BUILD)/bench/bench_local
 	./$(BUILD)/bench/bench_trace examples
 	./$(BUILD)/bench/bench_torture .
+	./$(BUILD)/bench/bench_json examples
 
 bench-page: configure
 	cmake -S . -B $(BUILD) -DIC_BUILD_BENCH=ON >/dev/null

@@ -107,6 +107,7 @@ bench: configure
 	./$(BUILD)/bench/bench_trace examples
 	./$(BUILD)/bench/bench_torture .
 	./$(BUILD)/bench/bench_json examples
+	./$(BUILD)/bench/bench_memory examples
 
 bench-page: configure
 	cmake -S . -B $(BUILD) -DIC_BUILD_BENCH=ON >/dev/null

@@ -1,0 +1,57 @@
+/*
+ * Composition one degree at a time ("relaxed" composition): the degree-k
+ * part of P(delta_1, ..., delta_p) from the parts of degree < k of the deltas
+ * (and the degree-k part of the deltas through P's linear terms only).
+ *
+ * An algorithm that finds the degree-k coefficients of the deltas from the
+ * degree-k part of the composition (series reversion, the curve of the jet
+ * method, the heights at a tangential point) recomposed the whole series at
+ * every degree: O(K) compositions. The chain instead keeps every power
+ * product delta^alpha, 2 <= |alpha| <= deg, and extends each by one degree
+ * per step with the product rule
+ *     [delta^alpha]_k = sum_{j=1}^{k-|alpha|+1} [delta_v]_j [delta^(alpha - e_v)]_{k-j}
+ * (v the first variable of alpha; delta^(alpha - e_v) has no terms below
+ * degree |alpha| - 1): only parts of degree < k of the deltas enter, so the
+ * parts already computed are final (the on-line product of van der Hoeven,
+ * "Relax, but don't be too lazy", J. Symbolic Comput. 34 (2002), sec. 2,
+ * in its naive quadratic form). Every coefficient is then computed once.
+ *
+ * Usage: ic_jet_chain_init once, then for k = 1, 2, ... in order
+ * ic_jet_chain_extend(k) (the deltas final below degree k) and
+ * ic_jet_chain_part(k) for each polynomial P wanted.
+ */
+#ifndef IC_JET_CHAIN_H
+#define IC_JET_CHAIN_H
+
+#include "intercurve/jet.h"
+
+typedef struct {
+    const ic_jet_space *sp_p; /* P's space: p variables */
+    const ic_jet_space *sp;   /* the deltas' space */
+    int deg;                  /* the power products kept: degrees 2..deg */
+    const double *delta[IC_JET_MAX_VARS];
+    double *pw; /* their jets, one per monomial of sp_p of degree 2..deg */
+} ic_jet_chain;
+
+/* Highest degree with a nonzero coefficient of P (0 if none): the power
+ * products above it are never needed (a quadric's are of degree 2). */
+int ic_jet_support_degree(const double *P, const ic_jet_space *sp_p);
+
+/* Doubles of work a chain of P's space up to degree `deg` over sp needs. */
+size_t ic_jet_chain_len(const ic_jet_space *sp_p, int deg, const ic_jet_space *sp);
+
+/* Starts a chain: delta[i] are p jets of sp (their constant terms are
+ * ignored; they are read, never written, and may change between steps in
+ * the degrees not yet final); work holds ic_jet_chain_len doubles. */
+void ic_jet_chain_init(ic_jet_chain *ch, const ic_jet_space *sp_p, int deg,
+                       const double *const *delta, const ic_jet_space *sp, double *work);
+
+/* The degree-k parts of the power products (k >= 1, after steps 1..k-1). */
+void ic_jet_chain_extend(ic_jet_chain *ch, int k);
+
+/* out's degree-k part = [P(delta)]_k (P's constant term left out, its
+ * linear terms with the deltas' current degree-k parts); the rest of out is
+ * untouched. */
+void ic_jet_chain_part(const ic_jet_chain *ch, double *out, const double *P, int k);
+
+#endif

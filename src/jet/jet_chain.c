@@ -2,17 +2,29 @@
 #include "jet_chain.h"
 #include "jet_internal.h"
 
+#include <stdint.h>
 #include <string.h>
+
+/* Whether a degree's coefficients are all zero (either sign): an OR of
+ * their bits without the sign, which the compiler vectorises; the polynomials
+ * scanned are mostly zero above a low degree (quadrics, polynomials). */
+static int part_is_zero(const double *P, int i0, int i1)
+{
+    const uint64_t magnitude = ~((uint64_t)1 << 63);
+    uint64_t any = 0;
+    for (int i = i0; i < i1; i++) {
+        uint64_t bits;
+        memcpy(&bits, &P[i], sizeof bits);
+        any |= bits & magnitude;
+    }
+    return any == 0;
+}
 
 int ic_jet_support_degree(const double *P, const ic_jet_space *sp_p)
 {
-    for (int i = sp_p->n - 1; i > 0; i--)
-        if (P[i] != 0.0) {
-            int d = 1;
-            while (sp_p->deg_start[d + 1] <= i)
-                d++;
+    for (int d = sp_p->K; d > 0; d--)
+        if (!part_is_zero(P, sp_p->deg_start[d], sp_p->deg_start[d + 1]))
             return d;
-        }
     return 0;
 }
 
@@ -32,14 +44,44 @@ static size_t nonlinear_count(const ic_jet_space *sp_p, int deg)
     return deg < 2 ? 0 : (size_t)(sp_p->deg_start[deg + 1] - sp_p->deg_start[2]);
 }
 
-size_t ic_jet_chain_len(const ic_jet_space *sp_p, int deg, const ic_jet_space *sp)
+/* Doubles holding one byte per monomial of sp_p up to degree deg. */
+static size_t flag_len(const ic_jet_space *sp_p, int deg)
 {
-    return nonlinear_count(sp_p, chain_degree(sp_p, deg, sp)) * (size_t)sp->n;
+    return ((size_t)sp_p->deg_start[deg + 1] + sizeof(double) - 1) / sizeof(double);
 }
 
-void ic_jet_chain_init(ic_jet_chain *ch, const ic_jet_space *sp_p, int deg,
-                       const double *const *delta, const ic_jet_space *sp, double *work)
+size_t ic_jet_chain_len(const ic_jet_space *sp_p, int deg, const ic_jet_space *sp)
 {
+    deg = chain_degree(sp_p, deg, sp);
+    return nonlinear_count(sp_p, deg) * (size_t)sp->n + flag_len(sp_p, deg);
+}
+
+/* Marks the power products the polynomials' terms need, and the lower
+ * ones each is built from (from the top down: a monomial's lower one has a
+ * smaller index). */
+static void mark_needed(ic_jet_chain *ch, const double *const *P, int np)
+{
+    const ic_jet_space *sp_p = ch->sp_p;
+    const int top = sp_p->deg_start[ch->deg + 1];
+    memset(ch->need, 0, (size_t)top);
+    if (ch->deg < 2)
+        return;
+    for (int i = top - 1; i >= sp_p->deg_start[2]; i--) {
+        for (int q = 0; q < np && !ch->need[i]; q++)
+            ch->need[i] = P[q][i] != 0.0;
+        if (ch->need[i])
+            ch->need[sp_p->lower[i]] = 1;
+    }
+}
+
+void ic_jet_chain_init(ic_jet_chain *ch, const ic_jet_space *sp_p, const double *const *P,
+                       int np, const double *const *delta, const ic_jet_space *sp, double *work)
+{
+    int deg = 0;
+    for (int q = 0; q < np; q++) {
+        const int d = ic_jet_support_degree(P[q], sp_p);
+        deg = d > deg ? d : deg;
+    }
     ch->sp_p = sp_p;
     ch->sp = sp;
     ch->deg = chain_degree(sp_p, deg, sp);
@@ -49,6 +91,8 @@ void ic_jet_chain_init(ic_jet_chain *ch, const ic_jet_space *sp_p, int deg,
     const size_t len = nonlinear_count(sp_p, ch->deg) * (size_t)sp->n;
     if (len)
         memset(work, 0, len * sizeof *work);
+    ch->need = (unsigned char *)(work + len);
+    mark_needed(ch, P, np);
 }
 
 /* The jet of delta^alpha for monomial i of sp_p (degree 1: the delta). */
@@ -64,8 +108,7 @@ static const double *power(const ic_jet_chain *ch, int i)
 static void extend_one(ic_jet_chain *ch, int i, int d, int k)
 {
     const ic_jet_space *sp = ch->sp;
-    const int v = ch->sp_p->lower_var[i];
-    const double *dv = ch->delta[v], *low = power(ch, ch->sp_p->lower[i]);
+    const double *dv = ch->delta[ch->sp_p->lower_var[i]], *low = power(ch, ch->sp_p->lower[i]);
     double *out = (double *)power(ch, i);
     if (sp->m == 1) { /* one coefficient per degree: a plain convolution */
         double sum = 0.0;
@@ -87,7 +130,8 @@ void ic_jet_chain_extend(ic_jet_chain *ch, int k)
      * its degree-k part is not read */
     for (int d = 2; d <= top; d++)
         for (int i = sp_p->deg_start[d]; i < sp_p->deg_start[d + 1]; i++)
-            extend_one(ch, i, d, k);
+            if (ch->need[i])
+                extend_one(ch, i, d, k);
 }
 
 void ic_jet_chain_part(const ic_jet_chain *ch, double *out, const double *P, int k)

@@ -16,9 +16,13 @@
  * "Relax, but don't be too lazy", J. Symbolic Comput. 34 (2002), sec. 2,
  * in its naive quadratic form). Every coefficient is then computed once.
  *
- * Usage: ic_jet_chain_init once, then for k = 1, 2, ... in order
- * ic_jet_chain_extend(k) (the deltas final below degree k) and
- * ic_jet_chain_part(k) for each polynomial P wanted.
+ * Only the power products the polynomials need are kept: those of their
+ * nonzero terms and the lower ones these are built from (a quadric needs
+ * its own squares and products only).
+ *
+ * Usage: ic_jet_chain_init once with the polynomials, then for k = 1, 2,
+ * ... in order ic_jet_chain_extend(k) (the deltas final below degree k) and
+ * ic_jet_chain_part(k) for each polynomial.
  */
 #ifndef IC_JET_CHAIN_H
 #define IC_JET_CHAIN_H
@@ -30,28 +34,32 @@ typedef struct {
     const ic_jet_space *sp;   /* the deltas' space */
     int deg;                  /* the power products kept: degrees 2..deg */
     const double *delta[IC_JET_MAX_VARS];
-    double *pw; /* their jets, one per monomial of sp_p of degree 2..deg */
+    double *pw;          /* their jets, one per monomial of sp_p of degree 2..deg */
+    unsigned char *need; /* per monomial of sp_p up to degree deg: computed or not */
 } ic_jet_chain;
 
 /* Highest degree with a nonzero coefficient of P (0 if none): the power
  * products above it are never needed (a quadric's are of degree 2). */
 int ic_jet_support_degree(const double *P, const ic_jet_space *sp_p);
 
-/* Doubles of work a chain of P's space up to degree `deg` over sp needs. */
+/* Doubles of work a chain of P's space up to degree `deg` over sp needs
+ * (deg = the order of sp_p: enough for any polynomial). */
 size_t ic_jet_chain_len(const ic_jet_space *sp_p, int deg, const ic_jet_space *sp);
 
-/* Starts a chain: delta[i] are p jets of sp (their constant terms are
- * ignored; they are read, never written, and may change between steps in
- * the degrees not yet final); work holds ic_jet_chain_len doubles. */
-void ic_jet_chain_init(ic_jet_chain *ch, const ic_jet_space *sp_p, int deg,
-                       const double *const *delta, const ic_jet_space *sp, double *work);
+/* Starts a chain for the np polynomials P[0..np-1] of sp_p: delta[i] are p
+ * jets of sp (their constant terms are ignored; they are read, never
+ * written, and may change between steps in the degrees not yet final);
+ * work holds ic_jet_chain_len(sp_p, d, sp) doubles, d at least the
+ * polynomials' ic_jet_support_degree. */
+void ic_jet_chain_init(ic_jet_chain *ch, const ic_jet_space *sp_p, const double *const *P,
+                       int np, const double *const *delta, const ic_jet_space *sp, double *work);
 
 /* The degree-k parts of the power products (k >= 1, after steps 1..k-1). */
 void ic_jet_chain_extend(ic_jet_chain *ch, int k);
 
-/* out's degree-k part = [P(delta)]_k (P's constant term left out, its
- * linear terms with the deltas' current degree-k parts); the rest of out is
- * untouched. */
+/* out's degree-k part = [P(delta)]_k, P one of the chain's polynomials
+ * (its constant term left out, its linear terms with the deltas' current
+ * degree-k parts); the rest of out is untouched. */
 void ic_jet_chain_part(const ic_jet_chain *ch, double *out, const double *P, int k);
 
 #endif

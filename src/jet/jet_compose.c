@@ -114,7 +114,8 @@ ic_status ic_jet_revert(double *g, const double *f, const ic_jet_space *sp, doub
     double *h = scratch;
     const double *gs[1] = {g};
     ic_jet_chain ch;
-    ic_jet_chain_init(&ch, sp, ic_jet_support_degree(f, sp), gs, sp, scratch + sp->n);
+    const double *fs[1] = {f};
+    ic_jet_chain_init(&ch, sp, fs, 1, gs, sp, scratch + sp->n);
     for (int k = 2; k <= sp->K; k++) {
         ic_jet_chain_extend(&ch, k);
         ic_jet_chain_part(&ch, h, f, k);
@@ -147,9 +148,8 @@ ic_status ic_jet_revert2(double *const g[2], const double *const f[2], const ic_
     g[1][2] = i11;
     double *h0 = scratch, *h1 = scratch + sp->n;
     const double *gs[2] = {g[0], g[1]};
-    const int deg0 = ic_jet_support_degree(f[0], sp), deg1 = ic_jet_support_degree(f[1], sp);
     ic_jet_chain ch;
-    ic_jet_chain_init(&ch, sp, deg0 > deg1 ? deg0 : deg1, gs, sp, scratch + 2 * sp->n);
+    ic_jet_chain_init(&ch, sp, f, 2, gs, sp, scratch + 2 * sp->n);
     for (int k = 2; k <= sp->K; k++) {
         /* [F(G)]_k with G_k = 0 still; G_k -= L^{-1} [F(G)]_k */
         ic_jet_chain_extend(&ch, k);

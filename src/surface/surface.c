@@ -426,6 +426,19 @@ ic_status ic_surface_taylor(ic_surface *s, double *out, const double *at, const 
     return ic_error_set(err, IC_ERR_INVALID, 0, "corrupt surface");
 }
 
+int ic_surface_is_formula(const ic_surface *s) { return s->backend == BACKEND_FORMULA; }
+
+ic_status ic_surface_taylor_toward(ic_surface *s, double *out, const double *at,
+                                   const double *heading, const ic_jet_space *sp, ic_error *err)
+{
+    if (s->backend != BACKEND_NURBS || !heading || ic_jet_space_num_vars(sp) != 2)
+        return ic_surface_taylor(s, out, at, sp, err);
+    for (int i = 0; i < 2; i++)
+        if (!isfinite(at[i]))
+            return ic_error_set(err, IC_ERR_INVALID, 0, "non-finite coordinate %d", i + 1);
+    return nurbs_taylor(s, out, at, heading, sp, err);
+}
+
 ic_status ic_surface_compose(ic_surface *s, double *out, const double *const *in,
                              const ic_jet_space *sp, ic_error *err)
 {

@@ -35,8 +35,8 @@ enum { IC_WORK_EVAL = 0, IC_WORK_COMPOSE = 1 };
 
 /* Workspace slot of at least len doubles (grows, keeps nothing). NULL on OOM. */
 double *ic_surface_work(ic_surface *s, int slot, size_t len);
-/* The space of the surface's inputs at this order (cached). */
-const ic_jet_space *ic_surface_space(ic_surface *s, int order, ic_error *err);
+/* ic_surface_space, ic_surface_taylor_toward */
+#include "surface_jets.h"
 
 /* Primitives (primitive.c) */
 ic_status ic_primitive_check(ic_surface *s, ic_error *err);

@@ -1,0 +1,23 @@
+/* The surface's Taylor polynomials for the layers above (the jet method
+ * composes them with the curve one degree at a time). */
+#ifndef IC_SURFACE_JETS_H
+#define IC_SURFACE_JETS_H
+
+#include "intercurve/surface.h"
+
+/* The space of the surface's inputs at this order (cached; NULL with err set
+ * when it cannot be made). */
+const ic_jet_space *ic_surface_space(ic_surface *s, int order, ic_error *err);
+
+/* ic_surface_taylor, but a NURBS on a knot line takes the piece that
+ * heading[2] (a direction in (u, v), or NULL) goes into, as
+ * ic_surface_compose does for a parameter jet heading that way. */
+ic_status ic_surface_taylor_toward(ic_surface *s, double *out, const double *at,
+                                   const double *heading, const ic_jet_space *sp, ic_error *err);
+
+/* Whether the surface is a formula: its tape on the curve's one-variable
+ * jets costs less than its Taylor polynomial in two or three variables
+ * (docs/performance.md, "Jets"), so the jet method composes it directly. */
+int ic_surface_is_formula(const ic_surface *s);
+
+#endif

@@ -93,7 +93,10 @@ void ic_jet_chain_init(ic_jet_chain *ch, const ic_jet_space *sp_p, const double 
         memset(work, 0, len * sizeof *work);
     ch->need = (unsigned char *)(work + len);
     mark_needed(ch, P, np);
+    ch->delta_deg = sp->K;
 }
+
+void ic_jet_chain_set_delta_degree(ic_jet_chain *ch, int deg) { ch->delta_deg = deg; }
 
 /* The jet of delta^alpha for monomial i of sp_p (degree 1: the delta). */
 static const double *power(const ic_jet_chain *ch, int i)
@@ -110,15 +113,17 @@ static void extend_one(ic_jet_chain *ch, int i, int d, int k)
     const ic_jet_space *sp = ch->sp;
     const double *dv = ch->delta[ch->sp_p->lower_var[i]], *low = power(ch, ch->sp_p->lower[i]);
     double *out = (double *)power(ch, i);
+    /* delta_v has no terms above delta_deg */
+    const int jmax = k - d + 1 < ch->delta_deg ? k - d + 1 : ch->delta_deg;
     if (sp->m == 1) { /* one coefficient per degree: a plain convolution */
         double sum = 0.0;
-        for (int j = 1; j <= k - d + 1; j++)
+        for (int j = 1; j <= jmax; j++)
             sum += dv[j] * low[k - j];
         out[k] = sum;
         return;
     }
     ic_jet_part_zero(sp, out, k);
-    for (int j = 1; j <= k - d + 1; j++)
+    for (int j = 1; j <= jmax; j++)
         ic_jet_hacc(sp, out, dv, j, low, k - j, 1.0);
 }
 
@@ -128,10 +133,28 @@ void ic_jet_chain_extend(ic_jet_chain *ch, int k)
     const int top = k < ch->deg ? k : ch->deg;
     /* by degree: each monomial's lower one is final below degree k, and
      * its degree-k part is not read */
-    for (int d = 2; d <= top; d++)
+    for (int d = 2; d <= top; d++) {
+        if (k > d * ch->delta_deg) /* no terms of degree k: zero from init */
+            continue;
         for (int i = sp_p->deg_start[d]; i < sp_p->deg_start[d + 1]; i++)
             if (ch->need[i])
                 extend_one(ch, i, d, k);
+    }
+}
+
+/* The one-variable case: out[k] as one sum over P's terms (the curve of the
+ * jet method, the reversions of one variable). */
+static void part_univariate(const ic_jet_chain *ch, double *out, const double *P, int k, int top)
+{
+    const ic_jet_space *sp_p = ch->sp_p;
+    const int s2 = sp_p->deg_start[2], n = ch->sp->n;
+    double sum = 0.0;
+    for (int v = 0; v < sp_p->m; v++)
+        sum += P[1 + v] * ch->delta[v][k];
+    const double *pw = ch->pw + k;
+    for (int i = s2; i < sp_p->deg_start[top + 1]; i++)
+        sum += P[i] * pw[(size_t)(i - s2) * (size_t)n];
+    out[k] = sum;
 }
 
 void ic_jet_chain_part(const ic_jet_chain *ch, double *out, const double *P, int k)
@@ -141,6 +164,10 @@ void ic_jet_chain_part(const ic_jet_chain *ch, double *out, const double *P, int
     ic_jet_part_zero(sp, out, k);
     if (top < 1)
         return;
+    if (sp->m == 1) {
+        part_univariate(ch, out, P, k, top);
+        return;
+    }
     for (int i = 1; i < sp_p->deg_start[top + 1]; i++)
         if (P[i] != 0.0)
             ic_jet_part_axpy(sp, out, k, P[i], power(ch, i));

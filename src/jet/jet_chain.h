@@ -36,6 +36,7 @@ typedef struct {
     const double *delta[IC_JET_MAX_VARS];
     double *pw;          /* their jets, one per monomial of sp_p of degree 2..deg */
     unsigned char *need; /* per monomial of sp_p up to degree deg: computed or not */
+    int delta_deg;       /* the deltas have no terms above this degree */
 } ic_jet_chain;
 
 /* Highest degree with a nonzero coefficient of P (0 if none): the power
@@ -53,6 +54,11 @@ size_t ic_jet_chain_len(const ic_jet_space *sp_p, int deg, const ic_jet_space *s
  * polynomials' ic_jet_support_degree. */
 void ic_jet_chain_init(ic_jet_chain *ch, const ic_jet_space *sp_p, const double *const *P,
                        int np, const double *const *delta, const ic_jet_space *sp, double *work);
+
+/* Declares that the deltas have no terms above degree `deg` (a linear
+ * substitution: 1), so a power product of degree d has none above d deg and
+ * its steps beyond are skipped. Call after ic_jet_chain_init. */
+void ic_jet_chain_set_delta_degree(ic_jet_chain *ch, int deg);
 
 /* The degree-k parts of the power products (k >= 1, after steps 1..k-1). */
 void ic_jet_chain_extend(ic_jet_chain *ch, int k);

@@ -17,6 +17,7 @@
 #include "tangential.h"
 #include "common/mathconst.h"
 #include "common/vec3.h"
+#include "jet/jet_chain.h"
 
 #include <float.h>
 #include <math.h>
@@ -43,7 +44,10 @@ enum { MAX_LEN2 = (IC_JET_MAX_ORDER + 1) * (IC_JET_MAX_ORDER + 2) / 2 };
 
 /* out(r, w) = a(r d + w dp). The substitution's jets are on the stack: a
  * failed allocation here could not be reported (found by tests/test_nomem.c,
- * "apparatus, tangential": the branches came from uninitialised memory). */
+ * "apparatus, tangential": the branches came from uninitialised memory).
+ * The substitution is linear, so the power products of the composition one
+ * degree at a time (jet/jet_chain.h) are homogeneous: each is one product,
+ * where the nested Horner scheme of ic_jet_compose multiplies whole jets. */
 static void rotate(const tctx *cx, double *out, const double *a, const double *d, const double *dp)
 {
     double X[MAX_LEN2], Y[MAX_LEN2];
@@ -51,8 +55,15 @@ static void rotate(const tctx *cx, double *out, const double *a, const double *d
     ic_jet_zero(Y, cx->sp2);
     X[1] = d[0], X[2] = dp[0];
     Y[1] = d[1], Y[2] = dp[1];
-    const double *in[2] = {X, Y};
-    ic_jet_compose(out, a, cx->sp2, in, cx->sp2, cx->s2);
+    const double *in[2] = {X, Y}, *P[1] = {a};
+    ic_jet_chain ch;
+    ic_jet_chain_init(&ch, cx->sp2, P, 1, in, cx->sp2, cx->s2);
+    ic_jet_chain_set_delta_degree(&ch, 1);
+    out[0] = a[0];
+    for (int k = 1; k <= cx->H; k++) {
+        ic_jet_chain_extend(&ch, k);
+        ic_jet_chain_part(&ch, out, a, k);
+    }
 }
 
 /* out = d a / dw (the second variable) */

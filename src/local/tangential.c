@@ -93,6 +93,26 @@ static void along(const tctx *cx, double *out, const double *a, const double *w)
     ic_jet_compose(out, a, cx->sp2, in, cx->sp1, cx->s1);
 }
 
+/* w(r) with w(0) = 0 from a(r, w(r)) = 0, dG = da/dw(0, 0): the degree-k
+ * coefficient of a(r, w) depends on w_k only through dG w_k, so a is
+ * composed with (r, w) one degree at a time (jet/jet_chain.h) while w is
+ * found, instead of once per degree. Returns the valid orders, H. */
+static int solve_curve(const tctx *cx, double *w, const double *a, double dG)
+{
+    double r[IC_JET_MAX_ORDER + 1], S[IC_JET_MAX_ORDER + 1];
+    ic_jet_set_var(r, 0.0, 0, cx->sp1);
+    ic_jet_zero(w, cx->sp1);
+    const double *in[2] = {r, w}, *P[1] = {a};
+    ic_jet_chain ch; /* sp2's scratch holds its power products over sp1 */
+    ic_jet_chain_init(&ch, cx->sp2, P, 1, in, cx->sp1, cx->s2);
+    for (int k = 1; k <= cx->H; k++) {
+        ic_jet_chain_extend(&ch, k);
+        ic_jet_chain_part(&ch, S, a, k);
+        w[k] = -S[k] / dG;
+    }
+    return cx->H;
+}
+
 /* w(r) = base(r) + r^p omega(r), omega(0) = omega0, from G = a(r, w)/r^q = 0
  * with dG/domega(0) = dG. Returns the number of valid orders of w. */
 static int solve_branch(const tctx *cx, double *w, const double *a, const double *base, int p,
@@ -297,7 +317,7 @@ static ic_status polar_curve_new(const tctx *cx, polar_curve *pc, const double *
     rotate(cx, pc->gr, g, d, dp);
     pc->lambda = pc->gr[idx2(sp2, 0, 2)];
     deriv_w(sp2, dw, pc->gr);
-    solve_branch(cx, pc->phi, dw, NULL, 0, 0, 0.0, 2 * pc->lambda);
+    solve_curve(cx, pc->phi, dw, 2 * pc->lambda);
     along(cx, pc->h, pc->gr, pc->phi);
     rotate(cx, rot, cx->h->psi[0], d, dp);
     along(cx, pc->hA, rot, pc->phi);

@@ -13,41 +13,14 @@
  */
 #include "tangential.h"
 #include "common/vec3.h"
+#include "surface/surface_jets.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-/* Bivariate spaces of orders 1..H (the last one sp itself), or NULL when
- * memory runs out; free with spaces_free. */
-static ic_jet_space **spaces_new(const ic_jet_space *sp, ic_error *err)
-{
-    const int H = ic_jet_space_order(sp);
-    ic_jet_space **by = calloc((size_t)H + 1, sizeof *by);
-    if (!by) {
-        ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory at a tangential point");
-        return NULL;
-    }
-    for (int d = 1; d < H; d++)
-        if (ic_jet_space_new(&by[d], 2, d, err) != IC_OK) {
-            for (int e = 1; e < d; e++)
-                ic_jet_space_free(by[e]);
-            free(by);
-            return NULL;
-        }
-    return by;
-}
-
-static void spaces_free(ic_jet_space **by, int H)
-{
-    for (int d = 1; by && d < H; d++)
-        ic_jet_space_free(by[d]);
-    free(by);
-}
-
 static ic_status implicit_height(ic_surface *s, double *psi, const ic_heights *h,
-                                 const ic_jet_space *sp, ic_jet_space *const *by_order,
-                                 double *work, ic_error *err)
+                                 const ic_jet_space *sp, double *work, ic_error *err)
 {
     const int n = ic_jet_space_len(sp);
     /* psi_0 and the normal derivative by Newton along N */
@@ -81,7 +54,9 @@ static ic_status implicit_height(ic_surface *s, double *psi, const ic_heights *h
     const int H = ic_jet_space_order(sp);
     for (int d = 1; d <= H; d++) {
         /* the jets of order d are the first coefficients of those of order H */
-        const ic_jet_space *spd = d < H ? by_order[d] : sp;
+        const ic_jet_space *spd = d < H ? ic_surface_plane_space(s, d, err) : sp;
+        if (!spd)
+            return err ? err->code : IC_ERR_NOMEM;
         const int nd = ic_jet_space_len(spd);
         for (int i = 0; i < 3; i++) {
             for (int k = 0; k < nd; k++)
@@ -153,15 +128,10 @@ ic_status ic_heights_compute(ic_heights *h, const ic_sheet sh[2], const ic_jet_s
     ic_status st = IC_OK;
     if (!h->psi[0] || !h->psi[1] || !h->g || !work)
         st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory at a tangential point");
-    ic_jet_space **by_order = NULL;
-    if (st == IC_OK && !(sh[0].parametric && sh[1].parametric) &&
-        !(by_order = spaces_new(sp, err)))
-        st = err ? err->code : IC_ERR_NOMEM;
     for (int s = 0; s < 2 && st == IC_OK; s++)
         st = sh[s].parametric
                  ? parametric_height(sh[s].s, sh[s].at, h->psi[s], h, sp, work, err)
-                 : implicit_height(sh[s].s, h->psi[s], h, sp, by_order, work, err);
-    spaces_free(by_order, ic_jet_space_order(sp));
+                 : implicit_height(sh[s].s, h->psi[s], h, sp, work, err);
     free(work);
     if (st != IC_OK) {
         ic_heights_free(h);

@@ -185,8 +185,10 @@ void ic_surface_free(ic_surface *s)
         return;
     ic_nurbs_patch_free(s->nurbs);
     ic_expr_free(s->expr);
-    for (int k = 0; k <= IC_JET_MAX_ORDER; k++)
+    for (int k = 0; k <= IC_JET_MAX_ORDER; k++) {
         ic_jet_space_free(s->spaces[k]);
+        ic_jet_space_free(s->plane_spaces[k]);
+    }
     free(s->work[0]);
     free(s->work[1]);
     free(s);
@@ -317,6 +319,18 @@ const ic_jet_space *ic_surface_space(ic_surface *s, int order, ic_error *err)
         ic_jet_space_new(&s->spaces[order], ic_surface_num_vars(s), order, err) != IC_OK)
         return NULL;
     return s->spaces[order];
+}
+
+const ic_jet_space *ic_surface_plane_space(ic_surface *s, int order, ic_error *err)
+{
+    if (order < 0 || order > IC_JET_MAX_ORDER) {
+        ic_error_set(err, IC_ERR_INVALID, 0, "order %d outside 0..%d", order, IC_JET_MAX_ORDER);
+        return NULL;
+    }
+    if (!s->plane_spaces[order] &&
+        ic_jet_space_new(&s->plane_spaces[order], 2, order, err) != IC_OK)
+        return NULL;
+    return s->plane_spaces[order];
 }
 
 /* Callback: partial derivatives in, Taylor coefficients out. */

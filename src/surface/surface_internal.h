@@ -25,6 +25,8 @@ struct ic_surface {
     /* Spaces of the surface's own inputs (2 or 3 variables), by order,
      * created on first use, and a growing workspace. */
     ic_jet_space *spaces[IC_JET_MAX_ORDER + 1];
+    /* two-variable spaces by order, made on first use (ic_surface_plane_space) */
+    ic_jet_space *plane_spaces[IC_JET_MAX_ORDER + 1];
     double *work[2];
     size_t work_len[2];
 };

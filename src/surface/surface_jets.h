@@ -9,6 +9,11 @@
  * when it cannot be made). */
 const ic_jet_space *ic_surface_space(ic_surface *s, int order, ic_error *err);
 
+/* A space of two variables at this order (cached like ic_surface_space):
+ * the heights over a tangent plane are composed with an implicit surface
+ * one order at a time in them. */
+const ic_jet_space *ic_surface_plane_space(ic_surface *s, int order, ic_error *err);
+
 /* ic_surface_taylor, but a NURBS on a knot line takes the piece that
  * heading[2] (a direction in (u, v), or NULL) goes into, as
  * ic_surface_compose does for a parameter jet heading that way. */

@@ -20,12 +20,18 @@ static int part_is_zero(const double *P, int i0, int i1)
     return any == 0;
 }
 
-int ic_jet_support_degree(const double *P, const ic_jet_space *sp_p)
+/* The highest degree <= top with a nonzero coefficient of P (0 if none). */
+static int support_below(const double *P, const ic_jet_space *sp_p, int top)
 {
-    for (int d = sp_p->K; d > 0; d--)
+    for (int d = top; d > 0; d--)
         if (!part_is_zero(P, sp_p->deg_start[d], sp_p->deg_start[d + 1]))
             return d;
     return 0;
+}
+
+int ic_jet_support_degree(const double *P, const ic_jet_space *sp_p)
+{
+    return support_below(P, sp_p, sp_p->K);
 }
 
 /* The chain's highest degree: P's, the spaces' and the caller's bounds. */
@@ -77,9 +83,17 @@ static void mark_needed(ic_jet_chain *ch, const double *const *P, int np)
 void ic_jet_chain_init(ic_jet_chain *ch, const ic_jet_space *sp_p, const double *const *P,
                        int np, const double *const *delta, const ic_jet_space *sp, double *work)
 {
+    ic_jet_chain_init_upto(ch, sp_p, P, np, sp_p->K, delta, sp, work);
+}
+
+void ic_jet_chain_init_upto(ic_jet_chain *ch, const ic_jet_space *sp_p, const double *const *P,
+                            int np, int bound, const double *const *delta,
+                            const ic_jet_space *sp, double *work)
+{
+    const int top = bound < 0 || bound > sp_p->K ? sp_p->K : bound;
     int deg = 0;
     for (int q = 0; q < np; q++) {
-        const int d = ic_jet_support_degree(P[q], sp_p);
+        const int d = support_below(P[q], sp_p, top);
         deg = d > deg ? d : deg;
     }
     ch->sp_p = sp_p;

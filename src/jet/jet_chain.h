@@ -10,11 +10,12 @@
  * product delta^alpha, 2 <= |alpha| <= deg, and extends each by one degree
  * per step with the product rule
  *     [delta^alpha]_k = sum_{j=1}^{k-|alpha|+1} [delta_v]_j [delta^(alpha - e_v)]_{k-j}
- * (v the first variable of alpha; delta^(alpha - e_v) has no terms below
- * degree |alpha| - 1): only parts of degree < k of the deltas enter, so the
- * parts already computed are final (the on-line product of van der Hoeven,
- * "Relax, but don't be too lazy", J. Symbolic Comput. 34 (2002), sec. 2,
- * in its naive quadratic form). Every coefficient is then computed once.
+ * (the Cauchy product; v the first variable of alpha; delta^(alpha - e_v)
+ * has no terms below degree |alpha| - 1): only parts of degree < k of the
+ * deltas enter, so the parts already computed are final. This is on-line
+ * ("relaxed") multiplication in its naive quadratic form (van der Hoeven,
+ * "Relax, but don't be too lazy", J. Symbolic Comput. 34 (2002)). Every
+ * coefficient is then computed once.
  *
  * Only the power products the polynomials need are kept: those of their
  * nonzero terms and the lower ones these are built from (a quadric needs
@@ -54,6 +55,12 @@ size_t ic_jet_chain_len(const ic_jet_space *sp_p, int deg, const ic_jet_space *s
  * polynomials' ic_jet_support_degree. */
 void ic_jet_chain_init(ic_jet_chain *ch, const ic_jet_space *sp_p, const double *const *P,
                        int np, const double *const *delta, const ic_jet_space *sp, double *work);
+
+/* The same for polynomials known to have no terms above degree `bound`
+ * (their degree is then found below it, not over the whole space). */
+void ic_jet_chain_init_upto(ic_jet_chain *ch, const ic_jet_space *sp_p, const double *const *P,
+                            int np, int bound, const double *const *delta,
+                            const ic_jet_space *sp, double *work);
 
 /* Declares that the deltas have no terms above degree `deg` (a linear
  * substitution: 1), so a power product of degree d has none above d deg and

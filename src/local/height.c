@@ -25,10 +25,10 @@ static ic_status implicit_height(ic_surface *s, double *psi, const ic_heights *h
     const int n = ic_jet_space_len(sp);
     /* psi_0 and the normal derivative by Newton along N */
     double psi0 = 0.0, t1[4], fN = 0.0;
-    ic_jet_space *s1 = NULL;
-    ic_status st = ic_jet_space_new(&s1, 3, 1, err);
-    if (st != IC_OK)
-        return st;
+    const ic_jet_space *s1 = ic_surface_space(s, 1, err); /* cached there */
+    if (!s1)
+        return err ? err->code : IC_ERR_NOMEM;
+    ic_status st = IC_OK;
     for (int it = 0; it < 50; it++) {
         double X[3];
         ic_axpy3(X, h->P, psi0, h->N);
@@ -45,7 +45,6 @@ static ic_status implicit_height(ic_surface *s, double *psi, const ic_heights *h
         if (fabs(step) <= 1e-16 * (1 + fabs(psi0)))
             break;
     }
-    ic_jet_space_free(s1);
     if (st != IC_OK)
         return st;
     double *X[3] = {work, work + n, work + 2 * n}, *F = work + 3 * n;

@@ -64,7 +64,8 @@ static ic_status sheet_start(const ic_sheet *sh, sheet_jet *sj, const double *he
     const double *P[3], *ins[3] = {sj->in[0], sj->in[1], sj->in[2]};
     for (int c = 0; c < sj->nout; c++)
         P[c] = sj->taylor + (size_t)c * n;
-    ic_jet_chain_init(&sj->chain, sj->sp_p, P, sj->nout, ins, sp, work);
+    ic_jet_chain_init_upto(&sj->chain, sj->sp_p, P, sj->nout,
+                           ic_surface_polynomial_degree(sh->s), ins, sp, work);
     return IC_OK;
 }
 

@@ -18,6 +18,7 @@
 #include "common/mathconst.h"
 #include "common/vec3.h"
 #include "jet/jet_chain.h"
+#include "surface/surface_jets.h"
 
 #include <float.h>
 #include <math.h>
@@ -405,7 +406,8 @@ static ic_status degenerate(const tctx *cx, ic_local_result *res, const double *
 /* The expansion at the sheets' point: jet spaces of order H, scratch and
  * the heights (ic_height_close frees them). */
 typedef struct {
-    ic_jet_space *sp2, *sp1;
+    const ic_jet_space *sp2; /* the first sheet's surface's (cached there) */
+    ic_jet_space *sp1;
     double *s2, *s1;
     ic_heights h;
     double linear[2]; /* g's linear part (x, y), set aside */
@@ -417,14 +419,16 @@ static void expansion_close(expansion *ex)
     free(ex->s1);
     free(ex->s2);
     ic_jet_space_free(ex->sp1);
-    ic_jet_space_free(ex->sp2);
 }
 
 static ic_status expansion_open(expansion *ex, tctx *cx, const ic_sheet sh[2], int H,
                                 const ic_local_options *opt, ic_error *err)
 {
     memset(ex, 0, sizeof *ex);
-    ic_status st = ic_jet_space_new(&ex->sp2, 2, H, err);
+    ic_status st = IC_OK;
+    ex->sp2 = ic_surface_plane_space(sh[0].s, H, err);
+    if (!ex->sp2)
+        st = err ? err->code : IC_ERR_NOMEM;
     if (st == IC_OK)
         st = ic_jet_space_new(&ex->sp1, 1, H, err);
     if (st != IC_OK) {

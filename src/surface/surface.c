@@ -442,6 +442,17 @@ ic_status ic_surface_taylor(ic_surface *s, double *out, const double *at, const 
 
 int ic_surface_is_formula(const ic_surface *s) { return s->backend == BACKEND_FORMULA; }
 
+int ic_surface_polynomial_degree(const ic_surface *s)
+{
+    if (s->backend != BACKEND_PRIMITIVE)
+        return -1;
+    if (s->prim.kind == IC_PRIM_PLANE)
+        return 1; /* placement is linear: degrees stay */
+    if (s->kind == IC_PARAMETRIC)
+        return -1;
+    return s->prim.kind == IC_PRIM_TORUS ? 4 : 2;
+}
+
 ic_status ic_surface_taylor_toward(ic_surface *s, double *out, const double *at,
                                    const double *heading, const ic_jet_space *sp, ic_error *err)
 {

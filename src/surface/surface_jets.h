@@ -20,6 +20,12 @@ const ic_jet_space *ic_surface_plane_space(ic_surface *s, int order, ic_error *e
 ic_status ic_surface_taylor_toward(ic_surface *s, double *out, const double *at,
                                    const double *heading, const ic_jet_space *sp, ic_error *err);
 
+/* The total degree of the surface's function where it is a polynomial of a
+ * known degree (an implicit primitive: 1 for a plane, 4 for a torus, 2 for
+ * the others; a parametric plane: 1), else -1: its Taylor polynomials have
+ * no terms above it, and need not be searched for them. */
+int ic_surface_polynomial_degree(const ic_surface *s);
+
 /* Whether the surface is a formula: its tape on the curve's one-variable
  * jets costs less than its Taylor polynomial in two or three variables
  * (docs/performance.md, "Jets"), so the jet method composes it directly. */

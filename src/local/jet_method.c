@@ -18,9 +18,9 @@
  * [R(alpha(s))]_k and [f(c(s))]_k come from each surface's Taylor polynomial
  * of order K at the point, composed with the curve one degree at a time
  * (jet/jet_chain.h): the jet's lower coefficients are final, so each order
- * adds its own coefficients only, instead of pushing the whole jet through
- * the surface again at every order (O(K^2) products per order of the
- * polynomial's terms, not O(K) compositions).
+ * adds its own coefficients only (per order, one convolution per power
+ * product and one sum over the terms), instead of pushing the whole jet
+ * through the surface again at every order.
  */
 #include "local_internal.h"
 #include "common/vec3.h"
@@ -79,7 +79,7 @@ static ic_status sheet_compose(ic_pair *pair, const ic_sheet *sh, const sheet_je
     const double *ins[3] = {in[0], in[1], in[2]};
     for (int v = 0; v < (sh->parametric ? 2 : 3); v++) {
         memcpy(in[v], sj->in[v], (size_t)k * sizeof in[v][0]);
-        in[v][0] = sh->parametric ? sh->at[v] : sj->at[v];
+        in[v][0] = sj->at[v];
         in[v][k] = 0.0;
     }
     ic_status st = ic_surface_compose(sh->s, &out[0][0], ins, sp, err);

@@ -40,9 +40,14 @@ typedef struct {
  * curve as jets of the curve's space (coefficients final below the current
  * order, zero from it on), and their power products. A formula is instead
  * evaluated on the inputs' jets at every order: its tape on one-variable
- * jets costs less than its Taylor polynomial in two or three variables. */
+ * jets costs less than its Taylor polynomial in two or three variables. A
+ * parametric primitive follows the curve with its own one-variable series,
+ * one order at a time (ic_primitive_along): its Taylor polynomial in (u, v)
+ * is dense. */
 typedef struct {
     int direct; /* a formula: composed with the curve's jet at every order */
+    int along;  /* a parametric primitive: pa */
+    ic_primitive_along pa;
     double at[3]; /* the expansion point: c(0) or alpha(0) */
     const ic_jet_space *sp_p;
     int nout;
@@ -98,6 +103,8 @@ static ic_status sheet_rhs(ic_pair *pair, const ic_sheet *sh, sheet_jet *sj, int
         ic_status st = sheet_compose(pair, sh, sj, k, Qk, err);
         if (st != IC_OK)
             return st;
+    } else if (sj->along) {
+        ic_primitive_along_step(&sj->pa, k, Qk);
     } else {
         const int n = ic_jet_space_len(sj->sp_p);
         double out[IC_LOCAL_MAX_ORDER + 1];
@@ -124,11 +131,18 @@ static void tangent_to_params(const ic_sheet *sh, const double *w, double *xy)
     xy[1] = (E * q - F * p) / det;
 }
 
-/* The inputs of sheet s along the curve gain their order-k coefficients. */
+/* The inputs of sheet s along the curve gain their order-k coefficients
+ * (a primitive's series are then completed at that order). */
 static void sheet_advance(const ic_sheet *sh, sheet_jet *sj, const curve_jet *cj, int s, int k)
 {
     for (int v = 0; v < (sh->parametric ? 2 : 3); v++)
         sj->in[v][k] = sh->parametric ? cj->alpha[s][k][v] : cj->a[k][v];
+    if (sj->along) {
+        double done[3];
+        sj->pa.u[k] = cj->alpha[s][k][0];
+        sj->pa.v[k] = cj->alpha[s][k][1];
+        ic_primitive_along_step(&sj->pa, k, done);
+    }
 }
 
 /* Both sheets' Taylor polynomials of order K at the curve's point, then
@@ -144,9 +158,12 @@ static ic_status sheets_open(ic_pair *pair, const ic_sheet sh[2], sheet_jet sj[2
         memset(&sj[s], 0, sizeof sj[s]);
         sj[s].nout = sh[s].parametric ? 3 : 1;
         memcpy(sj[s].at, sh[s].parametric ? cj->alpha[s][0] : cj->a[0], sizeof sj[s].at);
-        sheet_advance(&sh[s], &sj[s], cj, s, 1);
         sj[s].direct = ic_surface_is_formula(sh[s].s);
-        if (sj[s].direct)
+        sj[s].along = ic_primitive_along_serves(sh[s].s);
+        if (sj[s].along)
+            ic_primitive_along_start(&sj[s].pa, sh[s].s, sj[s].at[0], sj[s].at[1]);
+        sheet_advance(&sh[s], &sj[s], cj, s, 1);
+        if (sj[s].direct || sj[s].along)
             continue;
         sj[s].sp_p = ic_surface_space(sh[s].s, order, err);
         if (!sj[s].sp_p)
@@ -163,7 +180,7 @@ static ic_status sheets_open(ic_pair *pair, const ic_sheet sh[2], sheet_jet sj[2
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory in the jet method");
     *mem = block;
     for (int s = 0; s < 2; s++) {
-        if (sj[s].direct)
+        if (sj[s].direct || sj[s].along)
             continue;
         sj[s].taylor = block;
         block += (size_t)sj[s].nout * (size_t)ic_jet_space_len(sj[s].sp_p);

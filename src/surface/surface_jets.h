@@ -31,4 +31,33 @@ int ic_surface_polynomial_degree(const ic_surface *s);
  * (docs/performance.md, "Jets"), so the jet method composes it directly. */
 int ic_surface_is_formula(const ic_surface *s);
 
+/* A parametric primitive along a parameter curve (u(s), v(s)), one order
+ * at a time: its formula's one-variable series (cos u, sin u, cos v, sin v,
+ * their products) each gain their order-k coefficient from the curve's
+ * coefficients up to order k (the on-line sin/cos recurrence
+ *     k s_k = sum_{j=1..k} j u_j c_{k-j},  k c_k = -sum_{j=1..k} j u_j s_{k-j}
+ * and the Cauchy product), so the whole curve to order K costs O(K^2),
+ * where its Taylor polynomial in (u, v) has O(K^2) terms to visit at every
+ * order. */
+typedef struct {
+    const ic_surface *s;
+    double u[IC_JET_MAX_ORDER + 1], v[IC_JET_MAX_ORDER + 1]; /* the curve, filled by the caller */
+    double cu[IC_JET_MAX_ORDER + 1], su[IC_JET_MAX_ORDER + 1];
+    double cv[IC_JET_MAX_ORDER + 1], sv[IC_JET_MAX_ORDER + 1];
+    double w[IC_JET_MAX_ORDER + 1]; /* torus: R + r cos v */
+} ic_primitive_along;
+
+/* Whether ic_primitive_along serves the surface (a parametric primitive). */
+int ic_primitive_along_serves(const ic_surface *s);
+
+/* Starts at the point (u0, v0); the caller then sets u[k], v[k] for k >= 1
+ * (zero until known). */
+void ic_primitive_along_start(ic_primitive_along *pa, const ic_surface *s, double u0, double v0);
+
+/* The order-k coefficient of R(u(s), v(s)) into out[3] (k >= 1), from the
+ * curve's coefficients up to order k as they are now. Steps go k = 1, 2, ...;
+ * a step may be repeated (after u[k], v[k] change), and must be, with their
+ * final values, before the next. */
+void ic_primitive_along_step(ic_primitive_along *pa, int k, double out[3]);
+
 #endif

@@ -41,12 +41,11 @@ typedef struct {
  * order, zero from it on), and their power products. A formula is instead
  * evaluated on the inputs' jets at every order: its tape on one-variable
  * jets costs less than its Taylor polynomial in two or three variables. A
- * parametric primitive follows the curve with its own one-variable series,
- * one order at a time (ic_primitive_along): its Taylor polynomial in (u, v)
- * is dense. */
+ * primitive follows the curve with its own one-variable series, one order
+ * at a time (ic_primitive_along), without a Taylor polynomial at all. */
 typedef struct {
     int direct; /* a formula: composed with the curve's jet at every order */
-    int along;  /* a parametric primitive: pa */
+    int along;  /* a primitive: pa */
     ic_primitive_along pa;
     double at[3]; /* the expansion point: c(0) or alpha(0) */
     const ic_jet_space *sp_p;
@@ -138,10 +137,9 @@ static void sheet_advance(const ic_sheet *sh, sheet_jet *sj, const curve_jet *cj
     for (int v = 0; v < (sh->parametric ? 2 : 3); v++)
         sj->in[v][k] = sh->parametric ? cj->alpha[s][k][v] : cj->a[k][v];
     if (sj->along) {
-        double done[3];
-        sj->pa.u[k] = cj->alpha[s][k][0];
-        sj->pa.v[k] = cj->alpha[s][k][1];
-        ic_primitive_along_step(&sj->pa, k, done);
+        for (int v = 0; v < (sh->parametric ? 2 : 3); v++)
+            sj->pa.in[v][k] = sj->in[v][k];
+        ic_primitive_along_finish(&sj->pa, k);
     }
 }
 
@@ -155,13 +153,16 @@ static ic_status sheets_open(ic_pair *pair, const ic_sheet sh[2], sheet_jet sj[2
     size_t len = 0;
     *mem = NULL;
     for (int s = 0; s < 2; s++) {
-        memset(&sj[s], 0, sizeof sj[s]);
+        /* not the whole struct: a primitive's series are started below */
+        memset(sj[s].in, 0, sizeof sj[s].in);
+        sj[s].direct = sj[s].along = 0;
+        sj[s].taylor = NULL;
         sj[s].nout = sh[s].parametric ? 3 : 1;
         memcpy(sj[s].at, sh[s].parametric ? cj->alpha[s][0] : cj->a[0], sizeof sj[s].at);
         sj[s].direct = ic_surface_is_formula(sh[s].s);
         sj[s].along = ic_primitive_along_serves(sh[s].s);
         if (sj[s].along)
-            ic_primitive_along_start(&sj[s].pa, sh[s].s, sj[s].at[0], sj[s].at[1]);
+            ic_primitive_along_start(&sj[s].pa, sh[s].s, sj[s].at);
         sheet_advance(&sh[s], &sj[s], cj, s, 1);
         if (sj[s].direct || sj[s].along)
             continue;

@@ -31,33 +31,43 @@ int ic_surface_polynomial_degree(const ic_surface *s);
  * (docs/performance.md, "Jets"), so the jet method composes it directly. */
 int ic_surface_is_formula(const ic_surface *s);
 
-/* A parametric primitive along a parameter curve (u(s), v(s)), one order
- * at a time: its formula's one-variable series (cos u, sin u, cos v, sin v,
- * their products) each gain their order-k coefficient from the curve's
- * coefficients up to order k (the on-line sin/cos recurrence
+/* A primitive along a curve, one order at a time: a parametric one along
+ * a parameter curve (u(s), v(s)), an implicit one along a space curve
+ * (x(s), y(s), z(s)). Its formula's one-variable series (cos u, sin u,
+ * cos v, sin v, the local coordinates, their squares and products) each gain
+ * their order-k coefficient from the curve's coefficients up to order k
+ * (the on-line sin/cos recurrence
  *     k s_k = sum_{j=1..k} j u_j c_{k-j},  k c_k = -sum_{j=1..k} j u_j s_{k-j}
  * and the Cauchy product), so the whole curve to order K costs O(K^2),
- * where its Taylor polynomial in (u, v) has O(K^2) terms to visit at every
- * order. */
+ * without the primitive's Taylor polynomial in two or three variables. */
 typedef struct {
     const ic_surface *s;
-    double u[IC_JET_MAX_ORDER + 1], v[IC_JET_MAX_ORDER + 1]; /* the curve, filled by the caller */
+    double in[3][IC_JET_MAX_ORDER + 1]; /* the curve: u, v or x, y, z (caller's, k >= 1) */
     double cu[IC_JET_MAX_ORDER + 1], su[IC_JET_MAX_ORDER + 1];
     double cv[IC_JET_MAX_ORDER + 1], sv[IC_JET_MAX_ORDER + 1];
-    double w[IC_JET_MAX_ORDER + 1]; /* torus: R + r cos v */
+    double w[IC_JET_MAX_ORDER + 1];    /* parametric torus: R + r cos v */
+    double d[3][IC_JET_MAX_ORDER + 1]; /* implicit: local coordinates */
+    double rho[IC_JET_MAX_ORDER + 1];  /* implicit torus: d_x^2 + d_y^2 */
+    double sum[IC_JET_MAX_ORDER + 1];  /* implicit torus: |d|^2 + R^2 - r^2 */
+    double A[3], B[3], C;              /* implicit quadric: sum A_i d_i^2 + B_i d_i + C */
 } ic_primitive_along;
 
-/* Whether ic_primitive_along serves the surface (a parametric primitive). */
+/* Whether ic_primitive_along serves the surface (a primitive). */
 int ic_primitive_along_serves(const ic_surface *s);
 
-/* Starts at the point (u0, v0); the caller then sets u[k], v[k] for k >= 1
- * (zero until known). */
-void ic_primitive_along_start(ic_primitive_along *pa, const ic_surface *s, double u0, double v0);
+/* Starts at the point `at` ((u, v) or (x, y, z)); the caller then sets
+ * in[i][k] for k >= 1 (zero until known). */
+void ic_primitive_along_start(ic_primitive_along *pa, const ic_surface *s, const double *at);
 
-/* The order-k coefficient of R(u(s), v(s)) into out[3] (k >= 1), from the
- * curve's coefficients up to order k as they are now. Steps go k = 1, 2, ...;
- * a step may be repeated (after u[k], v[k] change), and must be, with their
- * final values, before the next. */
-void ic_primitive_along_step(ic_primitive_along *pa, int k, double out[3]);
+/* The order-k coefficient of R(u(s), v(s)) (out[3]) or f(x(s), y(s), z(s))
+ * (out[0]), k >= 1, from the curve's coefficients up to order k as they are
+ * now. Steps go k = 1, 2, ...; a step may be repeated (after in[.][k]
+ * change), and the series must be completed with the final in[.][k]
+ * (ic_primitive_along_finish, or another step) before the next order. */
+void ic_primitive_along_step(ic_primitive_along *pa, int k, double *out);
+
+/* Completes the series at order k once the curve's order-k coefficients are
+ * final: a step without its output. */
+void ic_primitive_along_finish(ic_primitive_along *pa, int k);
 
 #endif

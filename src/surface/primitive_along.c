@@ -53,7 +53,8 @@ static double implicit_value(const ic_primitive_along *pa, int k)
                4.0 * p->major_radius * p->major_radius * pa->rho[k];
     double f = k == 0 ? pa->C : 0.0;
     for (int i = 0; i < 3; i++)
-        f += pa->A[i] * product_step(pa->d[i], pa->d[i], k) + pa->B[i] * pa->d[i][k];
+        f += (pa->A[i] != 0.0 ? pa->A[i] * product_step(pa->d[i], pa->d[i], k) : 0.0) +
+             pa->B[i] * pa->d[i][k];
     return f;
 }
 
@@ -128,7 +129,9 @@ static void parametric_value(const ic_primitive_along *pa, int k, double l[3])
 
 void ic_primitive_along_start(ic_primitive_along *pa, const ic_surface *s, const double *at)
 {
-    memset(pa, 0, sizeof *pa);
+    /* the series are written order by order before they are read: only the
+     * curve starts zero */
+    memset(pa->in, 0, sizeof pa->in);
     pa->s = s;
     const int nin = s->kind == IC_PARAMETRIC ? 2 : 3;
     for (int i = 0; i < nin; i++)

@@ -1,13 +1,17 @@
 /* Benchmarks of the local apparatus at a transversal point (make bench):
- * ns per point for each pairing at K = 3 and K = 8, jet and closed-form
- * methods, beside the cost of the two surfaces' own order-K derivative
- * tensors at the same point. The point is located once beforehand. */
+ * ns per point for each pairing at K = 4, 8 and 16: the whole apparatus by
+ * the jet method, the jet method alone (the derivatives c^(2..K), the
+ * sheets' geometry given), and the two surfaces' own order-K derivative
+ * tensors at the same point, with the ratio of the last two (the jet
+ * method's overhead over evaluating the surfaces; docs/performance.md);
+ * the closed forms at K = 3 beside. The point is located once beforehand. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "bench_timer.h"
 #include "intercurve.h"
+#include "local/local_internal.h"
 
 typedef struct {
     ic_pair *pair;
@@ -16,7 +20,15 @@ typedef struct {
     ic_method method;
     ic_local_options opt;
     ic_jet_space *sp[2];
+    ic_sheet sh[2]; /* the jet method alone starts from these */
 } job;
+
+static int run_jet_method(void *ctx)
+{
+    job *j = ctx;
+    ic_branch br;
+    return ic_jet_method(j->pair, &br, j->sh, j->order, NULL);
+}
 
 static int run_apparatus(void *ctx)
 {
@@ -28,7 +40,7 @@ static int run_apparatus(void *ctx)
 static int run_surfaces(void *ctx)
 {
     job *j = ctx;
-    double out[3 * 220];
+    double out[3 * 969]; /* 3 jets of 3 variables, order 16 */
     for (int s = 0; s < 2; s++) {
         ic_surface *srf = ic_pair_surface(j->pair, s);
         const int par = ic_surface_get_kind(srf) == IC_PARAMETRIC;
@@ -62,6 +74,30 @@ static ic_surface *prim(surface_pool *pool, const ic_primitive *p, ic_surface_ki
     return srf;
 }
 
+/* A rational biquadratic-by-linear NURBS patch (weights 0.8 in the middle
+ * row), added to the pool, or NULL. */
+static ic_surface *rational_patch(surface_pool *pool)
+{
+    static const double ku[] = {0, 0, 0, 0.5, 1, 1, 1}, kv[] = {0, 0, 1, 1};
+    double pts[4][2][3], w[4][2];
+    const double x[4] = {-1.5, -0.4, 0.6, 1.5}, z[4] = {0.2, 0.9, 0.1, 0.6};
+    for (int i = 0; i < 4; i++)
+        for (int k = 0; k < 2; k++) {
+            pts[i][k][0] = x[i];
+            pts[i][k][1] = k ? 2.5 : -2.5;
+            pts[i][k][2] = z[i];
+            w[i][k] = i == 1 || i == 2 ? 0.8 : 1.0;
+        }
+    const ic_nurbs nb = {.degree = {2, 1}, .count = {4, 2}, .knots = {ku, kv},
+                         .points = &pts[0][0][0], .weights = &w[0][0]};
+    ic_surface *srf = NULL;
+    if (pool->n == (int)(sizeof pool->s / sizeof pool->s[0]) ||
+        ic_surface_new_nurbs(&srf, &nb, NULL) != IC_OK)
+        return NULL;
+    pool->s[pool->n++] = srf;
+    return srf;
+}
+
 int main(void)
 {
     ic_primitive cyl = {.kind = IC_PRIM_CYLINDER, .center = {1, 0, 0}, .radius = 1};
@@ -72,7 +108,7 @@ int main(void)
     ic_primitive plane = {.kind = IC_PRIM_PLANE, .center = {0, 0, 0.3}, .normal = {0.2, 0, 1}};
     const char *enneper[3] = {"u - u^3/3 + u*v^2", "-v - u^2*v + v^3/3", "u^2 - v^2"};
     const double th = 0.7;
-    bench_case cases[8];
+    bench_case cases[9];
     int n = 0;
     surface_pool pool = {.n = 0};
 #define PRIM(p, form) prim(&pool, &(p), (form))
@@ -112,8 +148,18 @@ int main(void)
         const double u = 0.5 * (lo + hi), w = 2 + 0.5 * cos(0.5);
         cases[4].at[0] = w * cos(u), cases[4].at[1] = w * sin(u), cases[4].at[2] = 0.5 * sin(0.5);
     }
-    printf("%-36s %9s %9s %9s %9s %9s %9s\n", "pairing (ns per point)", "jet K=3", "closed 3",
-           "surf K=3", "jet K=8", "surf K=8", "jet/surf8");
+    ic_surface *nurbs = rational_patch(&pool);
+    if (!nurbs)
+        return 1;
+    /* x and z of the patch do not change along v: at u = 0.4, y puts the
+     * point on the sphere of radius 2 */
+    double Ru[3];
+    if (ic_surface_eval(nurbs, Ru, (const double[2]){0.4, 0.5}, NULL) != IC_OK)
+        return 1;
+    cases[n++] = (bench_case){"rational NURBS/implicit sphere", nurbs, PRIM(sph, IC_IMPLICIT),
+                              {Ru[0], sqrt(4 - Ru[0] * Ru[0] - Ru[2] * Ru[2]), Ru[2]}};
+    printf("%-36s %3s %10s %10s %10s %8s %10s\n", "pairing (ns per point)", "K", "apparatus",
+           "jet method", "surfaces", "jet/surf", "closed K=3");
     for (int i = 0; i < n; i++) {
         job j;
         memset(&j, 0, sizeof j);
@@ -124,24 +170,33 @@ int main(void)
             fprintf(stderr, "%s: %s\n", cases[i].name, err.message);
             return 1;
         }
-        double r[6];
-        for (int k = 0; k < 2; k++) {
-            const int K = k ? 8 : 3;
+        for (int s = 0; s < 2; s++)
+            if (ic_sheet_at(j.pair, &j.sh[s], s, &j.pt, &err) != IC_OK) {
+                fprintf(stderr, "%s: %s\n", cases[i].name, err.message);
+                return 1;
+            }
+        const int orders[3] = {4, 8, 16};
+        for (int k = 0; k < 3; k++) {
+            const int K = orders[k];
             if (ic_jet_space_new(&j.sp[0], 2, K, NULL) || ic_jet_space_new(&j.sp[1], 3, K, NULL))
                 return 1;
+            double r[4];
             j.order = K;
             j.method = IC_METHOD_JET;
-            r[k ? 3 : 0] = bench_ns_per_call(run_apparatus, &j);
-            if (!k) {
+            r[0] = bench_ns_per_call(run_apparatus, &j);
+            r[1] = bench_ns_per_call(run_jet_method, &j);
+            r[2] = bench_ns_per_call(run_surfaces, &j);
+            r[3] = NAN;
+            if (k == 0) {
+                j.order = 3;
                 j.method = IC_METHOD_CLOSED_FORM;
-                r[1] = bench_ns_per_call(run_apparatus, &j);
+                r[3] = bench_ns_per_call(run_apparatus, &j);
             }
-            r[k ? 4 : 2] = bench_ns_per_call(run_surfaces, &j);
+            printf("%-36s %3d %10.0f %10.0f %10.0f %8.1f %10.0f\n", k ? "" : cases[i].name, K,
+                   r[0], r[1], r[2], r[1] / r[2], r[3]);
             ic_jet_space_free(j.sp[0]);
             ic_jet_space_free(j.sp[1]);
         }
-        printf("%-36s %9.0f %9.0f %9.0f %9.0f %9.0f %9.1f\n", cases[i].name, r[0], r[1], r[2],
-               r[3], r[4], r[3] / r[4]);
         ic_pair_free(j.pair);
     }
     /* tangential points: classification (order 1), the full apparatus by the

@@ -1,8 +1,10 @@
 /* Jet identities, composition, reversion and domain errors. */
+#include <stdlib.h>
 #include <string.h>
 
 #include "harness.h"
 #include "intercurve/jet.h"
+#include "jet/jet_chain.h"
 
 static double max_abs_diff(const double *a, const double *b, int n)
 {
@@ -310,6 +312,83 @@ static void test_domain_errors(void)
     ic_jet_space_free(sp);
 }
 
+/* The composition one degree at a time (jet/jet_chain.h) against
+ * ic_jet_compose: P in p variables (dense, or with its terms of degree 2
+ * and 5 only, so the chain keeps some power products just to build
+ * others), deltas in m variables. Revealed: the deltas' degree-k parts are
+ * set only after step k, as the series solvers do; the step's part then
+ * lacks exactly P's linear terms on them. Linear: the deltas of degree 1
+ * only, declared so (ic_jet_chain_set_delta_degree), as a rotation is. */
+static void check_chain(int p, int m, int K, int sparse, int revealed, int linear,
+                        harness_rng *rng)
+{
+    ic_jet_space *sp_p = NULL, *sp = NULL;
+    if (!REQUIRE(ic_jet_space_new(&sp_p, p, K, NULL) == IC_OK &&
+                     ic_jet_space_new(&sp, m, K, NULL) == IC_OK,
+                 "chain spaces"))
+        goto done;
+    const int np = ic_jet_space_len(sp_p), n = ic_jet_space_len(sp);
+    double *P = malloc((size_t)np * sizeof *P), *want = malloc((size_t)n * sizeof *want);
+    double *got = calloc((size_t)n, sizeof *got), *full = malloc(4 * (size_t)n * sizeof *full);
+    double *live = calloc(4 * (size_t)n, sizeof *live);
+    double *work = malloc(ic_jet_chain_len(sp_p, K, sp) * sizeof *work);
+    double *scratch = malloc(ic_jet_scratch_len(sp) * sizeof *scratch);
+    if (!REQUIRE(P && want && got && full && live && work && scratch, "chain memory"))
+        goto free_all;
+    for (int i = 0; i < np; i++) {
+        int alpha[IC_JET_MAX_VARS], d = 0;
+        ic_jet_exponents(sp_p, i, alpha);
+        for (int v = 0; v < p; v++)
+            d += alpha[v];
+        P[i] = sparse && d != 2 && d != 5 ? 0.0 : harness_uniform(rng, -1, 1);
+    }
+    const double *g[IC_JET_MAX_VARS], *lv[IC_JET_MAX_VARS];
+    for (int v = 0; v < p; v++) {
+        double *f = full + (size_t)v * n;
+        for (int i = 0; i < n; i++)
+            f[i] = linear && i >= ic_jet_degree_start(sp, 2) ? 0.0 : harness_uniform(rng, -0.7, 0.7);
+        g[v] = f;
+        lv[v] = live + (size_t)v * n;
+        if (!revealed)
+            memcpy(live + (size_t)v * n, f, (size_t)n * sizeof *f);
+    }
+    ic_jet_compose(want, P, sp_p, g, sp, scratch);
+    const double *Ps[1] = {P};
+    ic_jet_chain ch;
+    ic_jet_chain_init(&ch, sp_p, Ps, 1, lv, sp, work);
+    if (linear)
+        ic_jet_chain_set_delta_degree(&ch, 1);
+    got[0] = P[0];
+    for (int k = 1; k <= K; k++) {
+        ic_jet_chain_extend(&ch, k);
+        ic_jet_chain_part(&ch, got, P, k);
+        for (int i = ic_jet_degree_start(sp, k); revealed && i < ic_jet_degree_start(sp, k + 1); i++)
+            for (int v = 0; v < p; v++) {
+                live[(size_t)v * n + i] = g[v][i];
+                got[i] += P[1 + v] * g[v][i];
+            }
+    }
+    CHECK(max_abs_diff(got, want, n) <= 1e-13 * mag(want, n),
+          "chain = compose (p %d, m %d, K %d, sparse %d, revealed %d, linear %d): %g", p, m, K,
+          sparse, revealed, linear, max_abs_diff(got, want, n));
+free_all:
+    free(P), free(want), free(got), free(full), free(live), free(work), free(scratch);
+done:
+    ic_jet_space_free(sp_p);
+    ic_jet_space_free(sp);
+}
+
+static void test_chain(harness_rng *rng)
+{
+    const int pm[5][2] = {{1, 1}, {2, 1}, {3, 1}, {2, 2}, {3, 2}};
+    for (int c = 0; c < 5; c++)
+        for (int sparse = 0; sparse < 2; sparse++)
+            for (int revealed = 0; revealed < 2; revealed++)
+                check_chain(pm[c][0], pm[c][1], pm[c][1] == 1 ? 12 : 7, sparse, revealed, 0, rng);
+    check_chain(2, 2, 9, 0, 0, 1, rng);
+    check_chain(3, 2, 7, 1, 0, 1, rng);
+}
+
 int main(void)
 {
     harness_rng rng = {0x9e3779b97f4a7c15ull};
@@ -320,6 +399,7 @@ int main(void)
     test_identities(4, 6, &rng);
     test_compose(&rng);
     test_reversion(&rng);
+    test_chain(&rng);
     test_domain_errors();
     return harness_finish("test_jet");
 }

@@ -180,6 +180,66 @@ static void test_side_on_knot_line(void)
 
 static int inside(ic_interval iv, double x) { return iv.lo <= x && x <= iv.hi; }
 
+/* The jet method at a point on the double knot line u = 0.6: the sample
+ * patch cut by the plane through R(0.6, 0.1) normal to R_v, so the curve
+ * crosses the knot line. Its curvature is that of the piece the curve heads
+ * into (the tracer's forced side, ic_surface_set_knot_side, agrees), with
+ * the pair in both orders (the curve heads to either side). */
+static void test_jet_method_on_knot_line(void)
+{
+    ic_surface *s = sample_surface(), *plane = NULL;
+    ic_jet_space *sp = NULL;
+    ic_error err;
+    double t[9], P[3], Rv[3];
+    if (!s || !REQUIRE(ic_jet_space_new(&sp, 2, 1, &err) == IC_OK, "space") ||
+        !REQUIRE(ic_surface_taylor(s, t, (double[]){0.6, 0.1}, sp, &err) == IC_OK, "taylor"))
+        goto done;
+    for (int c = 0; c < 3; c++)
+        P[c] = t[3 * c], Rv[c] = t[3 * c + 2];
+    ic_primitive pl = {.kind = IC_PRIM_PLANE};
+    memcpy(pl.center, P, sizeof P);
+    memcpy(pl.normal, Rv, sizeof Rv);
+    if (!REQUIRE(ic_surface_new_primitive(&plane, &pl, IC_IMPLICIT, &err) == IC_OK, "plane"))
+        goto done;
+    for (int first = 0; first < 2; first++) {
+        ic_pair *pair = NULL;
+        ic_local_options opt;
+        ic_local_defaults(&opt);
+        ic_local_point pt;
+        if (!REQUIRE(ic_pair_new(&pair, first ? plane : s, first ? s : plane, &err) == IC_OK &&
+                         ic_local_locate(pair, &pt, P, &opt, &err) == IC_OK,
+                     "locate: %s", err.message)) {
+            ic_pair_free(pair);
+            break;
+        }
+        memcpy(pt.xyz, P, sizeof P); /* exactly on the knot line */
+        pt.params[first][0] = 0.6, pt.params[first][1] = 0.1;
+        double kappa[3]; /* heading by itself, forced left, forced right */
+        int heading = 0;
+        for (int side = 0; side < 3; side++) {
+            ic_surface_set_knot_side(s, (int[]){side == 0 ? 0 : side == 1 ? -1 : 1, 0});
+            ic_local_result res;
+            kappa[side] = NAN;
+            if (ic_local_apparatus(pair, &res, &pt, 3, IC_METHOD_JET, &opt, &err) == IC_OK)
+                kappa[side] = res.branches[0].kappa;
+            if (side == 0)
+                heading = res.branches[0].param_derivs[first][0][0] > 0 ? 1 : -1;
+        }
+        ic_surface_set_knot_side(s, (int[]){0, 0});
+        const double want = kappa[heading > 0 ? 2 : 1];
+        CHECK(fabs(kappa[0] - want) <= 1e-12 * fabs(want),
+              "pair order %d, heading %d: kappa %.15g, the piece's %.15g", first, heading,
+              kappa[0], want);
+        CHECK(fabs(kappa[1] - kappa[2]) > 1e-3 * fabs(want), "the pieces' kappa differ: %g %g",
+              kappa[1], kappa[2]);
+        ic_pair_free(pair);
+    }
+done:
+    ic_jet_space_free(sp);
+    ic_surface_free(plane);
+    ic_surface_free(s);
+}
+
 /* Random boxes (across knot lines, tiny, of zero width on a knot): every
  * sampled point and first derivative lies in the enclosures. Returns the
  * largest ratio of enclosure width to sampled spread on boxes of width
@@ -452,6 +512,7 @@ int main(int argc, char **argv)
 {
     test_points_against_definition();
     test_side_on_knot_line();
+    test_jet_method_on_knot_line();
     test_enclosures();
     test_problem_errors();
     if (REQUIRE(argc > 1, "usage: test_nurbs SOURCE_DIR"))

@@ -1,10 +1,12 @@
 /* Surfaces: derivatives against sympy truth (tests/truth/surface_truth.txt),
  * primitives against their formula forms, principal curvatures in closed
  * form, degenerate points, callbacks and composition. */
+#include <stdio.h>
 #include <string.h>
 
 #include "harness.h"
 #include "intercurve/surface.h"
+#include "surface/surface_jets.h"
 
 #define ORDER 6
 
@@ -467,6 +469,82 @@ static void test_invalid(void)
     ic_surface_free(s);
 }
 
+/* A primitive along a curve one order at a time (ic_primitive_along, the
+ * jet method's) against ic_surface_compose on the same curve: every kind,
+ * parametric along a parameter curve and implicit along a space curve, in
+ * standard position and placed. At each order the first step, with the
+ * curve's order-k coefficients 0, must give the order-k coefficient of the
+ * surface composed with the curve cut there, the second, with them, the
+ * full one's. */
+static void check_along(ic_surface *srf, const char *what, harness_rng *rng)
+{
+    enum { K = 12 };
+    ic_jet_space *s1 = NULL;
+    if (!REQUIRE(ic_jet_space_new(&s1, 1, K, NULL) == IC_OK, "space"))
+        return;
+    const int nin = ic_surface_num_vars(srf), nout = ic_surface_num_outputs(srf);
+    double in[3][K + 1], cut[3][K + 1], out[3 * (K + 1)], first[3], final[3], at[3];
+    for (int i = 0; i < nin; i++) {
+        for (int k = 0; k <= K; k++)
+            in[i][k] = harness_uniform(rng, -0.5, 0.5);
+        in[i][0] += 1.0;
+        at[i] = in[i][0];
+    }
+    ic_primitive_along pa;
+    CHECK(ic_primitive_along_serves(srf), "%s: a primitive is served", what);
+    ic_primitive_along_start(&pa, srf, at);
+    double worst = 0.0, scale = 1.0;
+    for (int k = 1; k <= K; k++) {
+        ic_primitive_along_step(&pa, k, first);
+        for (int i = 0; i < nin; i++)
+            pa.in[i][k] = in[i][k];
+        ic_primitive_along done = pa; /* the next order starts from the finished one */
+        ic_primitive_along_step(&done, k, final);
+        ic_primitive_along_finish(&pa, k);
+        for (int pass = 0; pass < 2; pass++) {
+            for (int i = 0; i < nin; i++)
+                for (int j = 0; j <= K; j++)
+                    cut[i][j] = j < k || (pass && j == k) ? in[i][j] : 0.0;
+            const double *ins[3] = {cut[0], cut[1], cut[2]};
+            if (!REQUIRE(ic_surface_compose(srf, out, ins, s1, NULL) == IC_OK, "compose"))
+                break;
+            for (int c = 0; c < nout; c++) {
+                const double want = out[c * (K + 1) + k], got = pass ? final[c] : first[c];
+                worst = fmax(worst, fabs(got - want));
+                scale = fmax(scale, fabs(want));
+            }
+        }
+    }
+    CHECK(worst <= 1e-13 * scale, "%s along a curve: %g (scale %g)", what, worst, scale);
+    ic_jet_space_free(s1);
+}
+
+static void test_primitive_along(harness_rng *rng)
+{
+    const ic_primitive_kind kinds[6] = {IC_PRIM_PLANE, IC_PRIM_SPHERE, IC_PRIM_CYLINDER,
+                                        IC_PRIM_CONE, IC_PRIM_TORUS, IC_PRIM_ELLIPSOID};
+    for (int i = 0; i < 24; i++) {
+        ic_primitive p;
+        memset(&p, 0, sizeof p);
+        p.kind = kinds[i % 6];
+        const int placed = i % 12 >= 6, form = i >= 12 ? IC_IMPLICIT : IC_PARAMETRIC;
+        p.center[0] = 0.3, p.center[1] = -1.2, p.center[2] = 0.7;
+        p.radius = p.kind == IC_PRIM_TORUS ? 0.5 : 1.5;
+        p.major_radius = 2.0, p.half_angle = 0.4;
+        p.axes[0] = 1.5, p.axes[1] = 0.8, p.axes[2] = 1.1;
+        p.normal[0] = 0.2, p.normal[1] = -0.4, p.normal[2] = 1.0;
+        if (placed && p.kind != IC_PRIM_PLANE) /* (the plane is placed by its normal) */
+            p.axis[0] = 0.3, p.axis[1] = -0.5, p.axis[2] = 0.8;
+        ic_surface *srf = NULL;
+        char what[64];
+        snprintf(what, sizeof what, "primitive kind %d, %s%s", (int)p.kind,
+                 form == IC_IMPLICIT ? "implicit" : "parametric", placed ? ", placed" : "");
+        if (REQUIRE(ic_surface_new_primitive(&srf, &p, form, NULL) == IC_OK, "%s", what))
+            check_along(srf, what, rng);
+        ic_surface_free(srf);
+    }
+}
+
 int main(int argc, char **argv)
 {
     harness_rng rng = {0xD1B54A32D192ED03ull};
@@ -478,5 +556,6 @@ int main(int argc, char **argv)
     test_principal_curvatures();
     test_callback_and_compose();
     test_invalid();
+    test_primitive_along(&rng);
     return harness_finish("test_surface");
 }

@@ -6,7 +6,11 @@
  * variable uses its precomputed powers, so the innermost polynomials are mere
  * linear combinations. Every delta has no constant term, so degrees above K
  * vanish and the schemes stop there.
+ *
+ * The reversions find the series degree by degree, so they compose one
+ * degree at a time (jet_chain.h) instead of recomposing at every degree.
  */
+#include "jet_chain.h"
 #include "jet_internal.h"
 
 #include <math.h>
@@ -93,7 +97,9 @@ void ic_jet_compose(double *out, const double *P, const ic_jet_space *sp_p,
 }
 
 /* g_1 = y / f_1; then for k = 2..K the degree-k coefficient of f(g) - f(0)
- * must vanish, and it depends on g_k only through f_1 g_k. */
+ * must vanish, and it depends on g_k only through f_1 g_k: with g_k = 0
+ * still, g_k = -[f(g)]_k / f_1, the powers of g extended one degree per
+ * step (jet_chain.h). */
 ic_status ic_jet_revert(double *g, const double *f, const ic_jet_space *sp, double *scratch,
                         ic_error *err)
 {
@@ -107,8 +113,12 @@ ic_status ic_jet_revert(double *g, const double *f, const ic_jet_space *sp, doub
     g[1] = 1.0 / f[1];
     double *h = scratch;
     const double *gs[1] = {g};
+    ic_jet_chain ch;
+    const double *fs[1] = {f};
+    ic_jet_chain_init(&ch, sp, fs, 1, gs, sp, scratch + sp->n);
     for (int k = 2; k <= sp->K; k++) {
-        compose_upto(h, f, sp, gs, sp, scratch + sp->n, k);
+        ic_jet_chain_extend(&ch, k);
+        ic_jet_chain_part(&ch, h, f, k);
         g[k] = -h[k] / f[1];
     }
     return IC_OK;
@@ -136,12 +146,15 @@ ic_status ic_jet_revert2(double *const g[2], const double *const f[2], const ic_
     g[0][2] = i01;
     g[1][1] = i10;
     g[1][2] = i11;
-    double *h0 = scratch, *h1 = scratch + sp->n, *rest = scratch + 2 * sp->n;
+    double *h0 = scratch, *h1 = scratch + sp->n;
     const double *gs[2] = {g[0], g[1]};
+    ic_jet_chain ch;
+    ic_jet_chain_init(&ch, sp, f, 2, gs, sp, scratch + 2 * sp->n);
     for (int k = 2; k <= sp->K; k++) {
-        compose_upto(h0, f[0], sp, gs, sp, rest, k);
-        compose_upto(h1, f[1], sp, gs, sp, rest, k);
-        /* G_k -= L^{-1} H_k on the degree-k part */
+        /* [F(G)]_k with G_k = 0 still; G_k -= L^{-1} [F(G)]_k */
+        ic_jet_chain_extend(&ch, k);
+        ic_jet_chain_part(&ch, h0, f[0], k);
+        ic_jet_chain_part(&ch, h1, f[1], k);
         for (int i = sp->deg_start[k]; i < sp->deg_start[k + 1]; i++) {
             g[0][i] -= i00 * h0[i] + i01 * h1[i];
             g[1][i] -= i10 * h0[i] + i11 * h1[i];

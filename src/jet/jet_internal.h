@@ -17,6 +17,10 @@ struct ic_jet_space {
      * over p, then q), the index of x^(alpha_p + alpha_q). */
     int *pair_idx;
     size_t *block_off; /* [(K + 1) * (K + 1)] */
+    /* For |alpha| >= 1: the first variable v with alpha_v > 0 and the index
+     * of x^(alpha - e_v), so that x^alpha = x_v x^(alpha - e_v) (jet_chain.c). */
+    int *lower_var;
+    int *lower;
 };
 
 /* out[deg j+k part] += f * (deg-j part of a) * (deg-k part of b). */

@@ -1,4 +1,5 @@
 /* Jet spaces: the monomial order and the product tables (jet.h). */
+#include "jet_chain.h"
 #include "jet_internal.h"
 
 #include <stdlib.h>
@@ -36,6 +37,23 @@ static int code_of(const ic_jet_space *sp, const int *alpha)
     return code;
 }
 
+/* lower_var and lower of monomial i (after the lookup table); -1 for 1. */
+static void lower_monomial(ic_jet_space *sp, int i)
+{
+    int alpha[IC_JET_MAX_VARS];
+    ic_jet_exponents(sp, i, alpha);
+    int v = 0;
+    while (v < sp->m && alpha[v] == 0)
+        v++;
+    if (v == sp->m) {
+        sp->lower_var[i] = sp->lower[i] = -1;
+        return;
+    }
+    alpha[v]--;
+    sp->lower_var[i] = v;
+    sp->lower[i] = sp->lookup[code_of(sp, alpha)];
+}
+
 ic_status ic_jet_space_new(ic_jet_space **out, int nvars, int order, ic_error *err)
 {
     *out = NULL;
@@ -60,7 +78,10 @@ ic_status ic_jet_space_new(ic_jet_space **out, int nvars, int order, ic_error *e
     sp->fact = malloc((size_t)n * sizeof *sp->fact);
     sp->lookup = malloc((size_t)codes * sizeof *sp->lookup);
     sp->block_off = malloc((size_t)(K + 1) * (size_t)(K + 1) * sizeof *sp->block_off);
-    if (!sp->deg_start || !sp->exps || !sp->fact || !sp->lookup || !sp->block_off)
+    sp->lower_var = malloc((size_t)n * sizeof *sp->lower_var);
+    sp->lower = malloc((size_t)n * sizeof *sp->lower);
+    if (!sp->deg_start || !sp->exps || !sp->fact || !sp->lookup || !sp->block_off ||
+        !sp->lower_var || !sp->lower)
         goto nomem;
 
     int count = 0;
@@ -80,6 +101,8 @@ ic_status ic_jet_space_new(ic_jet_space **out, int nvars, int order, ic_error *e
         sp->fact[i] = f;
         sp->lookup[code_of(sp, sp->exps + i * m)] = i;
     }
+    for (int i = 0; i < n; i++)
+        lower_monomial(sp, i);
 
     size_t total = 0;
     for (int j = 0; j <= K; j++)
@@ -121,6 +144,8 @@ void ic_jet_space_free(ic_jet_space *sp)
     free(sp->lookup);
     free(sp->pair_idx);
     free(sp->block_off);
+    free(sp->lower_var);
+    free(sp->lower);
     free(sp);
 }
 
@@ -132,7 +157,13 @@ size_t ic_jet_scratch_len(const ic_jet_space *sp)
 {
     /* composition: K + 1 powers, 3 per nesting level (<= 4 levels); reversion
      * and the functions with auxiliary series: 4 more (docs/jets.md). */
-    return (size_t)(sp->K + 1 + 3 * IC_JET_MAX_VARS + 4) * (size_t)sp->n;
+    const size_t len = (size_t)(sp->K + 1 + 3 * IC_JET_MAX_VARS + 4) * (size_t)sp->n;
+    if (sp->m > 2)
+        return len;
+    /* the reversions: their one-degree-at-a-time composition (jet_chain.h)
+     * keeps every power product of the series, after m results */
+    const size_t revert = (size_t)sp->m * (size_t)sp->n + ic_jet_chain_len(sp, sp->K, sp);
+    return revert > len ? revert : len;
 }
 
 int ic_jet_degree_start(const ic_jet_space *sp, int d)

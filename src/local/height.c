@@ -4,12 +4,16 @@
  * psi a bivariate jet.
  *  - implicit f: f(P + x e1 + y e2 + psi N) = 0 solved degree by degree:
  *    psi_d = -[f(X with psi_<d)]_d / (grad f . N), after a Newton solve for
- *    the constant psi_0 (the sheet's offset from P along N);
+ *    the constant psi_0 (the sheet's offset from P along N); step d composes
+ *    f in a space of order d only (the jets' higher degrees do not enter
+ *    their degree-d part), which costs a third of composing at order H
+ *    every time at H = 12;
  *  - parametric R: the map (u, v) -> (x, y) = ((R - P).e1, (R - P).e2) is
  *    reverted as a bivariate series G, and psi = ((R - P).N) o G.
  */
 #include "tangential.h"
 #include "common/vec3.h"
+#include "surface/surface_jets.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -21,10 +25,10 @@ static ic_status implicit_height(ic_surface *s, double *psi, const ic_heights *h
     const int n = ic_jet_space_len(sp);
     /* psi_0 and the normal derivative by Newton along N */
     double psi0 = 0.0, t1[4], fN = 0.0;
-    ic_jet_space *s1 = NULL;
-    ic_status st = ic_jet_space_new(&s1, 3, 1, err);
-    if (st != IC_OK)
-        return st;
+    const ic_jet_space *s1 = ic_surface_space(s, 1, err); /* cached there */
+    if (!s1)
+        return err ? err->code : IC_ERR_NOMEM;
+    ic_status st = IC_OK;
     for (int it = 0; it < 50; it++) {
         double X[3];
         ic_axpy3(X, h->P, psi0, h->N);
@@ -41,7 +45,6 @@ static ic_status implicit_height(ic_surface *s, double *psi, const ic_heights *h
         if (fabs(step) <= 1e-16 * (1 + fabs(psi0)))
             break;
     }
-    ic_jet_space_free(s1);
     if (st != IC_OK)
         return st;
     double *X[3] = {work, work + n, work + 2 * n}, *F = work + 3 * n;
@@ -49,17 +52,20 @@ static ic_status implicit_height(ic_surface *s, double *psi, const ic_heights *h
     psi[0] = psi0;
     const int H = ic_jet_space_order(sp);
     for (int d = 1; d <= H; d++) {
+        /* the jets of order d are the first coefficients of those of order H */
+        const ic_jet_space *spd = d < H ? ic_surface_plane_space(s, d, err) : sp;
+        if (!spd)
+            return err ? err->code : IC_ERR_NOMEM;
+        const int nd = ic_jet_space_len(spd);
         for (int i = 0; i < 3; i++) {
-            for (int k = 0; k < n; k++)
+            for (int k = 0; k < nd; k++)
                 X[i][k] = psi[k] * h->N[i];
             X[i][0] += h->P[i];
-            if (H >= 1) {
-                X[i][1] += h->e1[i];
-                X[i][2] += h->e2[i];
-            }
+            X[i][1] += h->e1[i];
+            X[i][2] += h->e2[i];
         }
         const double *in[3] = {X[0], X[1], X[2]};
-        st = ic_surface_compose(s, F, in, sp, err);
+        st = ic_surface_compose(s, F, in, spd, err);
         if (st != IC_OK)
             return st;
         for (int k = ic_jet_degree_start(sp, d); k < ic_jet_degree_start(sp, d + 1); k++)

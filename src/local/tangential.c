@@ -17,6 +17,8 @@
 #include "tangential.h"
 #include "common/mathconst.h"
 #include "common/vec3.h"
+#include "jet/jet_chain.h"
+#include "surface/surface_jets.h"
 
 #include <float.h>
 #include <math.h>
@@ -43,7 +45,10 @@ enum { MAX_LEN2 = (IC_JET_MAX_ORDER + 1) * (IC_JET_MAX_ORDER + 2) / 2 };
 
 /* out(r, w) = a(r d + w dp). The substitution's jets are on the stack: a
  * failed allocation here could not be reported (found by tests/test_nomem.c,
- * "apparatus, tangential": the branches came from uninitialised memory). */
+ * "apparatus, tangential": the branches came from uninitialised memory).
+ * The substitution is linear, so the power products of the composition one
+ * degree at a time (jet/jet_chain.h) are homogeneous: each is one product,
+ * where the nested Horner scheme of ic_jet_compose multiplies whole jets. */
 static void rotate(const tctx *cx, double *out, const double *a, const double *d, const double *dp)
 {
     double X[MAX_LEN2], Y[MAX_LEN2];
@@ -51,8 +56,15 @@ static void rotate(const tctx *cx, double *out, const double *a, const double *d
     ic_jet_zero(Y, cx->sp2);
     X[1] = d[0], X[2] = dp[0];
     Y[1] = d[1], Y[2] = dp[1];
-    const double *in[2] = {X, Y};
-    ic_jet_compose(out, a, cx->sp2, in, cx->sp2, cx->s2);
+    const double *in[2] = {X, Y}, *P[1] = {a};
+    ic_jet_chain ch;
+    ic_jet_chain_init(&ch, cx->sp2, P, 1, in, cx->sp2, cx->s2);
+    ic_jet_chain_set_delta_degree(&ch, 1);
+    out[0] = a[0];
+    for (int k = 1; k <= cx->H; k++) {
+        ic_jet_chain_extend(&ch, k);
+        ic_jet_chain_part(&ch, out, a, k);
+    }
 }
 
 /* out = d a / dw (the second variable) */
@@ -80,6 +92,26 @@ static void along(const tctx *cx, double *out, const double *a, const double *w)
     (void)n1;
     const double *in[2] = {r, w};
     ic_jet_compose(out, a, cx->sp2, in, cx->sp1, cx->s1);
+}
+
+/* w(r) with w(0) = 0 from a(r, w(r)) = 0, dG = da/dw(0, 0): the degree-k
+ * coefficient of a(r, w) depends on w_k only through dG w_k, so a is
+ * composed with (r, w) one degree at a time (jet/jet_chain.h) while w is
+ * found, instead of once per degree. Returns the valid orders, H. */
+static int solve_curve(const tctx *cx, double *w, const double *a, double dG)
+{
+    double r[IC_JET_MAX_ORDER + 1], S[IC_JET_MAX_ORDER + 1];
+    ic_jet_set_var(r, 0.0, 0, cx->sp1);
+    ic_jet_zero(w, cx->sp1);
+    const double *in[2] = {r, w}, *P[1] = {a};
+    ic_jet_chain ch; /* sp2's scratch holds its power products over sp1 */
+    ic_jet_chain_init(&ch, cx->sp2, P, 1, in, cx->sp1, cx->s2);
+    for (int k = 1; k <= cx->H; k++) {
+        ic_jet_chain_extend(&ch, k);
+        ic_jet_chain_part(&ch, S, a, k);
+        w[k] = -S[k] / dG;
+    }
+    return cx->H;
 }
 
 /* w(r) = base(r) + r^p omega(r), omega(0) = omega0, from G = a(r, w)/r^q = 0
@@ -286,7 +318,7 @@ static ic_status polar_curve_new(const tctx *cx, polar_curve *pc, const double *
     rotate(cx, pc->gr, g, d, dp);
     pc->lambda = pc->gr[idx2(sp2, 0, 2)];
     deriv_w(sp2, dw, pc->gr);
-    solve_branch(cx, pc->phi, dw, NULL, 0, 0, 0.0, 2 * pc->lambda);
+    solve_curve(cx, pc->phi, dw, 2 * pc->lambda);
     along(cx, pc->h, pc->gr, pc->phi);
     rotate(cx, rot, cx->h->psi[0], d, dp);
     along(cx, pc->hA, rot, pc->phi);
@@ -374,7 +406,8 @@ static ic_status degenerate(const tctx *cx, ic_local_result *res, const double *
 /* The expansion at the sheets' point: jet spaces of order H, scratch and
  * the heights (ic_height_close frees them). */
 typedef struct {
-    ic_jet_space *sp2, *sp1;
+    const ic_jet_space *sp2; /* the first sheet's surface's (cached there) */
+    ic_jet_space *sp1;
     double *s2, *s1;
     ic_heights h;
     double linear[2]; /* g's linear part (x, y), set aside */
@@ -386,14 +419,16 @@ static void expansion_close(expansion *ex)
     free(ex->s1);
     free(ex->s2);
     ic_jet_space_free(ex->sp1);
-    ic_jet_space_free(ex->sp2);
 }
 
 static ic_status expansion_open(expansion *ex, tctx *cx, const ic_sheet sh[2], int H,
                                 const ic_local_options *opt, ic_error *err)
 {
     memset(ex, 0, sizeof *ex);
-    ic_status st = ic_jet_space_new(&ex->sp2, 2, H, err);
+    ic_status st = IC_OK;
+    ex->sp2 = ic_surface_plane_space(sh[0].s, H, err);
+    if (!ex->sp2)
+        st = err ? err->code : IC_ERR_NOMEM;
     if (st == IC_OK)
         st = ic_jet_space_new(&ex->sp1, 1, H, err);
     if (st != IC_OK) {

@@ -185,8 +185,10 @@ void ic_surface_free(ic_surface *s)
         return;
     ic_nurbs_patch_free(s->nurbs);
     ic_expr_free(s->expr);
-    for (int k = 0; k <= IC_JET_MAX_ORDER; k++)
+    for (int k = 0; k <= IC_JET_MAX_ORDER; k++) {
         ic_jet_space_free(s->spaces[k]);
+        ic_jet_space_free(s->plane_spaces[k]);
+    }
     free(s->work[0]);
     free(s->work[1]);
     free(s);
@@ -319,6 +321,18 @@ const ic_jet_space *ic_surface_space(ic_surface *s, int order, ic_error *err)
     return s->spaces[order];
 }
 
+const ic_jet_space *ic_surface_plane_space(ic_surface *s, int order, ic_error *err)
+{
+    if (order < 0 || order > IC_JET_MAX_ORDER) {
+        ic_error_set(err, IC_ERR_INVALID, 0, "order %d outside 0..%d", order, IC_JET_MAX_ORDER);
+        return NULL;
+    }
+    if (!s->plane_spaces[order] &&
+        ic_jet_space_new(&s->plane_spaces[order], 2, order, err) != IC_OK)
+        return NULL;
+    return s->plane_spaces[order];
+}
+
 /* Callback: partial derivatives in, Taylor coefficients out. */
 static ic_status callback_taylor(ic_surface *s, double *out, const double *at,
                                  const ic_jet_space *sp, ic_error *err)
@@ -424,6 +438,30 @@ ic_status ic_surface_taylor(ic_surface *s, double *out, const double *at, const 
         return nurbs_taylor(s, out, at, NULL, sp, err);
     }
     return ic_error_set(err, IC_ERR_INVALID, 0, "corrupt surface");
+}
+
+int ic_surface_is_formula(const ic_surface *s) { return s->backend == BACKEND_FORMULA; }
+
+int ic_surface_polynomial_degree(const ic_surface *s)
+{
+    if (s->backend != BACKEND_PRIMITIVE)
+        return -1;
+    if (s->prim.kind == IC_PRIM_PLANE)
+        return 1; /* placement is linear: degrees stay */
+    if (s->kind == IC_PARAMETRIC)
+        return -1;
+    return s->prim.kind == IC_PRIM_TORUS ? 4 : 2;
+}
+
+ic_status ic_surface_taylor_toward(ic_surface *s, double *out, const double *at,
+                                   const double *heading, const ic_jet_space *sp, ic_error *err)
+{
+    if (s->backend != BACKEND_NURBS || !heading || ic_jet_space_num_vars(sp) != 2)
+        return ic_surface_taylor(s, out, at, sp, err);
+    for (int i = 0; i < 2; i++)
+        if (!isfinite(at[i]))
+            return ic_error_set(err, IC_ERR_INVALID, 0, "non-finite coordinate %d", i + 1);
+    return nurbs_taylor(s, out, at, heading, sp, err);
 }
 
 ic_status ic_surface_compose(ic_surface *s, double *out, const double *const *in,

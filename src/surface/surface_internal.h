@@ -25,6 +25,8 @@ struct ic_surface {
     /* Spaces of the surface's own inputs (2 or 3 variables), by order,
      * created on first use, and a growing workspace. */
     ic_jet_space *spaces[IC_JET_MAX_ORDER + 1];
+    /* two-variable spaces by order, made on first use (ic_surface_plane_space) */
+    ic_jet_space *plane_spaces[IC_JET_MAX_ORDER + 1];
     double *work[2];
     size_t work_len[2];
 };
@@ -35,8 +37,8 @@ enum { IC_WORK_EVAL = 0, IC_WORK_COMPOSE = 1 };
 
 /* Workspace slot of at least len doubles (grows, keeps nothing). NULL on OOM. */
 double *ic_surface_work(ic_surface *s, int slot, size_t len);
-/* The space of the surface's inputs at this order (cached). */
-const ic_jet_space *ic_surface_space(ic_surface *s, int order, ic_error *err);
+/* ic_surface_space, ic_surface_taylor_toward */
+#include "surface_jets.h"
 
 /* Primitives (primitive.c) */
 ic_status ic_primitive_check(ic_surface *s, ic_error *err);

@@ -239,13 +239,14 @@ ic_status ic_trace_join_curves(ic_trace_result *r, double shape_tol, double max_
 
 /* Drops a curve that runs along another, longer one all the way (traced
  * twice from two start points: it happens where one trace stopped early, at a
- * degenerate point of a parametrization, before covering the other start). */
-void ic_trace_drop_duplicates(ic_trace_result *r, double radius)
+ * degenerate point of a parametrization, before covering the other start).
+ * IC_ERR_NOMEM (nothing changed) when its table does not fit. */
+ic_status ic_trace_drop_duplicates(ic_trace_result *r, double radius)
 {
     /* each curve's box once: thousands of small loops meet each other */
     double(*box)[2][3] = malloc((size_t)(r->ncurves > 0 ? r->ncurves : 1) * sizeof *box);
-    if (!box)
-        return; /* duplicates stay: nothing is lost */
+    if (!box) /* duplicates kept would be another result: the caller reports it */
+        return IC_ERR_NOMEM;
     for (int c = 0; c < r->ncurves; c++)
         ic_trace_curve_box(r->curves[c].points, r->curves[c].npoints, radius, box[c][0],
                            box[c][1]);
@@ -273,4 +274,5 @@ void ic_trace_drop_duplicates(ic_trace_result *r, double radius)
         a--;
     }
     free(box);
+    return IC_OK;
 }

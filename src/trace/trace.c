@@ -887,8 +887,8 @@ static ic_status trace(ic_trace_result **out, ic_pair *pair, const ic_trace_opti
         st = ic_trace_resolve_cells(r, tr, pair, opt, &unres, &nu, err);
     if (st == IC_OK)
         st = ic_trace_complete_branches(r, tr, pair, opt);
-    if (st == IC_OK)
-        ic_trace_drop_duplicates(r, IC_TRACE_ON_CURVE * r->scale);
+    if (st == IC_OK && ic_trace_drop_duplicates(r, IC_TRACE_ON_CURVE * r->scale) != IC_OK)
+        st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory dropping duplicate curves");
     if (st == IC_OK && ic_trace_join_curves(r, opt->shape_tol, 50 * opt->chord) != IC_OK)
         st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory joining curves");
     /* a surface's singular point counted the curve ends met there: two a branch */

@@ -188,7 +188,8 @@ double ic_trace_gap_length(const ic_trace_point *p, const double *t0, const ic_t
 /* max_gap: the largest gap bridged where a curve passes a degenerate point
  * of a parametrization */
 ic_status ic_trace_join_curves(ic_trace_result *r, double shape_tol, double max_gap);
-void ic_trace_drop_duplicates(ic_trace_result *r, double radius);
+/* IC_ERR_NOMEM when out of memory (join.c) */
+ic_status ic_trace_drop_duplicates(ic_trace_result *r, double radius);
 
 /* singular.c */
 int ic_trace_found_near(const ic_trace_result *r, const ic_unresolved *u);

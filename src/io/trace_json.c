@@ -4,6 +4,8 @@
 
 #include "io/json_out.h"
 
+#include <string.h>
+
 static cJSON *point_json(json_out *j, const ic_trace_point *p, const ic_trace_curve *c,
                          const ic_trace_result *res, const int parametric[2])
 {
@@ -103,13 +105,16 @@ static cJSON *report_json(json_out *j, const ic_trace_report *rep)
 {
     cJSON *ro = cJSON_CreateObject();
     ic_json_out_add(j, ro, "complete", cJSON_CreateBool(rep->complete));
+    ic_json_out_add(j, ro, "method", cJSON_CreateString(rep->method ? rep->method : "search"));
     ic_json_out_add(j, ro, "cells", cJSON_CreateNumber(rep->cells));
     ic_json_out_add(j, ro, "cells_excluded_by_intervals", cJSON_CreateNumber(rep->cells_excluded));
     ic_json_out_add(j, ro, "cells_excluded_by_centred_forms",
                  cJSON_CreateNumber(rep->cells_excluded_centred));
     ic_json_out_add(j, ro, "exclusion_proven", cJSON_CreateBool(rep->proven));
+    const int searched = !rep->method || strcmp(rep->method, "search") == 0;
     ic_json_out_add(j, ro, "sampled",
-                 cJSON_CreateString(rep->proven
+                 cJSON_CreateString(!searched ? "nothing: the intersection is in closed form"
+                                    : rep->proven
                                         ? "start points inside the cells that were not excluded"
                                         : "everything: a surface has no interval evaluation"));
     ic_json_out_add(j, ro, "smallest_cell", ic_json_out_number(j, rep->cell_size));

@@ -258,11 +258,23 @@ ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local
     return IC_OK;
 }
 
-/* Adds the curve of the points pts (the result's from now on, freed with it
- * even when this fails). */
-static ic_status add_curve(ic_trace_result *r, ic_trace_point *pts, int n, int closed,
-                           ic_trace_event e0, ic_trace_event e1, double shape_tol, int at0, int at1,
-                           ic_error *err)
+int ic_trace_add_exact_special(ic_trace_result *r, const double *xyz, ic_point_type type)
+{
+    if (grow_specials(r) != 0)
+        return -1;
+    ic_trace_located *loc = &r->located[r->nspecials];
+    memset(loc, 0, sizeof *loc);
+    memcpy(loc->pt.xyz, xyz, sizeof loc->pt.xyz);
+    ic_trace_special *s = &r->specials[r->nspecials++];
+    memset(s, 0, sizeof *s);
+    memcpy(s->xyz, xyz, sizeof s->xyz);
+    s->type = type;
+    return 0;
+}
+
+ic_status ic_trace_add_curve(ic_trace_result *r, ic_trace_point *pts, int n, int closed,
+                             ic_trace_event e0, ic_trace_event e1, double shape_tol, int at0,
+                             int at1, ic_error *err)
 {
     if (r->ncurves == r->capc) {
         const int cap = r->capc ? 2 * r->capc : 8;
@@ -512,7 +524,7 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
     if (e1 == IC_TRACE_CLOSED) {
         *pts_out = fwd;
         *n_out = n1;
-        return add_curve(r, fwd, n1, 1, e1, e1, opt->shape_tol, -1, -1, err);
+        return ic_trace_add_curve(r, fwd, n1, 1, e1, e1, opt->shape_tol, -1, -1, err);
     }
     st = ic_tracer_start(tr, pt, -1, err);
     if (st == IC_OK)
@@ -562,7 +574,7 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
         *n_out = 0;
         return IC_OK;
     }
-    return add_curve(r, all, n0 + n1 - 1, 0, e0, e1, opt->shape_tol, at0, at1, err);
+    return ic_trace_add_curve(r, all, n0 + n1 - 1, 0, e0, e1, opt->shape_tol, at0, at1, err);
 }
 
 /* Traces a curve from every start candidate that no curve traced so far
@@ -849,13 +861,23 @@ static ic_status trace(ic_trace_result **out, ic_pair *pair, const ic_trace_opti
     r->scale = ic_trace_problem_scale(pair, user_opt);
     ic_trace_options eff = ic_trace_absolute_options(user_opt, r->scale);
     const ic_trace_options *opt = &eff;
+    r->report.method = ic_trace_method_search;
+    int exact = 0;
+    ic_status st = ic_trace_exact_revolution(r, pair, opt, &exact, err);
+    if (st != IC_OK || exact) {
+        if (st != IC_OK)
+            ic_trace_result_free(r);
+        else
+            *out = r;
+        return st;
+    }
     if (opt->time_limit > 0)
         r->budget.deadline = ic_trace_now() + opt->time_limit;
     ic_candidate *cand = NULL;
     ic_unresolved *unres = NULL;
     int nc = 0, nu = 0;
     ic_tracer *tr = NULL;
-    ic_status st = ic_trace_candidates(pair, opt, NULL, &cand, &nc, &unres, &nu, &r->report,
+    st = ic_trace_candidates(pair, opt, NULL, &cand, &nc, &unres, &nu, &r->report,
                                        &r->budget, err);
     r->first_cell_size = r->report.cell_size;
     /* the scale of the rest: where the first search left the intersection

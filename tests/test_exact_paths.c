@@ -218,6 +218,14 @@ static int exact_points_ok(const exact_case *c, const ic_trace_curve *cv, int i,
             ok = ok && fabs(p->n[m] + radial[m]) <= EXACT_REL &&
                  fabs(fabs(dot3(p->b, c->ax.e)) - 1) <= EXACT_REL &&
                  fabs(dot3(p->t, radial)) <= EXACT_REL && fabs(dot3(p->t, c->ax.e)) <= EXACT_REL;
+        /* in order along t: the chord from the last point is the arc's by s */
+        if (k > 0) {
+            const ic_trace_point *q = &cv->points[k - 1];
+            const double d[3] = {p->xyz[0] - q->xyz[0], p->xyz[1] - q->xyz[1], p->xyz[2] - q->xyz[2]};
+            const double ds = p->s - q->s;
+            ok = ok && ds > 0 && dot3(d, p->t) > 0 &&
+                 fabs(sqrt(dot3(d, d)) - 2 * rho * sin(ds / (2 * rho))) <= EXACT_REL * L;
+        }
         if (!ok)
             return 0;
     }
@@ -251,7 +259,7 @@ static void check_exact(traced_pair *t, const exact_case *c)
         CHECK(fabs(cv->length - 2 * PI * c->rho[i]) <= EXACT_REL * 2 * PI * c->rho[i],
               "%s: circle %d length %.17g, 2 pi rho = %.17g", c->name, i, cv->length,
               2 * PI * c->rho[i]);
-        CHECK(exact_points_ok(c, cv, i, t->L), "%s: circle %d: rho %.17g, z %.17g, kappa 1/rho, "
+        CHECK(exact_points_ok(c, cv, i, t->L), "%s: circle %d: rho %.17g, z %.17g, kappa 1/rho, in order, "
               "tau 0, n to the axis, b along it at every point", c->name, i, c->rho[i], c->z[i]);
         const double off = off_surfaces(t, cv);
         CHECK(off <= EXACT_ON_SURFACE * t->L, "%s: circle %d on both surfaces: %.3g", c->name, i,

@@ -240,40 +240,54 @@ static double circle_step(const ic_trace_options *opt, double rho)
     return fmin(h, sqrt(8 * opt->chord * rho));
 }
 
-/* The arcs a circle is traced in; 0 when the point budget is too small. */
+/* The arcs a circle is traced in, a multiple of 8 (circle_points); 0 when
+ * the point budget is too small. */
 static int circle_arcs(const ic_trace_options *opt, double rho)
 {
-    const double n = ceil(2 * IC_PI * rho / circle_step(opt, rho));
-    if (!(n + 1 <= opt->max_points))
-        return 0;
-    return n < IC_EXACT_MIN_ARCS ? IC_EXACT_MIN_ARCS : (int)n;
+    double n = ceil(2 * IC_PI * rho / circle_step(opt, rho) / 8) * 8;
+    n = n < IC_EXACT_MIN_ARCS ? IC_EXACT_MIN_ARCS : n;
+    return n + 1 <= opt->max_points ? (int)n : 0;
 }
 
-/* The closed circle's n + 1 points (the last the first again, at s = 2 pi
- * rho), with their exact apparatus: t along +u x ... (about e), n towards
- * the axis, b = e, kappa = 1 / rho, tau = 0. */
+/* Point k of n on the circle, at the angle whose cosine and sine are cs, sn:
+ * its exact apparatus: t about e (counterclockwise), n towards the axis,
+ * b = e, kappa = 1 / rho, tau = 0. */
+static void circle_point(ic_trace_point *p, int k, int n, const double *centre, const axis *ax,
+                         const piece_found *f, double cs, double sn)
+{
+    memset(p, 0, sizeof *p);
+    p->s = f->rho * (2 * IC_PI * k / n);
+    for (int i = 0; i < 3; i++) {
+        const double radial = cs * ax->u[i] + sn * ax->v[i];
+        p->xyz[i] = centre[i] + f->rho * radial;
+        p->t[i] = -sn * ax->u[i] + cs * ax->v[i];
+        p->n[i] = -radial;
+        p->b[i] = ax->e[i];
+    }
+    p->kappa = 1.0 / f->rho;
+    p->tau = 0.0;
+    p->angle = f->angle;
+    p->frame_defined = 1;
+}
+
+/* The closed circle's n + 1 points, n a multiple of 8, the last the first
+ * again at s = 2 pi rho. The cosine and sine of one octant serve all eight
+ * (exact reflections: a quarter of the time of computing each). */
 static void circle_points(ic_trace_point *pts, int n, const axis *ax, const piece_found *f)
 {
     double c[3];
     ic_axpy3(c, ax->o, f->z, ax->e);
-    for (int k = 0; k <= n; k++) {
-        const double phi = k == n ? 0.0 : 2 * IC_PI * k / n;
-        const double cs = cos(phi), sn = sin(phi);
-        ic_trace_point *p = &pts[k];
-        memset(p, 0, sizeof *p);
-        p->s = k == n ? 2 * IC_PI * f->rho : f->rho * (2 * IC_PI * k / n);
-        for (int i = 0; i < 3; i++) {
-            const double radial = cs * ax->u[i] + sn * ax->v[i];
-            p->xyz[i] = c[i] + f->rho * radial;
-            p->t[i] = -sn * ax->u[i] + cs * ax->v[i];
-            p->n[i] = -radial;
-            p->b[i] = ax->e[i];
-        }
-        p->kappa = 1.0 / f->rho;
-        p->tau = 0.0;
-        p->angle = f->angle;
-        p->frame_defined = 1;
+    const int q = n / 4;
+    for (int j = 0; j <= n / 8; j++) {
+        const double cs = cos(2 * IC_PI * j / n), sn = sin(2 * IC_PI * j / n);
+        const int k[8] = {j, q - j, q + j, 2 * q - j, 2 * q + j, 3 * q - j, 3 * q + j, (n - j) % n};
+        const double cc[8] = {cs, sn, -sn, -cs, -cs, -sn, sn, cs};
+        const double ss[8] = {sn, cs, cs, sn, -sn, -cs, -cs, -sn};
+        for (int m = 0; m < 8; m++)
+            circle_point(&pts[k[m]], k[m], n, c, ax, f, cc[m], ss[m]);
     }
+    pts[n] = pts[0];
+    pts[n].s = 2 * IC_PI * f->rho;
 }
 
 static ic_status add_pieces(ic_trace_result *r, const axis *ax, const piece_found *found, int nf,
@@ -297,11 +311,9 @@ static ic_status add_pieces(ic_trace_result *r, const axis *ax, const piece_foun
                                                 opt->shape_tol, -1, -1, err);
         if (st != IC_OK)
             return st;
-        if (f->tangent) {
-            ic_trace_curve *c = &r->curves[r->ncurves - 1];
-            c->tangential = 1;
-            c->shape = ic_trace_shape(c->points, c->npoints, c->length, c->shape_tol, 1);
-        }
+        /* its shape is a circle either way: all its angles are 0, and the
+         * shape test then takes every point, as along a tangential curve */
+        r->curves[r->ncurves - 1].tangential = f->tangent;
     }
     return IC_OK;
 }

@@ -307,12 +307,13 @@ static ic_status add_pieces(ic_trace_result *r, const axis *ax, const piece_foun
         if (!pts)
             return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory adding a curve");
         circle_points(pts, n, ax, f);
-        const ic_status st = ic_trace_add_curve(r, pts, n + 1, 1, IC_TRACE_CLOSED, IC_TRACE_CLOSED,
-                                                opt->shape_tol, -1, -1, err);
+        /* a circle by construction: kappa constant, tau 0 exactly, which
+         * the shape test (shape.c) reads as a circle at any tolerance */
+        const ic_status st =
+            ic_trace_add_shaped_curve(r, pts, n + 1, 1, IC_TRACE_CLOSED, IC_TRACE_CLOSED,
+                                      opt->shape_tol, IC_SHAPE_CIRCLE, -1, -1, err);
         if (st != IC_OK)
             return st;
-        /* its shape is a circle either way: all its angles are 0, and the
-         * shape test then takes every point, as along a tangential curve */
         r->curves[r->ncurves - 1].tangential = f->tangent;
     }
     return IC_OK;

@@ -272,9 +272,9 @@ int ic_trace_add_exact_special(ic_trace_result *r, const double *xyz, ic_point_t
     return 0;
 }
 
-ic_status ic_trace_add_curve(ic_trace_result *r, ic_trace_point *pts, int n, int closed,
-                             ic_trace_event e0, ic_trace_event e1, double shape_tol, int at0,
-                             int at1, ic_error *err)
+ic_status ic_trace_add_shaped_curve(ic_trace_result *r, ic_trace_point *pts, int n, int closed,
+                                    ic_trace_event e0, ic_trace_event e1, double shape_tol,
+                                    ic_shape shape, int at0, int at1, ic_error *err)
 {
     if (r->ncurves == r->capc) {
         const int cap = r->capc ? 2 * r->capc : 8;
@@ -305,10 +305,20 @@ ic_status ic_trace_add_curve(ic_trace_result *r, ic_trace_point *pts, int n, int
     c->ends[0] = e0;
     c->ends[1] = e1;
     c->shape_tol = shape_tol;
-    c->shape = ic_trace_shape(pts, n, c->length, shape_tol, 0);
+    c->shape = shape;
     if (r->index && ic_curve_index_add(r->index, r->ncurves - 1, pts, n) != 0)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory indexing a curve");
     return IC_OK;
+}
+
+/* Adds the curve of the points pts (the result's from now on, freed with it
+ * even when this fails), its shape classified. */
+static ic_status add_curve(ic_trace_result *r, ic_trace_point *pts, int n, int closed,
+                           ic_trace_event e0, ic_trace_event e1, double shape_tol, int at0, int at1,
+                           ic_error *err)
+{
+    const ic_shape shape = ic_trace_shape(pts, n, pts[n - 1].s - pts[0].s, shape_tol, 0);
+    return ic_trace_add_shaped_curve(r, pts, n, closed, e0, e1, shape_tol, shape, at0, at1, err);
 }
 
 /* Out of memory where the curve goes on regardless: noted in the pair, for
@@ -524,7 +534,7 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
     if (e1 == IC_TRACE_CLOSED) {
         *pts_out = fwd;
         *n_out = n1;
-        return ic_trace_add_curve(r, fwd, n1, 1, e1, e1, opt->shape_tol, -1, -1, err);
+        return add_curve(r, fwd, n1, 1, e1, e1, opt->shape_tol, -1, -1, err);
     }
     st = ic_tracer_start(tr, pt, -1, err);
     if (st == IC_OK)
@@ -574,7 +584,7 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
         *n_out = 0;
         return IC_OK;
     }
-    return ic_trace_add_curve(r, all, n0 + n1 - 1, 0, e0, e1, opt->shape_tol, at0, at1, err);
+    return add_curve(r, all, n0 + n1 - 1, 0, e0, e1, opt->shape_tol, at0, at1, err);
 }
 
 /* Traces a curve from every start candidate that no curve traced so far

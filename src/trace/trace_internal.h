@@ -189,11 +189,11 @@ extern const char ic_trace_method_search[];
 extern const char ic_trace_method_revolution[];
 
 /* trace.c: adds the curve of the points pts (the result's from now on,
- * freed with it even when this fails), its shape classified; and a special
- * point known exactly (no apparatus computed): 0, or -1 out of memory. */
-ic_status ic_trace_add_curve(ic_trace_result *r, ic_trace_point *pts, int n, int closed,
-                             ic_trace_event e0, ic_trace_event e1, double shape_tol, int at0,
-                             int at1, ic_error *err);
+ * freed with it even when this fails) of a shape known; and a special point
+ * known exactly (no apparatus computed): 0, or -1 out of memory. */
+ic_status ic_trace_add_shaped_curve(ic_trace_result *r, ic_trace_point *pts, int n, int closed,
+                                    ic_trace_event e0, ic_trace_event e1, double shape_tol,
+                                    ic_shape shape, int at0, int at1, ic_error *err);
 int ic_trace_add_exact_special(ic_trace_result *r, const double *xyz, ic_point_type type);
 
 /* shape.c */

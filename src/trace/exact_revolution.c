@@ -319,6 +319,25 @@ static ic_status add_pieces(ic_trace_result *r, const axis *ax, const piece_foun
     return IC_OK;
 }
 
+/* The size of what was found, as the search takes it for the marching's
+ * lengths and the fit (ic_trace_found_scale): the diagonal of the box
+ * around the circles and points, when between 1e-3 L and L; else L. */
+static double found_scale(double L, const axis *ax, const piece_found *found, int nf)
+{
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int i = 0; i < nf; i++)
+        for (int k = 0; k < 3; k++) {
+            const double x = ax->o[k] + found[i].z * ax->e[k];
+            const double ext = found[i].rho * sqrt(fmax(0.0, 1.0 - ax->e[k] * ax->e[k]));
+            lo[k] = fmin(lo[k], x - ext), hi[k] = fmax(hi[k], x + ext);
+        }
+    double d2 = 0;
+    for (int k = 0; k < 3; k++)
+        d2 += hi[k] > lo[k] ? (hi[k] - lo[k]) * (hi[k] - lo[k]) : 0.0;
+    const double F = sqrt(d2);
+    return isfinite(F) && F > 1e-3 * L && F < L ? F : L;
+}
+
 /* The report of a closed form: nothing searched, nothing left open. */
 static void closed_form_report(ic_trace_report *rep)
 {
@@ -327,12 +346,12 @@ static void closed_form_report(ic_trace_report *rep)
     rep->method = ic_trace_method_revolution;
 }
 
-ic_status ic_trace_exact_revolution(ic_trace_result *r, ic_pair *pair, const ic_trace_options *opt,
-                                    int *done, ic_error *err)
+ic_status ic_trace_exact_revolution(ic_trace_result *r, ic_pair *pair,
+                                    const ic_trace_options *user_opt, int *done, ic_error *err)
 {
     *done = 0;
     revolved a, b;
-    if (!opt->exact_paths || !opt->has_box || ic_pair_is_self(pair) ||
+    if (!user_opt->exact_paths || !user_opt->has_box || ic_pair_is_self(pair) ||
         !as_revolved(ic_pair_surface(pair, 0), &a) || !as_revolved(ic_pair_surface(pair, 1), &b))
         return IC_OK;
     const double L = r->scale;
@@ -344,13 +363,18 @@ ic_status ic_trace_exact_revolution(ic_trace_result *r, ic_pair *pair, const ic_
     profile_of(&a, &ax, &pa);
     profile_of(&b, &ax, &pb);
     piece_found found[IC_PROFILE_MAX_MEETINGS];
-    const int nf = intersection_pieces(&pa, &pb, &ax, opt, L, found);
+    const int nf = intersection_pieces(&pa, &pb, &ax, user_opt, L, found);
     if (nf < 0)
         return IC_OK;
+    /* the marching's lengths at the size of what was found, as the search
+     * would take them */
+    const double F = found_scale(L, &ax, found, nf);
+    const ic_trace_options opt = ic_trace_absolute_options(user_opt, F);
     for (int i = 0; i < nf; i++)
-        if (found[i].rho > 0 && circle_arcs(opt, found[i].rho) == 0)
+        if (found[i].rho > 0 && circle_arcs(&opt, found[i].rho) == 0)
             return IC_OK; /* the general path reports the budget */
     *done = 1;
+    r->scale = F;
     closed_form_report(&r->report);
-    return add_pieces(r, &ax, found, nf, opt, err);
+    return add_pieces(r, &ax, found, nf, &opt, err);
 }

@@ -20,7 +20,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* What the general path's report says instead (ic_trace_report.method). */
+/* The report's method (ic_trace_report.method): the search's, and this
+ * file's. */
 const char ic_trace_method_search[] = "search";
 const char ic_trace_method_revolution[] = "closed form: coaxial surfaces of revolution";
 

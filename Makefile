@@ -1,9 +1,12 @@
 # intercurve: the commands for people. CMake does the building underneath.
 #   make          build (build/)
-#   make test     install missing Debian packages, build with warnings as errors, run every test
+#   make test     install missing Debian packages and web/'s npm packages, build with
+#                 warnings as errors, run every test (the browser test too)
 #   make demo     run the main job on a bundled example (writes demo.png)
 #   make gallery  draw every bundled example into docs/gallery/
 #   make bench    build and run the benchmarks
+#   make bench-page  the interactive page's frames per second for 100,000 points in
+#                 headless Chromium (docs/plots.md)
 #   make bench-peers  install OpenCASCADE and SISL, run the benchmark against them
 #                 (docs/peers.md)
 #   make install  install both libraries, headers, pkg-config file, CMake package and
@@ -15,9 +18,13 @@ PREFIX ?= /usr/local
 FUZZ_SECONDS ?= 60
 CMAKE_FLAGS ?=
 # g++: the test that the headers work from C++ (tests/test_cxx.cpp); the
-# python3 ones: the Python package's tests (docs/python.md)
+# python3 ones: the Python package's tests (docs/python.md); chromium: the
+# browser test of the interactive page (tests/browser, docs/testing.md)
 DEB_PACKAGES = cmake pkg-config g++ libcjson-dev libcairo2-dev libxml2-dev poppler-utils \
-               python3-numpy python3-pytest python3-dask python3-distributed
+               python3-numpy python3-pytest python3-dask python3-distributed chromium
+# node and npm for that page (three.js) and its test (playwright-core), from
+# Debian only where there is no npm already (NodeSource's nodejs has its own)
+WEB_DEB_PACKAGES = $(if $(shell command -v npm 2>/dev/null),,nodejs npm)
 # more, for one run: .ci/run adds clang
 EXTRA_DEB_PACKAGES ?=
 # the peers of `make bench-peers` (docs/peers.md), never needed by the build or CI
@@ -28,7 +35,7 @@ PEERS_TIMEOUT ?= 60
 # seconds apt-get waits for a dpkg lock another install holds
 APT_LOCK_WAIT ?= 600
 
-.PHONY: all deps configure test demo gallery bench bench-peers install fuzz sanitize clean
+.PHONY: all deps configure test demo gallery bench bench-page bench-peers install fuzz sanitize clean
 
 all: configure
 	cmake --build $(BUILD) -j2
@@ -38,10 +45,10 @@ all: configure
 # CMake says what it cannot find.
 deps:
 	@if ! command -v dpkg-query >/dev/null 2>&1 || ! command -v apt-get >/dev/null 2>&1; then \
-	  echo "not a Debian system: the build needs $(DEB_PACKAGES) $(EXTRA_DEB_PACKAGES) (or your system's equivalents)"; \
+	  echo "not a Debian system: the build needs $(DEB_PACKAGES) $(WEB_DEB_PACKAGES) $(EXTRA_DEB_PACKAGES) (or your system's equivalents)"; \
 	  exit 0; \
 	fi; \
-	missing=""; for p in $(DEB_PACKAGES) $(EXTRA_DEB_PACKAGES); do \
+	missing=""; for p in $(DEB_PACKAGES) $(WEB_DEB_PACKAGES) $(EXTRA_DEB_PACKAGES); do \
 	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
 	done; \
 	if [ -n "$$missing" ]; then \
@@ -49,6 +56,16 @@ deps:
 	  if [ "$$(id -u)" = 0 ]; then SUDO=""; else SUDO=sudo; fi; \
 	  $$SUDO apt-get update -qq && $$SUDO env DEBIAN_FRONTEND=noninteractive \
 	    apt-get install -y -qq -o DPkg::Lock::Timeout=$(APT_LOCK_WAIT) $$missing; \
+	fi
+	@# three.js and playwright-core as web/package-lock.json pins them, when
+	@# web/node_modules is missing or older than the lock file (docs/plots.md)
+	@if [ ! -f web/node_modules/.package-lock.json ] || \
+	    [ web/package-lock.json -nt web/node_modules/.package-lock.json ]; then \
+	  if command -v npm >/dev/null 2>&1; then \
+	    echo "npm ci in web/"; (cd web && npm ci --no-audit --no-fund); \
+	  else \
+	    echo "no npm: the interactive page (.html) and its test need 'npm ci' in web/"; \
+	  fi; \
 	fi
 
 configure: deps
@@ -89,6 +106,13 @@ bench: configure
 	./$(BUILD)/bench/bench_local
 	./$(BUILD)/bench/bench_trace examples
 	./$(BUILD)/bench/bench_torture .
+	./$(BUILD)/bench/bench_json examples
+	./$(BUILD)/bench/bench_memory examples
+
+bench-page: configure
+	cmake -S . -B $(BUILD) -DIC_BUILD_BENCH=ON >/dev/null
+	cmake --build $(BUILD) -j2 --target bench_page_trace
+	node bench/bench_page.mjs $(BUILD)
 
 # intercurve, OpenCASCADE and SISL on the same exact NURBS (docs/peers.md):
 # their Debian packages installed when missing, a build of its own, the

@@ -240,7 +240,7 @@ if command -v pdftotext >/dev/null 2>&1; then
     check "the figure of two spheres apart says 'no intersection'" $?
 fi
 expect_error 1 "plot $src/examples/viviani-implicit.json" "needs PROBLEM.json and -o FIGURE"
-expect_error 1 "plot $src/examples/viviani-implicit.json -o $pdir/v.gif" "use .svg, .png or .pdf"
+expect_error 1 "plot $src/examples/viviani-implicit.json -o $pdir/v.gif" "use .svg, .png, .pdf or .html"
 expect_error 1 "plot $src/examples/viviani-implicit.json -o $pdir/v.png --view 30" "--view expects"
 expect_error 1 "plot $src/examples/viviani-implicit.json -o $pdir/v.png --size 10x10" "--size expects"
 expect_error 1 "plot $src/examples/viviani-implicit.json -o $pdir/v.png --frames 1000" "--frames"
@@ -248,6 +248,17 @@ expect_error 2 "plot $src/examples/viviani-implicit.json -o $pdir/no/such/v.png"
 expect_error 1 "plot $src/tests/data/bad-formula.json -o $pdir/b.png" "surfaces[0].f"
 "$bin" plot --help | grep -q "example:"
 check "plot --help has an example" $?
+# only intercurve-plot draws: the command itself starts without cairo
+! readelf -d "$bin" | grep -q "libcairo"
+check "the command names no cairo (plot runs intercurve-plot)" $?
+lonely=$(mktemp -d)
+cp "$bin" "$lonely/intercurve"
+"$lonely/intercurve" plot "$src/examples/viviani-implicit.json" -o "$lonely/v.png" >"$out" 2>"$errf"
+st=$?
+check "plot without intercurve-plot beside the command exits 2 (got $st)" $([ "$st" -eq 2 ]; echo $?)
+grep -q "cannot run intercurve-plot" "$errf"
+check "plot without intercurve-plot says so: $(head -c 300 "$errf")" $?
+rm -rf "$lonely"
 
 "$bin" --help | grep -q "eval"
 check "--help lists eval" $?

@@ -8,7 +8,9 @@
 #      and intercurve::intercurve_static; and the version file refuses an older
 #      API generation;
 #  (d) given PYTHON: the installed Python package imported from the prefix,
-#      loading the installed library, tracing Viviani's curve.
+#      loading the installed library, tracing Viviani's curve;
+#  and the installed command: it names no cairo, and its plot runs the
+#  installed intercurve-plot (libexec) to draw a picture.
 # usage: test_install.sh BUILD_DIR SOURCE_DIR C_COMPILER [EXTRA_CFLAGS [PYTHON]]
 set -u
 build="$1"
@@ -52,6 +54,11 @@ check "intercurve.pc installed" $?
 [ -n "$pc" ] || finish
 "$prefix/bin/intercurve" --help >/dev/null
 check "the installed command runs" $?
+! needed "$prefix/bin/intercurve" | grep -q cairo
+check "the installed command does not load cairo" $?
+"$prefix/bin/intercurve" plot "$problem" -o "$work/viviani.svg" --size 300x200 &&
+    grep -q "<svg" "$work/viviani.svg"
+check "the installed command draws (through libexec/intercurve/intercurve-plot)" $?
 
 # (a) pkg-config, shared
 export PKG_CONFIG_PATH

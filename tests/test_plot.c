@@ -293,7 +293,7 @@ static void test_errors(const char *tmpdir)
     char path[512];
     snprintf(path, sizeof path, "%s/figure.gif", tmpdir);
     CHECK(ic_plot_write(path, &scene, &opt, &err) == IC_ERR_INVALID &&
-              strstr(err.message, ".svg, .png or .pdf"),
+              strstr(err.message, ".svg, .png, .pdf or .html"),
           "unknown extension: %s", err.message);
     opt.width = 50;
     snprintf(path, sizeof path, "%s/small.png", tmpdir);

@@ -4,7 +4,8 @@
  * as shaded, partly transparent meshes, the traced curves coloured by
  * curvature with a colour bar, Frenet frames along them, the singular
  * points labelled by type, axes with ticks; and a chart of curvature and
- * torsion against arc length. Drawn with cairo into SVG, PNG or PDF.
+ * torsion against arc length. Drawn with cairo into SVG, PNG or PDF, or
+ * written as an interactive HTML page (three.js).
  */
 #ifndef INTERCURVE_PLOT_H
 #define INTERCURVE_PLOT_H
@@ -50,9 +51,11 @@ IC_API void ic_plot_scene_of_problem(ic_plot_scene *scene, const ic_problem *pro
 
 /**
  * Draws the scene into `path`; the format comes from its extension (.svg,
- * .png or .pdf, IC_ERR_INVALID otherwise). Written through a temporary file
- * and a rename (IC_ERR_IO when that fails). Where the trace has no curve and
- * no point, the figure says "no intersection". opt NULL: ic_plot_defaults.
+ * .png or .pdf, or .html for the interactive page of docs/plots.md;
+ * IC_ERR_INVALID otherwise). Written through a temporary file and a rename
+ * (IC_ERR_IO when that fails). Where the trace has no curve and no point, the
+ * figure says "no intersection". opt NULL: ic_plot_defaults. A library built
+ * without three.js (no web/node_modules) refuses .html with IC_ERR_UNABLE.
  */
 IC_API IC_NODISCARD ic_status ic_plot_write(const char *path, const ic_plot_scene *scene,
                                             const ic_plot_options *opt, ic_error *err);

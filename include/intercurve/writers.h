@@ -56,8 +56,8 @@ IC_API IC_NODISCARD ic_status ic_trace_write_obj(FILE *f, const ic_trace_result 
  *  tells which surfaces are parametric ("params" and
  *  "parameter_derivatives" only for those). Numbers round-trip to the same
  *  doubles; undefined values (non-finite, or flagged undefined) are null.
- *  IC_ERR_NOMEM when the document cannot be built (nothing is written),
- *  IC_ERR_IO when f reports a write error. */
+ *  The document is written as it is made (nothing is allocated): IC_ERR_IO
+ *  when f reports a write error. */
 IC_API IC_NODISCARD ic_status ic_local_write_json(FILE *f, const ic_local_result *res,
                                            const ic_pair *pair, int order, ic_error *err);
 
@@ -68,9 +68,8 @@ IC_API IC_NODISCARD ic_status ic_local_write_text(FILE *f, const ic_local_result
 /** The trace document (`intercurve trace`,
  *  docs/output-formats.md): {"curves", "points", "report"} of a result of
  *  ic_trace on `pair`, as one JSON object and a newline. Numbers round-trip
- *  to the same doubles; undefined values are null. IC_ERR_NOMEM when the
- *  document cannot be built (nothing is written), IC_ERR_IO on a write
- *  error. */
+ *  to the same doubles; undefined values are null. The document is written
+ *  as it is made (nothing is allocated): IC_ERR_IO on a write error. */
 IC_API IC_NODISCARD ic_status ic_trace_write_json(FILE *f, const ic_trace_result *res,
                                            const ic_pair *pair, ic_error *err);
 
@@ -90,8 +89,8 @@ IC_API IC_NODISCARD ic_status ic_trace_write_text(FILE *f, const ic_trace_result
  *  "degenerate" and the quantities that need the normal are null.
  *  IC_ERR_INVALID for an order outside 0..IC_JET_MAX_ORDER; the status and
  *  message of the evaluation when the derivatives or the geometry cannot
- *  be computed (nothing is written then); IC_ERR_NOMEM, IC_ERR_IO as
- *  above. s is not const: evaluation grows its workspace. */
+ *  be computed, IC_ERR_NOMEM when they do not fit in memory (nothing is
+ *  written then); IC_ERR_IO as above. s is not const: evaluation grows its workspace. */
 IC_API IC_NODISCARD ic_status ic_surface_write_json(FILE *f, ic_surface *s, const char *name,
                                              const double *at, int order, ic_error *err);
 

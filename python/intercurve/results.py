@@ -29,13 +29,16 @@ def _number(x):
 
 
 class BSpline:
-    """A B-spline curve (docs/bspline.md): `degree`, `knots` (M + degree + 1,)
-    and `control_points` (M, dim). The space curve is parametrised by the
-    traced curve's arc length s; a pcurve by the same s, in a parameter
-    plane."""
+    """A B-spline curve (docs/bspline.md): `degree`, `periodic`, `knots`
+    (M + degree + 1,) and `control_points` (M, dim). The space curve is
+    parametrised by the traced curve's arc length s; a pcurve by the same s,
+    in a parameter plane. A periodic one (a closed curve) has unclamped knots
+    and its first `degree` control points repeated at the end; it is
+    evaluated at s modulo its period."""
 
     def __init__(self, doc):
         self.degree = int(doc["degree"])
+        self.periodic = bool(doc.get("periodic", False))
         self.knots = np.asarray(doc["knots"], dtype=float)
         self.control_points = np.asarray(doc["control_points"], dtype=float)
 
@@ -46,6 +49,9 @@ class BSpline:
         flat = np.atleast_1d(s).ravel()
         p, t, c = self.degree, self.knots, self.control_points
         last = len(c) - 1
+        if self.periodic:  # into [t_p, t_M)
+            lo, period = t[p], t[last + 1] - t[p]
+            flat = lo + np.mod(flat - lo, period)
         span = np.clip(np.searchsorted(t, flat, side="right") - 1, p, last)
         out = np.empty((flat.size, c.shape[1]))
         for j, (x, k) in enumerate(zip(flat, span)):
@@ -59,7 +65,8 @@ class BSpline:
         return out.reshape(s.shape + (c.shape[1],))
 
     def __repr__(self):
-        return "BSpline(degree=%d, %d control points)" % (self.degree, len(self.control_points))
+        return "BSpline(degree=%d, %d control points%s)" % (
+            self.degree, len(self.control_points), ", periodic" if self.periodic else "")
 
 
 class Curve:

@@ -18,6 +18,10 @@ int ic_cmd_point(int argc, char **argv);
 int ic_cmd_trace(int argc, char **argv);
 int ic_cmd_plot(int argc, char **argv);
 int ic_cmd_surfaces(int argc, char **argv);
+/* `intercurve plot`: runs intercurve-plot with the command's own argv
+ * (plot_exec.c); returns only when it cannot, with EXIT_COMPUTE after the
+ * reason. */
+int ic_cli_exec_plot(char **argv);
 
 /* What messages call the problem file: "<stdin>" for "-", else its name. */
 const char *ic_cli_file_name(const char *file);

@@ -19,8 +19,8 @@ static const ic_cli_option PLOT_OPTIONS[NOPTIONS] = {
                     .metavar = "FIGURE",
                     .kind = IC_OPT_TEXT,
                     .need = IC_OPT_REQUIRED,
-                    .help = "the picture to write, .svg, .png or .pdf (through a temporary\n"
-                            "file and a rename)"},
+                    .help = "the picture to write, .svg, .png or .pdf, or .html for the\n"
+                            "interactive page (through a temporary file and a rename)"},
     [OPT_VIEW] = {.name = "--view",
                   .metavar = "AZ,EL",
                   .kind = IC_OPT_LIST,
@@ -42,7 +42,8 @@ static const ic_cli_option PLOT_OPTIONS[NOPTIONS] = {
                   .hi = 10000,
                   .lo2 = 150,
                   .fallback = "1400x800",
-                  .help = "width and height in pixels (PNG) or points (SVG, PDF)"},
+                  .help = "width and height in pixels (PNG) or points (SVG, PDF); the page\n"
+                          "fills its window"},
     [OPT_MESH] = {.name = "--mesh",
                   .metavar = "N",
                   .kind = IC_OPT_INT,
@@ -83,7 +84,8 @@ static const ic_cli_command PLOT = {
     .noptions = NOPTIONS,
     .notes = "example:\n"
              "  intercurve plot examples/viviani-implicit.json -o viviani.png\n"
-             "  intercurve plot examples/torus-sphere.json -o torus.svg --view 20,40 --frames 12\n",
+             "  intercurve plot examples/torus-sphere.json -o torus.svg --view 20,40 --frames 12\n"
+             "  intercurve plot examples/viviani-implicit.json -o viviani.html\n",
 };
 
 int ic_cmd_plot(int argc, char **argv)

@@ -47,8 +47,8 @@ int main(int argc, char **argv)
         return ic_cmd_point(argc - 1, argv + 1);
     if (strcmp(argv[1], "trace") == 0)
         return ic_cmd_trace(argc - 1, argv + 1);
-    if (strcmp(argv[1], "plot") == 0)
-        return ic_cmd_plot(argc - 1, argv + 1);
+    if (strcmp(argv[1], "plot") == 0) /* the one command that draws: cairo only there */
+        return ic_cli_exec_plot(argv);
     if (strcmp(argv[1], "surfaces") == 0)
         return ic_cmd_surfaces(argc - 1, argv + 1);
     fprintf(stderr, "intercurve: unknown command '%s' (try 'intercurve --help')\n", argv[1]);

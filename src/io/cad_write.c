@@ -86,80 +86,118 @@ static ic_status write_text(FILE *f, const char *file, const ic_cad_info *info,
     return IC_OK;
 }
 
-static cJSON *range_json(json_out *j, const double r[2])
+static void range_json(json_out *j, const double r[2])
 {
     if (isinf(r[0]) || isinf(r[1]))
-        return cJSON_CreateNull();
-    return ic_json_out_vector(j, r, 2);
+        ic_json_out_null(j);
+    else
+        ic_json_out_vector(j, r, 2);
 }
 
-static void add_primitive(json_out *j, cJSON *o, const ic_primitive *p)
+static void number_member(json_out *j, const char *key, double x)
 {
-    ic_json_out_add(j, o, p->kind == IC_PRIM_CONE ? "apex" : "center",
-                    ic_json_out_vector(j, p->center, 3));
-    ic_json_out_add(j, o, "axis", ic_json_out_vector(j, p->axis, 3));
-    ic_json_out_add(j, o, "ref_direction", ic_json_out_vector(j, p->ref_direction, 3));
+    ic_json_out_key(j, key);
+    ic_json_out_number(j, x);
+}
+
+static void vector_member(json_out *j, const char *key, const double v[3])
+{
+    ic_json_out_key(j, key);
+    ic_json_out_vector(j, v, 3);
+}
+
+static void string_member(json_out *j, const char *key, const char *text)
+{
+    ic_json_out_key(j, key);
+    ic_json_out_string(j, text);
+}
+
+static void add_primitive(json_out *j, const ic_primitive *p)
+{
+    vector_member(j, p->kind == IC_PRIM_CONE ? "apex" : "center", p->center);
+    vector_member(j, "axis", p->axis);
+    vector_member(j, "ref_direction", p->ref_direction);
     if (p->kind == IC_PRIM_SPHERE || p->kind == IC_PRIM_CYLINDER)
-        ic_json_out_add(j, o, "radius", ic_json_out_number(j, p->radius));
+        number_member(j, "radius", p->radius);
     if (p->kind == IC_PRIM_TORUS) {
-        ic_json_out_add(j, o, "major_radius", ic_json_out_number(j, p->major_radius));
-        ic_json_out_add(j, o, "minor_radius", ic_json_out_number(j, p->radius));
+        number_member(j, "major_radius", p->major_radius);
+        number_member(j, "minor_radius", p->radius);
     }
     if (p->kind == IC_PRIM_CONE)
-        ic_json_out_add(j, o, "half_angle", ic_json_out_number(j, p->half_angle));
+        number_member(j, "half_angle", p->half_angle);
 }
 
-static cJSON *surface_json(json_out *j, const ic_cad_surface *s)
+/* What a readable surface is: its domain, periodicity and form. */
+static void add_supported(json_out *j, const ic_cad_surface *s)
 {
-    cJSON *o = cJSON_CreateObject();
-    ic_json_out_add(j, o, "entity", cJSON_CreateNumber(s->entity));
-    ic_json_out_add(j, o, "type", cJSON_CreateString(s->type));
-    ic_json_out_add(j, o, "name", cJSON_CreateString(s->name));
-    ic_json_out_add(j, o, "supported", cJSON_CreateBool(s->supported));
-    ic_json_out_add(j, o, "kind", cJSON_CreateString(kind_name(s)));
-    if (!s->supported) {
-        ic_json_out_add(j, o, "problem", cJSON_CreateString(s->problem));
-        return o;
-    }
-    cJSON *domain = cJSON_CreateArray();
+    ic_json_out_key(j, "domain");
+    ic_json_out_array(j);
     for (int d = 0; d < 2; d++)
-        ic_json_out_append(j, domain, range_json(j, s->domain[d]));
-    ic_json_out_add(j, o, "domain", domain);
-    cJSON *periodic = cJSON_CreateArray();
+        range_json(j, s->domain[d]);
+    ic_json_out_end_array(j);
+    ic_json_out_key(j, "periodic");
+    ic_json_out_array(j);
     for (int d = 0; d < 2; d++)
-        ic_json_out_append(j, periodic, cJSON_CreateBool(s->periodic[d]));
-    ic_json_out_add(j, o, "periodic", periodic);
+        ic_json_out_bool(j, s->periodic[d]);
+    ic_json_out_end_array(j);
     if (s->is_nurbs) {
-        ic_json_out_add(j, o, "degree", cJSON_CreateIntArray(s->nurbs.degree, 2));
-        ic_json_out_add(j, o, "count", cJSON_CreateIntArray(s->nurbs.count, 2));
-        ic_json_out_add(j, o, "rational", cJSON_CreateBool(s->nurbs.weights != NULL));
+        ic_json_out_key(j, "degree");
+        ic_json_out_ints(j, s->nurbs.degree, 2);
+        ic_json_out_key(j, "count");
+        ic_json_out_ints(j, s->nurbs.count, 2);
+        ic_json_out_key(j, "rational");
+        ic_json_out_bool(j, s->nurbs.weights != NULL);
     } else if (s->prim.kind == IC_PRIM_PLANE) {
-        ic_json_out_add(j, o, "point", ic_json_out_vector(j, s->prim.center, 3));
-        ic_json_out_add(j, o, "normal", ic_json_out_vector(j, s->prim.normal, 3));
-        ic_json_out_add(j, o, "ref_direction", ic_json_out_vector(j, s->prim.ref_direction, 3));
+        vector_member(j, "point", s->prim.center);
+        vector_member(j, "normal", s->prim.normal);
+        vector_member(j, "ref_direction", s->prim.ref_direction);
     } else {
-        add_primitive(j, o, &s->prim);
+        add_primitive(j, &s->prim);
     }
-    return o;
+}
+
+static void surface_json(json_out *j, const ic_cad_surface *s)
+{
+    ic_json_out_object(j);
+    ic_json_out_key(j, "entity");
+    ic_json_out_int(j, s->entity);
+    string_member(j, "type", s->type);
+    string_member(j, "name", s->name);
+    ic_json_out_key(j, "supported");
+    ic_json_out_bool(j, s->supported);
+    string_member(j, "kind", kind_name(s));
+    if (s->supported)
+        add_supported(j, s);
+    else
+        string_member(j, "problem", s->problem);
+    ic_json_out_end_object(j);
 }
 
 static ic_status write_json(FILE *f, const char *file, const ic_cad_info *info,
                             const ic_cad_surface *list, int n, ic_error *err)
 {
-    json_out j = {0};
-    cJSON *doc = cJSON_CreateObject();
-    ic_json_out_add(&j, doc, "file", cJSON_CreateString(file));
-    ic_json_out_add(&j, doc, "format", cJSON_CreateString(ic_cad_format_name(info->format)));
-    ic_json_out_add(&j, doc, "unit",
-                    info->unit[0] ? cJSON_CreateString(info->unit) : cJSON_CreateNull());
-    ic_json_out_add(&j, doc, "unit_in_metres",
-                    info->unit_metres > 0 ? ic_json_out_number(&j, info->unit_metres)
-                                          : cJSON_CreateNull());
-    cJSON *surfaces = cJSON_CreateArray();
+    json_out j;
+    ic_json_out_start(&j, f);
+    ic_json_out_object(&j);
+    string_member(&j, "file", file);
+    string_member(&j, "format", ic_cad_format_name(info->format));
+    ic_json_out_key(&j, "unit");
+    if (info->unit[0])
+        ic_json_out_string(&j, info->unit);
+    else
+        ic_json_out_null(&j);
+    ic_json_out_key(&j, "unit_in_metres");
+    if (info->unit_metres > 0)
+        ic_json_out_number(&j, info->unit_metres);
+    else
+        ic_json_out_null(&j);
+    ic_json_out_key(&j, "surfaces");
+    ic_json_out_array(&j);
     for (int k = 0; k < n; k++)
-        ic_json_out_append(&j, surfaces, surface_json(&j, &list[k]));
-    ic_json_out_add(&j, doc, "surfaces", surfaces);
-    return ic_json_out_write(f, doc, &j, "surfaces", err);
+        surface_json(&j, &list[k]);
+    ic_json_out_end_array(&j);
+    ic_json_out_end_object(&j);
+    return ic_json_out_finish(&j, "surfaces", err);
 }
 
 ic_status ic_cad_write_list(FILE *f, const char *file, const ic_cad_info *info,

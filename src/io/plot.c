@@ -3,7 +3,7 @@
  * cairo surface chosen by the file's extension, streamed into a safe file
  * (io/safe_file.h: a temporary and a rename, or a device in place).
  */
-#include "plot_internal.h"
+#include "plot_html.h"
 
 #include "io/safe_file.h"
 
@@ -38,7 +38,7 @@ void ic_plot_scene_of_problem(ic_plot_scene *scene, const ic_problem *problem,
     scene->trace = trace;
 }
 
-typedef enum { FMT_SVG, FMT_PNG, FMT_PDF, FMT_NONE } plot_format;
+typedef enum { FMT_SVG, FMT_PNG, FMT_PDF, FMT_HTML, FMT_NONE } plot_format;
 
 static plot_format format_of(const char *path)
 {
@@ -51,6 +51,8 @@ static plot_format format_of(const char *path)
         return FMT_PNG;
     if (strcmp(dot, ".pdf") == 0)
         return FMT_PDF;
+    if (strcmp(dot, ".html") == 0)
+        return FMT_HTML;
     return FMT_NONE;
 }
 
@@ -148,7 +150,7 @@ ic_status ic_plot_write(const char *path, const ic_plot_scene *scene, const ic_p
     const plot_format fmt = format_of(path);
     if (fmt == FMT_NONE)
         return ic_error_set(err, IC_ERR_INVALID, 0,
-                            "cannot tell the picture's format from '%s': use .svg, .png or .pdf",
+                            "cannot tell the picture's format from '%s': use .svg, .png, .pdf or .html",
                             path);
     if (opt->width < 200 || opt->height < 150 || opt->width > 10000 || opt->height > 10000)
         return ic_error_set(
@@ -158,6 +160,8 @@ ic_status ic_plot_write(const char *path, const ic_plot_scene *scene, const ic_p
             opt->width, opt->height);
     if (scene->nsurfaces < 1 || scene->nsurfaces > 2)
         return ic_error_set(err, IC_ERR_INVALID, 0, "a picture shows one or two surfaces");
+    if (fmt == FMT_HTML) /* the interactive page (plot_html.c) */
+        return ic_plot_write_html(path, scene, opt, err);
     plot_sink sink = {NULL, IC_OK, {0}};
     ic_status st = ic_safe_open(&sink.file, path, err);
     if (st != IC_OK)

@@ -1,8 +1,9 @@
 /* Benchmark of the marching core (make bench): time and points per curve at
  * tolerances 1e-6, 1e-10, 1e-12, with the largest distance of an output
  * point to either surface: first single curves from a given start point,
- * then the whole intersection of the bundled examples (usage: bench_trace
- * [EXAMPLES_DIR]). */
+ * then the whole intersection of the bundled examples, then the exact paths
+ * of three coaxial pairs of primitives against the search (usage:
+ * bench_trace [EXAMPLES_DIR]). */
 #include <math.h>
 #include <stdio.h>
 
@@ -101,6 +102,82 @@ static int whole_example(const char *dir, const char *file, double tol)
     return rc;
 }
 
+/* ---- the exact paths (docs/tracing.md, "Exact paths") ---- */
+
+typedef struct {
+    ic_pair *pair;
+    ic_trace_options opt;
+    int curves, specials;
+} whole_job;
+
+static int trace_whole(void *ctx)
+{
+    whole_job *j = ctx;
+    ic_trace_result *r = NULL;
+    if (ic_trace(&r, j->pair, &j->opt, NULL) != IC_OK)
+        return 1;
+    j->curves = ic_trace_result_num_curves(r);
+    j->specials = ic_trace_result_num_specials(r);
+    ic_trace_result_free(r);
+    return 0;
+}
+
+/* The best of three single traces, in ns (the search takes up to seconds). */
+static double best_of_three(whole_job *j)
+{
+    double best = INFINITY;
+    for (int k = 0; k < 3; k++) {
+        const double t0 = bench_now();
+        if (trace_whole(j) != 0)
+            return NAN;
+        best = fmin(best, (bench_now() - t0) * 1e9);
+    }
+    return best;
+}
+
+/* The issue's three coaxial pairs of implicit primitives, traced whole with
+ * the exact path and with the search (exact_paths = 0). */
+static int exact_cases(void)
+{
+    const ic_primitive Z = {.kind = IC_PRIM_SPHERE};
+    struct {
+        const char *name;
+        ic_primitive A, B;
+        double half;
+    } cases[3] = {{"sphere r 1, plane z = 1/2", Z, Z, 2},
+                  {"torus 2, 1/2 on sphere r 5/2", Z, Z, 3},
+                  {"sphere on plane z = 0 (point)", Z, Z, 2}};
+    cases[0].A.radius = 1;
+    cases[0].B = (ic_primitive){.kind = IC_PRIM_PLANE, .center = {0, 0, 0.5}, .normal = {0, 0, 1}};
+    cases[1].A = (ic_primitive){.kind = IC_PRIM_TORUS, .major_radius = 2, .radius = 0.5};
+    cases[1].B.radius = 2.5;
+    cases[2].A = (ic_primitive){.kind = IC_PRIM_SPHERE, .center = {0, 0, 1}, .radius = 1};
+    cases[2].B = (ic_primitive){.kind = IC_PRIM_PLANE, .normal = {0, 0, 1}};
+    printf("\n%-30s %6s %6s %14s %14s\n", "coaxial primitives (box)", "curves", "special",
+           "exact (us)", "search (ms)");
+    for (int c = 0; c < 3; c++) {
+        ic_surface *A = NULL, *B = NULL;
+        whole_job j = {0};
+        if (ic_surface_new_primitive(&A, &cases[c].A, IC_IMPLICIT, NULL) ||
+            ic_surface_new_primitive(&B, &cases[c].B, IC_IMPLICIT, NULL) ||
+            ic_pair_new(&j.pair, A, B, NULL))
+            return 1;
+        ic_trace_defaults(&j.opt);
+        j.opt.has_box = 1;
+        for (int k = 0; k < 3; k++)
+            j.opt.box[k][0] = -cases[c].half, j.opt.box[k][1] = cases[c].half;
+        const double exact = bench_ns_per_call(trace_whole, &j);
+        j.opt.exact_paths = 0;
+        const double search = best_of_three(&j);
+        printf("%-30s %6d %6d %14.2f %14.1f\n", cases[c].name, j.curves, j.specials, exact / 1e3,
+               search / 1e6);
+        ic_pair_free(j.pair);
+        ic_surface_free(A);
+        ic_surface_free(B);
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     const char *dir = argc > 1 ? argv[1] : "examples";
@@ -159,5 +236,5 @@ int main(int argc, char **argv)
         for (int k = 0; k < 3; k++)
             if (whole_example(dir, files[c], tols[k]) != 0)
                 return 1;
-    return 0;
+    return exact_cases();
 }

@@ -156,6 +156,19 @@ check "trace Viviani exits 0 ($(cat "$errf"))" $st
 check "trace Viviani: one closed figure-eight and the branch point" $?
 grep -q '"exclusion_proven":.*true' "$out" && grep -q '"uncovered_cells":.*0' "$out"
 check "trace Viviani: the report says what was proven" $?
+# coaxial primitives in closed form; --no-exact searches (docs/tracing.md, "Exact paths")
+coaxial='{"surfaces": [{"type": "sphere", "radius": 1},
+  {"type": "plane", "center": [0, 0, 0.5], "normal": [0, 0, 1]}], "box": [[-2, 2], [-2, 2], [-2, 2]]}'
+echo "$coaxial" | "$bin" trace - >"$out" 2>"$errf"
+check "trace sphere and plane exits 0 ($(cat "$errf"))" $?
+grep -q '"method":.*"closed form: coaxial surfaces of revolution"' "$out" &&
+    grep -q '"shape":.*"circle"' "$out" && grep -q '"cells":.*0,' "$out"
+check "trace sphere and plane: a circle in closed form, no cells searched" $?
+echo "$coaxial" | "$bin" trace - --no-exact >"$out" 2>"$errf"
+check "trace sphere and plane --no-exact exits 0 ($(cat "$errf"))" $?
+grep -q '"method":.*"search"' "$out" && grep -q '"shape":.*"circle"' "$out" &&
+    ! grep -q '"cells":.*0,' "$out"
+check "trace sphere and plane --no-exact: the circle by the search" $?
 tmpout="$(mktemp -d)/v.json"
 "$bin" trace "$src/examples/ellipsoids.json" -o "$tmpout" >"$out" 2>"$errf"
 check "trace -o FILE exits 0" $?

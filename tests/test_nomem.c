@@ -410,6 +410,40 @@ static ic_status trace_self(ic_error *err, char *summary)
     return trace(&ENNEPER, NULL, 5, err, summary);
 }
 
+/* coaxial primitives in closed form (docs/tracing.md, "Exact paths"): a
+ * torus cut by a plane in two circles, then a sphere on a plane at a point */
+static ic_status trace_exact(ic_error *err, char *summary)
+{
+    const ic_primitive prims[2][2] = {
+        {{.kind = IC_PRIM_TORUS, .major_radius = 1.5, .radius = 0.5},
+         {.kind = IC_PRIM_PLANE, .center = {0, 0, 0.2}, .normal = {0, 0, 1}}},
+        {{.kind = IC_PRIM_SPHERE, .center = {0, 0, 1}, .radius = 1},
+         {.kind = IC_PRIM_PLANE, .normal = {0, 0, 1}}}};
+    ic_status st = IC_OK;
+    for (int c = 0; c < 2 && st == IC_OK; c++) {
+        made_pair m;
+        memset(&m, 0, sizeof m);
+        st = ic_surface_new_primitive(&m.A, &prims[c][0], IC_IMPLICIT, err);
+        if (st == IC_OK)
+            st = ic_surface_new_primitive(&m.B, &prims[c][1], IC_IMPLICIT, err);
+        if (st == IC_OK)
+            st = ic_pair_new(&m.pair, m.A, m.B, err);
+        ic_trace_options opt;
+        ic_trace_defaults(&opt);
+        opt.has_box = 1;
+        for (int k = 0; k < 3; k++)
+            opt.box[k][0] = -2.5, opt.box[k][1] = 2.5;
+        ic_trace_result *res = NULL;
+        if (st == IC_OK)
+            st = ic_trace(&res, m.pair, &opt, err);
+        if (st == IC_OK)
+            say_trace(summary, res);
+        ic_trace_result_free(res);
+        free_pair(&m);
+    }
+    return st;
+}
+
 /* a tangential curve: the unit cylinder touches the plane x = 1 along a line */
 static ic_status trace_tangential(ic_error *err, char *summary)
 {
@@ -713,6 +747,7 @@ int main(int argc, char **argv)
         {"trace, incomplete", trace_incomplete},
         {"trace, self", trace_self},
         {"trace, tangential", trace_tangential},
+        {"trace, exact", trace_exact},
         {"problem file", problem_file},
         {"writers", writers},
         {"bindings", bindings},

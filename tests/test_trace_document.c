@@ -128,6 +128,7 @@ static void check_specials(const cJSON *points, const traced *t, const char *nam
 static void check_report(const cJSON *ro, const ic_trace_report *rep, const char *name)
 {
     static const char *const keys[] = {"complete",
+                                       "method",
                                        "cells",
                                        "cells_excluded_by_intervals",
                                        "cells_excluded_by_centred_forms",
@@ -170,6 +171,7 @@ static void check_report(const cJSON *ro, const ic_trace_report *rep, const char
                                 "coincident_cells"};
     int ok = doc_keys_are(ro, keys) && cJSON_IsTrue(doc_get(ro, "complete")) == !!rep->complete &&
              cJSON_IsTrue(doc_get(ro, "exclusion_proven")) == !!rep->proven &&
+             rep->method && doc_string_is(doc_get(ro, "method"), rep->method) &&
              doc_number_is(doc_get(ro, "smallest_cell"), rep->cell_size) &&
              cJSON_GetArraySize(doc_get(ro, "failures")) == rep->nfailures;
     for (int i = 0; ok && i < 11; i++)
@@ -269,6 +271,53 @@ static void check_line(void)
     ic_surface_free(B);
 }
 
+/* A sphere r = 1 and the plane z = 1/2 as primitives: traced in closed form
+ * (docs/tracing.md, "Exact paths"), the report says so and what was
+ * sampled: nothing; the same with exact_paths off says "search". */
+static void check_closed_form(void)
+{
+    const ic_primitive sphere = {.kind = IC_PRIM_SPHERE, .radius = 1};
+    const ic_primitive plane = {.kind = IC_PRIM_PLANE, .center = {0, 0, 0.5}, .normal = {0, 0, 1}};
+    ic_surface *A = NULL, *B = NULL;
+    ic_error err;
+    int ok = REQUIRE(ic_surface_new_primitive(&A, &sphere, IC_IMPLICIT, &err) == IC_OK &&
+                         ic_surface_new_primitive(&B, &plane, IC_IMPLICIT, &err) == IC_OK,
+                     "primitives: %s", err.message);
+    for (int exact = 1; ok && exact >= 0; exact--) {
+        traced t;
+        memset(&t, 0, sizeof t);
+        ic_trace_options opt;
+        ic_trace_defaults(&opt);
+        opt.exact_paths = exact;
+        opt.has_box = 1;
+        for (int k = 0; k < 3; k++)
+            opt.box[k][0] = -2, opt.box[k][1] = 2;
+        if (!REQUIRE(ic_pair_new(&t.pair, A, B, &err) == IC_OK &&
+                         ic_trace(&t.res, t.pair, &opt, &err) == IC_OK,
+                     "sphere and plane traced: %s", err.message)) {
+            ic_pair_free(t.pair);
+            break;
+        }
+        const char *name = exact ? "sphere and plane, closed form" : "sphere and plane, search";
+        check_document(&t, name);
+        cJSON *doc = doc_parse(write_json, &t, name);
+        const cJSON *ro = doc_get(doc, "report");
+        CHECK(exact ? doc_string_is(doc_get(ro, "method"),
+                                    "closed form: coaxial surfaces of revolution") &&
+                          doc_string_is(doc_get(ro, "sampled"),
+                                        "nothing: the intersection is in closed form")
+                    : doc_string_is(doc_get(ro, "method"), "search") &&
+                          doc_string_is(doc_get(ro, "sampled"),
+                                        "start points inside the cells that were not excluded"),
+              "%s: the report's method and what it sampled", name);
+        cJSON_Delete(doc);
+        ic_trace_result_free(t.res);
+        ic_pair_free(t.pair);
+    }
+    ic_surface_free(A);
+    ic_surface_free(B);
+}
+
 int main(int argc, char **argv)
 {
     const char *dir = argc > 1 ? argv[1] : ".";
@@ -288,5 +337,6 @@ int main(int argc, char **argv)
         release(&t);
     }
     check_line();
+    check_closed_form();
     return harness_finish("test_trace_document");
 }

@@ -55,6 +55,10 @@ typedef struct {
     void (*progress)(void *user, const char *stage, long done, long total);
     void *progress_user;
     ic_local_options local;
+    /** 1: pairs with a closed form are solved in it (coaxial surfaces of
+     *  revolution: docs/tracing.md, "Exact paths"); 0: always the search and
+     *  the marching, the reference (default 1) */
+    int exact_paths;
 } ic_trace_options;
 
 IC_API void ic_trace_defaults(ic_trace_options *opt);
@@ -198,6 +202,11 @@ typedef struct {
     double fit_tol;
     /** length: the largest fit error found over the curves (ic_curve_fit) */
     double fit_error;
+    /** how the intersection was found, a static string: "search" (the
+     *  subdivision search and the marching), or "closed form: coaxial
+     *  surfaces of revolution" (docs/tracing.md, "Exact paths": nothing was
+     *  searched, the cell counts are 0, complete is 1) */
+    const char *method;
 } ic_trace_report;
 
 typedef struct ic_trace_result ic_trace_result;

@@ -10,6 +10,7 @@ enum {
     OPT_NO_CHART,
     OPT_TOL,
     OPT_DEPTH,
+    OPT_NO_EXACT,
     NOPTIONS
 };
 
@@ -65,6 +66,7 @@ static const ic_cli_option PLOT_OPTIONS[NOPTIONS] = {
                    .hi = 9,
                    .fallback = "6",
                    .help = "as for 'intercurve trace'"},
+    [OPT_NO_EXACT] = {.name = "--no-exact", .kind = IC_OPT_FLAG, .help = "as for 'intercurve trace'"},
 };
 
 /* relative to the problem's size: the curves' B-splines, as `trace --fit-tol`'s
@@ -104,6 +106,7 @@ int ic_cmd_plot(int argc, char **argv)
     ic_trace_defaults(&to);
     to.tol = v[OPT_TOL].real;
     to.depth = (int)v[OPT_DEPTH].integer;
+    to.exact_paths = !v[OPT_NO_EXACT].given;
     ic_cli_traced t;
     if ((rc = ic_cli_trace_file(file, &to, &t)) != 0)
         return rc;

@@ -3,7 +3,16 @@
 
 #include <math.h>
 
-enum { OPT_FORMAT, OPT_OUTPUT, OPT_TOL, OPT_DEPTH, OPT_TIME_LIMIT, OPT_FIT_TOL, NOPTIONS };
+enum {
+    OPT_FORMAT,
+    OPT_OUTPUT,
+    OPT_TOL,
+    OPT_DEPTH,
+    OPT_TIME_LIMIT,
+    OPT_FIT_TOL,
+    OPT_NO_EXACT,
+    NOPTIONS
+};
 
 /* The formats, in the order of --format's choices. */
 typedef enum {
@@ -63,6 +72,10 @@ static const ic_cli_option TRACE_OPTIONS[NOPTIONS] = {
                              "(docs/bspline.md): what a pcurve's image may stray from the\n"
                              "curve, a fraction of the problem's size; the json report\n"
                              "gives the largest error found"},
+    [OPT_NO_EXACT] = {.name = "--no-exact",
+                      .kind = IC_OPT_FLAG,
+                      .help = "always search and march, even where a closed form applies\n"
+                              "(coaxial surfaces of revolution: docs/tracing.md, \"Exact paths\")"},
 };
 
 static const ic_cli_command TRACE = {
@@ -154,6 +167,7 @@ int ic_cmd_trace(int argc, char **argv)
     ic_trace_defaults(&opt);
     opt.tol = v[OPT_TOL].real;
     opt.depth = (int)v[OPT_DEPTH].integer;
+    opt.exact_paths = !v[OPT_NO_EXACT].given;
     if (v[OPT_TIME_LIMIT].given)
         opt.time_limit = v[OPT_TIME_LIMIT].real;
     ic_cli_traced t;

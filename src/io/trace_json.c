@@ -4,6 +4,8 @@
 
 #include "io/json_out.h"
 
+#include <string.h>
+
 static void point_json(json_out *j, const ic_trace_point *p, const ic_trace_curve *c,
                        const ic_trace_result *res, const int parametric[2])
 {
@@ -153,14 +155,18 @@ static void report_json(json_out *j, const ic_trace_report *rep)
     ic_json_out_object(j);
     ic_json_out_key(j, "complete");
     ic_json_out_bool(j, rep->complete);
+    ic_json_out_key(j, "method");
+    ic_json_out_string(j, rep->method ? rep->method : "search");
     int_member(j, "cells", rep->cells);
     int_member(j, "cells_excluded_by_intervals", rep->cells_excluded);
     int_member(j, "cells_excluded_by_centred_forms", rep->cells_excluded_centred);
     ic_json_out_key(j, "exclusion_proven");
     ic_json_out_bool(j, rep->proven);
     ic_json_out_key(j, "sampled");
-    ic_json_out_string(j, rep->proven ? "start points inside the cells that were not excluded"
-                                      : "everything: a surface has no interval evaluation");
+    const int searched = !rep->method || strcmp(rep->method, "search") == 0;
+    ic_json_out_string(j, !searched      ? "nothing: the intersection is in closed form"
+                          : rep->proven ? "start points inside the cells that were not excluded"
+                                        : "everything: a surface has no interval evaluation");
     ic_json_out_key(j, "smallest_cell");
     ic_json_out_number(j, rep->cell_size);
     int_member(j, "start_candidates", rep->candidates);

@@ -53,6 +53,7 @@ void ic_trace_defaults(ic_trace_options *opt)
     opt->max_points = 100000;
     opt->depth = 6;
     opt->shape_tol = 1e-6;
+    opt->exact_paths = 1;
     ic_local_defaults(&opt->local);
 }
 

@@ -258,11 +258,23 @@ ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local
     return IC_OK;
 }
 
-/* Adds the curve of the points pts (the result's from now on, freed with it
- * even when this fails). */
-static ic_status add_curve(ic_trace_result *r, ic_trace_point *pts, int n, int closed,
-                           ic_trace_event e0, ic_trace_event e1, double shape_tol, int at0, int at1,
-                           ic_error *err)
+int ic_trace_add_exact_special(ic_trace_result *r, const double *xyz, ic_point_type type)
+{
+    if (grow_specials(r) != 0)
+        return -1;
+    ic_trace_located *loc = &r->located[r->nspecials];
+    memset(loc, 0, sizeof *loc);
+    memcpy(loc->pt.xyz, xyz, sizeof loc->pt.xyz);
+    ic_trace_special *s = &r->specials[r->nspecials++];
+    memset(s, 0, sizeof *s);
+    memcpy(s->xyz, xyz, sizeof s->xyz);
+    s->type = type;
+    return 0;
+}
+
+ic_status ic_trace_add_shaped_curve(ic_trace_result *r, ic_trace_point *pts, int n, int closed,
+                                    ic_trace_event e0, ic_trace_event e1, double shape_tol,
+                                    ic_shape shape, int at0, int at1, ic_error *err)
 {
     if (r->ncurves == r->capc) {
         const int cap = r->capc ? 2 * r->capc : 8;
@@ -293,10 +305,20 @@ static ic_status add_curve(ic_trace_result *r, ic_trace_point *pts, int n, int c
     c->ends[0] = e0;
     c->ends[1] = e1;
     c->shape_tol = shape_tol;
-    c->shape = ic_trace_shape(pts, n, c->length, shape_tol, 0);
+    c->shape = shape;
     if (r->index && ic_curve_index_add(r->index, r->ncurves - 1, pts, n) != 0)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory indexing a curve");
     return IC_OK;
+}
+
+/* Adds the curve of the points pts (the result's from now on, freed with it
+ * even when this fails), its shape classified. */
+static ic_status add_curve(ic_trace_result *r, ic_trace_point *pts, int n, int closed,
+                           ic_trace_event e0, ic_trace_event e1, double shape_tol, int at0, int at1,
+                           ic_error *err)
+{
+    const ic_shape shape = ic_trace_shape(pts, n, pts[n - 1].s - pts[0].s, shape_tol, 0);
+    return ic_trace_add_shaped_curve(r, pts, n, closed, e0, e1, shape_tol, shape, at0, at1, err);
 }
 
 /* Out of memory where the curve goes on regardless: noted in the pair, for
@@ -849,13 +871,23 @@ static ic_status trace(ic_trace_result **out, ic_pair *pair, const ic_trace_opti
     r->scale = ic_trace_problem_scale(pair, user_opt);
     ic_trace_options eff = ic_trace_absolute_options(user_opt, r->scale);
     const ic_trace_options *opt = &eff;
+    r->report.method = ic_trace_method_search;
+    int exact = 0;
+    ic_status st = ic_trace_exact_revolution(r, pair, user_opt, &exact, err);
+    if (st != IC_OK || exact) {
+        if (st != IC_OK)
+            ic_trace_result_free(r);
+        else
+            *out = r;
+        return st;
+    }
     if (opt->time_limit > 0)
         r->budget.deadline = ic_trace_now() + opt->time_limit;
     ic_candidate *cand = NULL;
     ic_unresolved *unres = NULL;
     int nc = 0, nu = 0;
     ic_tracer *tr = NULL;
-    ic_status st = ic_trace_candidates(pair, opt, NULL, &cand, &nc, &unres, &nu, &r->report,
+    st = ic_trace_candidates(pair, opt, NULL, &cand, &nc, &unres, &nu, &r->report,
                                        &r->budget, err);
     r->first_cell_size = r->report.cell_size;
     /* the scale of the rest: where the first search left the intersection

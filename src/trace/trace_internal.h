@@ -179,6 +179,24 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
                              const ic_local_point *pt, const ic_trace_options *opt,
                              ic_trace_point **pts_out, int *n_out, ic_error *err);
 
+/* exact_revolution.c: the pair in closed form when its surfaces are
+ * coaxial surfaces of revolution (the user's options, relative; r->scale
+ * the problem's size L): *done = 1 with r filled, its scale that of what
+ * was found and its report complete, else *done = 0 and r untouched;
+ * IC_ERR_NOMEM out of memory. The report's method strings. */
+ic_status ic_trace_exact_revolution(ic_trace_result *r, ic_pair *pair,
+                                    const ic_trace_options *user_opt, int *done, ic_error *err);
+extern const char ic_trace_method_search[];
+extern const char ic_trace_method_revolution[];
+
+/* trace.c: adds the curve of the points pts (the result's from now on,
+ * freed with it even when this fails) of a shape known; and a special point
+ * known exactly (no apparatus computed): 0, or -1 out of memory. */
+ic_status ic_trace_add_shaped_curve(ic_trace_result *r, ic_trace_point *pts, int n, int closed,
+                                    ic_trace_event e0, ic_trace_event e1, double shape_tol,
+                                    ic_shape shape, int at0, int at1, ic_error *err);
+int ic_trace_add_exact_special(ic_trace_result *r, const double *xyz, ic_point_type type);
+
 /* shape.c */
 ic_shape ic_trace_shape(const ic_trace_point *p, int n, double length, double tol, int tangential);
 

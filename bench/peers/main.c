@@ -19,6 +19,7 @@
 static const peer_engine engines[] = {
     {"intercurve", peer_intercurve},
     {"intercurve B-spline", peer_intercurve_bspline},
+    {"intercurve primitives", peer_intercurve_primitives},
     {"OCCT B-spline", peer_occt_nurbs},
     {"OCCT analytic", peer_occt_analytic},
     {"SISL", peer_sisl},
@@ -90,7 +91,7 @@ int main(int argc, char **argv)
     if (bad)
         return bad;
     if (o.only_engine && !known_engine(o.only_engine))
-        return usage("no such engine (intercurve, \"intercurve B-spline\", \"OCCT B-spline\", \"OCCT analytic\", SISL)",
+        return usage("no such engine (intercurve, \"intercurve B-spline\", \"intercurve primitives\", \"OCCT B-spline\", \"OCCT analytic\", SISL)",
                      o.only_engine);
     bench_case cases[BENCH_NUM_CASES];
     const int n = bench_cases_build(cases);

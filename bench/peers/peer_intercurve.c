@@ -1,6 +1,8 @@
 /* intercurve on a case: the two nets as NURBS surfaces (ic_surface_new_nurbs),
- * the whole intersection traced with the default options (ic_trace), its
- * own curvature and torsion at every traced point. */
+ * or the exact surfaces as implicit primitives (ic_surface_new_primitive, in
+ * a box around both nets, as OpenCASCADE's analytic engine gets them), the
+ * whole intersection traced with the default options (ic_trace), its own
+ * curvature and torsion at every traced point. */
 #include <math.h>
 #include <stdio.h>
 #include <time.h>
@@ -52,6 +54,51 @@ static double conversion_error(ic_surface *s, const case_net *net)
                 worst = fmax(worst, fabs(theirs[k] - ours[k]));
         }
     return worst;
+}
+
+/* The exact surface as an implicit primitive, placed as the net is. */
+static ic_status make_primitive(ic_surface **s, const exact_surface *e, ic_error *err)
+{
+    ic_primitive p = {0};
+    for (int k = 0; k < 3; k++) {
+        p.center[k] = e->center[k];
+        p.axis[k] = e->kind == EXACT_PLANE ? 0.0 : e->axis[k];
+        p.normal[k] = e->kind == EXACT_PLANE ? e->axis[k] : 0.0;
+        p.ref_direction[k] = e->ref[k];
+    }
+    p.kind = e->kind == EXACT_PLANE    ? IC_PRIM_PLANE
+             : e->kind == EXACT_SPHERE ? IC_PRIM_SPHERE
+             : e->kind == EXACT_TORUS  ? IC_PRIM_TORUS
+                                       : IC_PRIM_CYLINDER;
+    p.radius = e->radius;
+    p.major_radius = e->major;
+    return ic_surface_new_primitive(s, &p, IC_IMPLICIT, err);
+}
+
+/* relative to the box's size: the margin added on every side of the box
+ * where both nets lie (a plane's net is flat) */
+#define PRIMITIVE_BOX_MARGIN 0.05
+
+/* The box of the primitives: where the bounding boxes of both nets' control
+ * points (which hold their patches) overlap, with a margin. */
+static void primitive_box(const bench_case *c, double box[3][2])
+{
+    const case_net *nets[2] = {&c->netA, &c->netB};
+    double size = 0.0;
+    for (int k = 0; k < 3; k++) {
+        box[k][0] = -INFINITY, box[k][1] = INFINITY;
+        for (int n = 0; n < 2; n++) {
+            double lo = INFINITY, hi = -INFINITY;
+            for (int i = 0; i < nets[n]->count[0] * nets[n]->count[1]; i++) {
+                lo = fmin(lo, nets[n]->points[3 * i + k]);
+                hi = fmax(hi, nets[n]->points[3 * i + k]);
+            }
+            box[k][0] = fmax(box[k][0], lo), box[k][1] = fmin(box[k][1], hi);
+        }
+        size = fmax(size, box[k][1] - box[k][0]);
+    }
+    for (int k = 0; k < 3; k++)
+        box[k][0] -= PRIMITIVE_BOX_MARGIN * size, box[k][1] += PRIMITIVE_BOX_MARGIN * size;
 }
 
 static int collect_specials(const ic_trace_result *res, peer_output *out);
@@ -129,27 +176,39 @@ static int collect_bsplines(const ic_trace_result *res, peer_output *out)
     return collect_specials(res, out);
 }
 
-/* intercurve, traced (and with `fitted`, its curves fitted as B-splines,
- * timed with the trace, and scored on them). */
-static int run_intercurve(const bench_case *c, peer_output *out, double *seconds, int fitted)
+/* intercurve, traced on the nets or (`primitives`) the exact surfaces (and
+ * with `fitted`, its curves fitted as B-splines, timed with the trace, and
+ * scored on them). */
+static int run_intercurve(const bench_case *c, peer_output *out, double *seconds, int fitted,
+                          int primitives)
 {
     ic_surface *A = NULL, *B = NULL;
     ic_pair *pair = NULL;
     ic_trace_result *res = NULL;
     ic_error err;
     int rc = -1;
-    if (make_surface(&A, &c->netA, &err) != IC_OK || make_surface(&B, &c->netB, &err) != IC_OK ||
-        ic_pair_new(&pair, A, B, &err) != IC_OK) {
+    const ic_status made = primitives ? make_primitive(&A, &c->A, &err) == IC_OK
+                                            ? make_primitive(&B, &c->B, &err)
+                                            : IC_ERR_INVALID
+                           : make_surface(&A, &c->netA, &err) == IC_OK
+                               ? make_surface(&B, &c->netB, &err)
+                               : IC_ERR_INVALID;
+    if (made != IC_OK || ic_pair_new(&pair, A, B, &err) != IC_OK) {
         peer_output_note(out, "setup: %s", err.message);
         goto done;
     }
-    const double conv = fmax(conversion_error(A, &c->netA), conversion_error(B, &c->netB));
+    const double conv =
+        primitives ? 0.0 : fmax(conversion_error(A, &c->netA), conversion_error(B, &c->netB));
     if (!(conv <= CONVERSION_TOL)) {
         peer_output_note(out, "the intercurve surfaces are not the nets (off by %.1e)", conv);
         goto done;
     }
     ic_trace_options opt;
     ic_trace_defaults(&opt);
+    if (primitives) {
+        primitive_box(c, opt.box);
+        opt.has_box = 1;
+    }
     const double t0 = now_seconds();
     ic_status st = ic_trace(&res, pair, &opt, &err);
     if (st == IC_OK && fitted)
@@ -161,6 +220,8 @@ static int run_intercurve(const bench_case *c, peer_output *out, double *seconds
         rc = 0;
         goto done;
     }
+    if (primitives)
+        peer_output_note(out, "%s; ", ic_trace_result_report(res)->method);
     rc = fitted ? collect_bsplines(res, out) : collect(res, out);
 done:
     ic_trace_result_free(res);
@@ -172,10 +233,15 @@ done:
 
 int peer_intercurve(const bench_case *c, peer_output *out, double *seconds)
 {
-    return run_intercurve(c, out, seconds, 0);
+    return run_intercurve(c, out, seconds, 0, 0);
 }
 
 int peer_intercurve_bspline(const bench_case *c, peer_output *out, double *seconds)
 {
-    return run_intercurve(c, out, seconds, 1);
+    return run_intercurve(c, out, seconds, 1, 0);
+}
+
+int peer_intercurve_primitives(const bench_case *c, peer_output *out, double *seconds)
+{
+    return run_intercurve(c, out, seconds, 0, 1);
 }

@@ -63,6 +63,9 @@ typedef struct {
 int peer_intercurve(const bench_case *c, peer_output *out, double *seconds);
 /* the same, scored on its fitted B-splines (docs/bspline.md) */
 int peer_intercurve_bspline(const bench_case *c, peer_output *out, double *seconds);
+/* the exact surfaces as intercurve's implicit primitives, in a box around the
+ * nets (what OpenCASCADE's analytic engine is given) */
+int peer_intercurve_primitives(const bench_case *c, peer_output *out, double *seconds);
 int peer_sisl(const bench_case *c, peer_output *out, double *seconds);
 int peer_occt_nurbs(const bench_case *c, peer_output *out, double *seconds);
 int peer_occt_analytic(const bench_case *c, peer_output *out, double *seconds);

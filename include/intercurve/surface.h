@@ -29,7 +29,11 @@
 extern "C" {
 #endif
 
-typedef enum { IC_PARAMETRIC = 0, IC_IMPLICIT = 1 } ic_surface_kind;
+typedef enum {
+    IC_SURFACE_NONE = -1, /**< no surface: what ic_surface_get_kind(NULL) returns */
+    IC_PARAMETRIC = 0,
+    IC_IMPLICIT = 1
+} ic_surface_kind;
 
 typedef enum {
     IC_PRIM_PLANE,

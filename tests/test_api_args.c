@@ -112,10 +112,12 @@ static void surface_args(fixture *fx)
     BAD(ic_surface_new_parametric, "s", ic_surface_new_parametric(NULL, xyz, NULL, NULL, 0, NULL, &err));
     BAD(ic_surface_new_parametric, "xyz", ic_surface_new_parametric(&s, NULL, NULL, NULL, 0, NULL, &err));
     CHECK(s == NULL, "*s is NULL on failure");
-    BAD(ic_expr_compile, "nconsts", ic_surface_new_parametric(&s, xyz, NULL, NULL, -1, NULL, &err));
-    BAD(ic_expr_compile, "consts", ic_surface_new_parametric(&s, xyz, NULL, NULL, 2, NULL, &err));
+    BAD(ic_surface_new_parametric, "nconsts", ic_surface_new_parametric(&s, xyz, NULL, NULL, -1, NULL, &err));
+    BAD(ic_surface_new_parametric, "consts", ic_surface_new_parametric(&s, xyz, NULL, NULL, 2, NULL, &err));
     BAD(ic_surface_new_implicit, "s", ic_surface_new_implicit(NULL, "x", NULL, 0, &err));
     BAD(ic_surface_new_implicit, "f", ic_surface_new_implicit(&s, NULL, NULL, 0, &err));
+    BAD(ic_surface_new_implicit, "nconsts", ic_surface_new_implicit(&s, "x", NULL, -1, &err));
+    BAD(ic_surface_new_implicit, "consts", ic_surface_new_implicit(&s, "x", NULL, 1, &err));
     BAD(ic_surface_new_callback, "s", ic_surface_new_callback(NULL, IC_IMPLICIT, NULL, NULL, &err));
     BAD(ic_surface_new_callback, "fn", ic_surface_new_callback(&s, IC_IMPLICIT, NULL, NULL, &err));
     BAD(ic_surface_new_primitive, "s", ic_surface_new_primitive(NULL, &prim, IC_IMPLICIT, &err));
@@ -384,6 +386,12 @@ static void local_args(fixture *fx)
     BAD(ic_local_locate_degenerate, "pair", ic_local_locate_degenerate(NULL, &pt, &fx->pt, 1, o, &err));
     BAD(ic_local_locate_degenerate, "pt", ic_local_locate_degenerate(fx->pair, NULL, &fx->pt, 1, o, &err));
     BAD(ic_local_locate_degenerate, "near", ic_local_locate_degenerate(fx->pair, &pt, NULL, 1, o, &err));
+    /* opt may be NULL for these three (the defaults): a status, no crash */
+    ic_status st[3] = {ic_local_locate_tangential(fx->pair, &pt, &fx->pt, 1, NULL, &err),
+                       ic_local_tangential_place(fx->pair, &fx->pt, NULL, &radius, &err),
+                       ic_local_locate_degenerate(fx->pair, &pt, &fx->pt, 1, NULL, &err)};
+    for (int k = 0; k < 3; k++)
+        CHECK(st[k] >= IC_OK && st[k] <= IC_ERR_IO, "opt NULL: status %d", (int)st[k]);
     BAD(ic_local_find, "pair", ic_local_find(NULL, &pt, xyz, 3, 0, o, &err));
     BAD(ic_local_find, "pt", ic_local_find(fx->pair, NULL, xyz, 3, 0, o, &err));
     BAD(ic_local_find, "values", ic_local_find(fx->pair, &pt, NULL, 3, 0, o, &err));
@@ -527,8 +535,8 @@ static void problem_args(fixture *fx, FILE *f)
 
 static void binding_and_plot_args(fixture *fx)
 {
-    ic_trace_result *res;
-    ic_pair *pair;
+    ic_trace_result *res = (ic_trace_result *)1;
+    ic_pair *pair = (ic_pair *)1;
     char *json;
     size_t len;
     const double values[3] = {1.5, 0, 1};
@@ -536,6 +544,7 @@ static void binding_and_plot_args(fixture *fx)
     BAD(ic_problem_trace, "res", ic_problem_trace(NULL, &pair, pb, 1e-9, 4, 0, 0, &err));
     BAD(ic_problem_trace, "pair", ic_problem_trace(&res, NULL, pb, 1e-9, 4, 0, 0, &err));
     BAD(ic_problem_trace, "problem", ic_problem_trace(&res, &pair, NULL, 1e-9, 4, 0, 0, &err));
+    CHECK(res == NULL && pair == NULL, "problem_trace outputs NULL on failure");
     BAD(ic_trace_json_alloc, "json", ic_trace_json_alloc(NULL, &len, fx->res, fx->pair, &err));
     BAD(ic_trace_json_alloc, "res", ic_trace_json_alloc(&json, &len, NULL, fx->pair, &err));
     BAD(ic_trace_json_alloc, "pair", ic_trace_json_alloc(&json, &len, fx->res, NULL, &err));

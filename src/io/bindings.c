@@ -34,9 +34,9 @@ ic_status ic_problem_trace(ic_trace_result **res, ic_pair **pair, const ic_probl
 {
     IC_ARG_NOT_NULL(res, "res");
     IC_ARG_NOT_NULL(pair, "pair");
-    IC_ARG_NOT_NULL(problem, "problem");
     *res = NULL;
     *pair = NULL;
+    IC_ARG_NOT_NULL(problem, "problem");
     if (!(tol > 0 && tol <= MAX_REL_TOL))
         return ic_error_set(err, IC_ERR_INVALID, 0, "tol %g is not in (0, %g]", tol, MAX_REL_TOL);
     if (!(fit_tol >= 0 && fit_tol <= MAX_REL_TOL))

@@ -64,6 +64,8 @@ ic_status ic_surface_new_parametric(ic_surface **out, const char *const xyz[3],
     IC_ARG_NOT_NULL(out, "s");
     *out = NULL;
     IC_ARG_NOT_NULL(xyz, "xyz");
+    IC_ARG_CHECK(nconsts >= 0, "nconsts", "must not be negative");
+    IC_ARG_CHECK(nconsts == 0 || consts, "consts", "is NULL");
     ic_surface *s = surface_alloc(IC_PARAMETRIC, BACKEND_FORMULA);
     if (!s)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory creating a surface");
@@ -87,6 +89,8 @@ ic_status ic_surface_new_implicit(ic_surface **out, const char *f, const ic_cons
     IC_ARG_NOT_NULL(out, "s");
     *out = NULL;
     IC_ARG_NOT_NULL(f, "f");
+    IC_ARG_CHECK(nconsts >= 0, "nconsts", "must not be negative");
+    IC_ARG_CHECK(nconsts == 0 || consts, "consts", "is NULL");
     ic_surface *s = surface_alloc(IC_IMPLICIT, BACKEND_FORMULA);
     if (!s)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory creating a surface");

@@ -10,6 +10,13 @@
  * An optional ::ic_error (may be NULL) receives the code, a position and a
  * message in fixed buffers, so even out-of-memory can be reported.
  * The library never prints and never aborts.
+ *
+ * Arguments (docs/conventions.md, "Argument checking"): a NULL object,
+ * output, string or array a function needs, or a count or index out of
+ * range, is IC_ERR_INVALID with a message naming the function and the
+ * argument ("ic_trace: pair is NULL"); getters return 0, -1 or NULL (as
+ * their comments say) for a NULL object or an index out of range; functions
+ * returning void do nothing with a NULL argument. `err` may be NULL anywhere.
  */
 #ifndef INTERCURVE_COMMON_H
 #define INTERCURVE_COMMON_H

@@ -58,6 +58,7 @@ IC_API IC_NODISCARD ic_status ic_expr_compile(ic_expr **out, const char *const *
 /** Frees a compiled expression; NULL is allowed. */
 IC_API void ic_expr_free(ic_expr *e);
 
+/* The getters and work lengths below are 0 for a NULL expression. */
 IC_API int ic_expr_num_outputs(const ic_expr *e);
 IC_API int ic_expr_num_vars(const ic_expr *e);
 /** Number of instructions of the tape (after folding and sharing). */
@@ -113,7 +114,8 @@ IC_API size_t ic_expr_interval_grad_work_len(const ic_expr *e);
  * is differentiable (abs contributes [-1, 1] where its argument holds 0).
  * Returns 1 when every operation is defined over the whole enclosure of its
  * arguments (no sqrt or log of a negative part, no division by an interval
- * holding 0, ...) and no enclosure is empty; 0 otherwise. Arguments that
+ * holding 0, ...) and no enclosure is empty; 0 otherwise (and for a NULL
+ * argument, which computes nothing). Arguments that
  * need the formula on the whole box (the mean value theorem of centred
  * forms, the normal cones of the loop test) must decide nothing on 0.
  */
@@ -134,7 +136,7 @@ IC_API IC_NODISCARD ic_status ic_expr_eval_jet(const ic_expr *e, double *out,
 /**
  * Writes a two-line picture of an error position into buf:
  *   "  <formula>\n  <spaces>^\n". Formulas longer than fits are cut around
- * the column. Returns buf.
+ * the column. Returns buf (an empty string for a NULL formula).
  */
 IC_API char *ic_expr_caret(char *buf, size_t size, const char *formula, int column);
 

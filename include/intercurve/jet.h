@@ -51,6 +51,7 @@ IC_API IC_NODISCARD ic_status ic_jet_space_new(ic_jet_space **sp, int nvars, int
 /** Frees a space; NULL is allowed. */
 IC_API void ic_jet_space_free(ic_jet_space *sp);
 
+/* The getters below return 0 for a NULL space (ic_jet_index -1). */
 /** Number of variables m. */
 IC_API int ic_jet_space_num_vars(const ic_jet_space *sp);
 /* The spelling before 0.1.0 (deprecated; docs/packaging.md). */
@@ -65,10 +66,12 @@ IC_API int ic_jet_degree_start(const ic_jet_space *sp, int d);
 /** Index of monomial x^alpha (alpha has nvars entries), or -1 if |alpha| > K
  *  or an entry is negative. */
 IC_API int ic_jet_index(const ic_jet_space *sp, const int *alpha);
-/** Exponents of the monomial at `index` into alpha[nvars]. */
+/** Exponents of the monomial at `index` into alpha[nvars]; alpha is left as
+ *  it was for an index out of range. */
 IC_API void ic_jet_exponents(const ic_jet_space *sp, int index, int *alpha);
 /** alpha! = alpha_1! ... alpha_m! of the monomial at `index`: the factor
- *  between a Taylor coefficient and the partial derivative. */
+ *  between a Taylor coefficient and the partial derivative (0 for an index
+ *  out of range). */
 IC_API double ic_jet_factorial(const ic_jet_space *sp, int index);
 
 /* ---- construction and linear operations (in place allowed) ---- */

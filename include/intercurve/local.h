@@ -62,7 +62,7 @@ typedef enum {
 } ic_method;
 
 /** "auto", "jet", "closed-form", "perturbation", "height-difference" (a
- *  static string); and back (-1 if unknown). */
+ *  static string); and back (-1 if unknown or NULL). */
 IC_API const char *ic_method_name(ic_method method);
 IC_API int ic_method_from_name(const char *name);
 
@@ -120,7 +120,8 @@ IC_API void ic_pair_free(ic_pair *pair);
 /** 1 for a self-intersection pair. */
 IC_API int ic_pair_is_self(const ic_pair *pair);
 /** Surface 0 (A) or 1 (B; A again for a self-intersection): the caller's
- *  surface given to ic_pair_new, not owned by the pair. */
+ *  surface given to ic_pair_new, not owned by the pair; NULL for a NULL pair
+ *  or another `which`. */
 IC_API ic_surface *ic_pair_surface(const ic_pair *pair, int which);
 
 /** A point of the intersection: coordinates and the parameters on each

@@ -43,15 +43,16 @@ IC_API IC_NODISCARD ic_status ic_problem_read(ic_problem **p, FILE *f, const cha
 /** Frees a problem and its surfaces; NULL is allowed. */
 IC_API void ic_problem_free(ic_problem *p);
 
-/* The accessors' pointers (NULL for an index out of range) point into the
- * problem: valid until ic_problem_free. */
+/* The accessors' pointers (NULL for a NULL problem or an index out of range)
+ * point into the problem: valid until ic_problem_free. The counts and flags
+ * are 0 for a NULL problem. */
 /** The title ("" when the file has none). */
 IC_API const char *ic_problem_title(const ic_problem *p);
 IC_API int ic_problem_num_surfaces(const ic_problem *p);
 /** The i-th surface (owned by the problem). */
 IC_API ic_surface *ic_problem_surface(const ic_problem *p, int i);
 IC_API const char *ic_problem_surface_name(const ic_problem *p, int i);
-/** Index of the surface called `name`, or -1. */
+/** Index of the surface called `name`, or -1 (also for NULL arguments). */
 IC_API int ic_problem_find_surface(const ic_problem *p, const char *name);
 /** 1 for a self-intersection problem. */
 IC_API int ic_problem_is_self(const ic_problem *p);

@@ -29,7 +29,11 @@
 extern "C" {
 #endif
 
-typedef enum { IC_PARAMETRIC = 0, IC_IMPLICIT = 1 } ic_surface_kind;
+typedef enum {
+    IC_SURFACE_NONE = -1, /**< no surface: what ic_surface_get_kind(NULL) returns */
+    IC_PARAMETRIC = 0,
+    IC_IMPLICIT = 1
+} ic_surface_kind;
 
 typedef enum {
     IC_PRIM_PLANE,
@@ -168,7 +172,7 @@ IC_API void ic_surface_free(ic_surface *s);
  * Knot lines of a NURBS patch, where its derivatives may jump (docs/nurbs.md):
  * 1 and *knot if going from parameter value `from` to `to` along parameter
  * `dir` (0: u, 1: v) meets one (from excluded, to included; the first met),
- * else 0. Always 0 for other surfaces.
+ * else 0. Always 0 for other surfaces and NULL.
  */
 IC_API int ic_surface_knot_crossed(const ic_surface *s, int dir, double from, double to,
                                    double *knot);
@@ -189,7 +193,8 @@ IC_API int ic_surface_knot_seam(const ic_surface *s, int dir);
 IC_API void ic_surface_set_knot_side(ic_surface *s, const int side[2]);
 
 IC_API ic_surface_kind ic_surface_get_kind(const ic_surface *s);
-/** Number of variables: 2 for parametric (u, v), 3 for implicit (x, y, z). */
+/** Number of variables: 2 for parametric (u, v), 3 for implicit (x, y, z);
+ *  0 for NULL (as ic_surface_num_outputs). */
 IC_API int ic_surface_num_vars(const ic_surface *s);
 /* The spelling before 0.1.0 (deprecated; docs/packaging.md). */
 #define ic_surface_num_inputs ic_surface_num_vars

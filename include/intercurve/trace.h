@@ -114,6 +114,7 @@ IC_API IC_NODISCARD ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *even
 /** Steps until an event other than IC_TRACE_CONTINUE. */
 IC_API IC_NODISCARD ic_status ic_tracer_run(ic_tracer *tr, ic_trace_event *event, ic_error *err);
 
+/** 0 for a NULL tracer. */
 IC_API int ic_tracer_num_points(const ic_tracer *tr);
 /** Point i of the current curve, NULL out of range. Valid until the next
  *  ic_tracer_start, ic_tracer_step or ic_tracer_run (the points grow by
@@ -223,8 +224,9 @@ typedef struct ic_trace_result ic_trace_result;
 IC_API IC_NODISCARD ic_status ic_trace(ic_trace_result **res, ic_pair *pair,
                                        const ic_trace_options *opt, ic_error *err);
 IC_API void ic_trace_result_free(ic_trace_result *res);
-/* The accessors' pointers (NULL for an index out of range) point into the
- * result: valid until ic_trace_result_free. */
+/* The accessors' pointers (NULL for a NULL result or an index out of range)
+ * point into the result: valid until ic_trace_result_free. The counts are 0
+ * for a NULL result. */
 IC_API int ic_trace_result_num_curves(const ic_trace_result *res);
 IC_API const ic_trace_curve *ic_trace_result_curve(const ic_trace_result *res, int i);
 IC_API int ic_trace_result_num_specials(const ic_trace_result *res);

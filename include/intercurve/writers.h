@@ -25,7 +25,7 @@ extern "C" {
 
 /** The classification of a point of curve c: a recorded special point's type
  *  where the point is one (a tangential curve end), tangential-curve along a
- *  tangential curve, transversal otherwise. */
+ *  tangential curve, transversal otherwise (and without a point p). */
 IC_API ic_point_type ic_trace_point_type(const ic_trace_result *res, const ic_trace_curve *c,
                                          const ic_trace_point *p);
 

@@ -1,4 +1,5 @@
 /* B-spline curves: evaluation of points and derivatives (bspline.h). */
+#include "common/args.h"
 #include "intercurve/bspline.h"
 
 #include <math.h>
@@ -13,6 +14,8 @@ static ic_status malformed(ic_error *err, const char *what)
 
 ic_status ic_bspline_eval(const ic_bspline *c, double t, int nderiv, double *out, ic_error *err)
 {
+    IC_ARG_NOT_NULL(c, "c");
+    IC_ARG_NOT_NULL(out, "out");
     if (!c || !c->knots || !c->control || (c->dim != 2 && c->dim != 3))
         return malformed(err, "no curve, or a dimension other than 2 or 3");
     const int p = c->degree, n = c->ncontrol;

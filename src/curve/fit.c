@@ -3,6 +3,7 @@
  * curve in space by arc length; its parameter curves on the parametric
  * sheets by the chain rule), checked against corrected points of the
  * intersection between the points. */
+#include "common/args.h"
 #include "intercurve/bspline.h"
 
 #include <math.h>
@@ -636,8 +637,11 @@ static ic_status refined_points(ic_pair *pair, const ic_curve_fit *f, const ic_t
 ic_status ic_curve_fit_new(ic_curve_fit **out, ic_pair *pair, const ic_trace_curve *c,
                            double fit_tol, ic_error *err)
 {
+    IC_ARG_NOT_NULL(out, "fit");
     *out = NULL;
-    if (!pair || !c || c->npoints < 2 || !c->points)
+    IC_ARG_NOT_NULL(pair, "pair");
+    IC_ARG_NOT_NULL(c, "c");
+    if (c->npoints < 2 || !c->points)
         return ic_error_set(err, IC_ERR_INVALID, 0, "curve fit: no curve of two points or more");
     if (!(fit_tol > 0) || !isfinite(fit_tol))
         return ic_error_set(err, IC_ERR_INVALID, 0, "curve fit: the tolerance must be positive");

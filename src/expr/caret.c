@@ -8,6 +8,10 @@ char *ic_expr_caret(char *buf, size_t size, const char *formula, int column)
 {
     if (!buf || size == 0)
         return buf;
+    if (!formula) {
+        buf[0] = '\0';
+        return buf;
+    }
     const int len = (int)strlen(formula);
     const int width = 70; /* characters of the formula shown at most */
     int from = 0;

@@ -1,9 +1,10 @@
 /* Evaluation of the tape on doubles and on jets. */
+#include "common/args.h"
 #include "expr_internal.h"
 
 #include <math.h>
 
-size_t ic_expr_work_len(const ic_expr *e) { return (size_t)e->len; }
+size_t ic_expr_work_len(const ic_expr *e) { return e ? (size_t)e->len : 0; }
 
 static ic_status domain_error(const ic_instr *x, double a, ic_error *err)
 {
@@ -14,6 +15,10 @@ static ic_status domain_error(const ic_instr *x, double a, ic_error *err)
 ic_status ic_expr_eval(const ic_expr *e, double *out, const double *x, double *work,
                        ic_error *err)
 {
+    IC_ARG_NOT_NULL(e, "e");
+    IC_ARG_NOT_NULL(out, "out");
+    IC_ARG_NOT_NULL(x, "x");
+    IC_ARG_NOT_NULL(work, "work");
     double *r = work;
     for (int i = 0; i < e->len; i++) {
         const ic_instr *in = &e->code[i];
@@ -34,6 +39,8 @@ ic_status ic_expr_eval(const ic_expr *e, double *out, const double *x, double *w
 
 size_t ic_expr_jet_work_len(const ic_expr *e, const ic_jet_space *sp)
 {
+    if (!e || !sp)
+        return 0;
     return (size_t)e->len * (size_t)ic_jet_space_len(sp) + ic_jet_scratch_len(sp);
 }
 
@@ -105,6 +112,11 @@ static ic_status jet_op(const ic_expr *e, const ic_instr *in, double *reg, const
 ic_status ic_expr_eval_jet(const ic_expr *e, double *out, const double *const *x,
                            const ic_jet_space *sp, double *work, ic_error *err)
 {
+    IC_ARG_NOT_NULL(e, "e");
+    IC_ARG_NOT_NULL(out, "out");
+    IC_ARG_NOT_NULL(x, "x");
+    IC_ARG_NOT_NULL(sp, "sp");
+    IC_ARG_NOT_NULL(work, "work");
     const int n = ic_jet_space_len(sp);
     double *scratch = work + (size_t)e->len * (size_t)n;
     for (int i = 0; i < e->len; i++) {

@@ -306,7 +306,7 @@ ic_interval ic_interval_abs(ic_interval a)
     return (ic_interval){0.0, fmax(-a.lo, a.hi)};
 }
 
-size_t ic_expr_interval_work_len(const ic_expr *e) { return (size_t)e->len; }
+size_t ic_expr_interval_work_len(const ic_expr *e) { return e ? (size_t)e->len : 0; }
 
 ic_interval ic_interval_op(const ic_instr *in, ic_interval a, ic_interval b)
 {
@@ -397,6 +397,8 @@ int ic_interval_op_defined(const ic_instr *in, ic_interval a, ic_interval b)
 void ic_expr_eval_interval(const ic_expr *e, ic_interval *out, const ic_interval *x,
                            ic_interval *work)
 {
+    if (!e || !out || !x || !work)
+        return;
     for (int i = 0; i < e->len; i++) {
         const ic_instr *in = &e->code[i];
         const ic_interval a = in->op == OP_VAR ? x[in->n] : in->a >= 0 ? work[in->a] : ENTIRE;

@@ -19,7 +19,7 @@ static const ic_interval ONE = {1.0, 1.0};
 static ic_interval scalar(double c) { return (ic_interval){c, c}; }
 static ic_interval sq(ic_interval a) { return ic_interval_pow_int(a, 2); }
 
-size_t ic_expr_interval_grad_work_len(const ic_expr *e) { return (size_t)e->len; }
+size_t ic_expr_interval_grad_work_len(const ic_expr *e) { return e ? (size_t)e->len : 0; }
 
 /* The factor f'(a) of the chain rule d op(a) = f'(a) da for one-argument
  * operations, given the value v = op(a). */
@@ -117,6 +117,8 @@ static int all_nonempty(const ic_interval_grad *r, int ngrad)
 int ic_expr_eval_interval_grad(const ic_expr *e, ic_interval_grad *out, const ic_interval_grad *x,
                                int ngrad, ic_interval_grad *work)
 {
+    if (!e || !out || !x || !work)
+        return 0;
     int whole = 1;
     for (int i = 0; i < e->len; i++) {
         const ic_instr *in = &e->code[i];

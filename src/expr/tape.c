@@ -1,5 +1,6 @@
 /* The tape: building it (constant folding, sharing of identical
  * instructions), compiling formulas into it, freeing it. */
+#include "common/args.h"
 #include "expr_internal.h"
 
 #include <math.h>
@@ -219,12 +220,16 @@ ic_status ic_expr_compile(ic_expr **out, const char *const *formulas, int nformu
                           const char *const *vars, int nvars, const ic_constant *consts,
                           int nconsts, int *which, ic_error *err)
 {
+    IC_ARG_NOT_NULL(out, "out");
     *out = NULL;
     if (which)
         *which = -1;
-    if (nformulas < 1 || nvars < 0 || nconsts < 0 || (nvars > 0 && !vars) ||
-        (nconsts > 0 && !consts) || !formulas)
-        return ic_error_set(err, IC_ERR_INVALID, 0, "ic_expr_compile: invalid arguments");
+    IC_ARG_NOT_NULL(formulas, "formulas");
+    IC_ARG_CHECK(nformulas >= 1, "nformulas", "must be at least 1");
+    IC_ARG_CHECK(nvars >= 0, "nvars", "must not be negative");
+    IC_ARG_CHECK(nconsts >= 0, "nconsts", "must not be negative");
+    IC_ARG_CHECK(nvars == 0 || vars, "vars", "is NULL");
+    IC_ARG_CHECK(nconsts == 0 || consts, "consts", "is NULL");
     ic_status st = check_names(vars, nvars, consts, nconsts, err);
     if (st != IC_OK)
         return st;
@@ -267,13 +272,15 @@ void ic_expr_free(ic_expr *e)
     free(e);
 }
 
-int ic_expr_num_outputs(const ic_expr *e) { return e->noutputs; }
-int ic_expr_num_vars(const ic_expr *e) { return e->nvars; }
-int ic_expr_tape_len(const ic_expr *e) { return e->len; }
+int ic_expr_num_outputs(const ic_expr *e) { return e ? e->noutputs : 0; }
+int ic_expr_num_vars(const ic_expr *e) { return e ? e->nvars : 0; }
+int ic_expr_tape_len(const ic_expr *e) { return e ? e->len : 0; }
 
 ic_status ic_expr_eval_constant(double *value, const char *formula, const ic_constant *consts,
                                 int nconsts, ic_error *err)
 {
+    IC_ARG_NOT_NULL(value, "value");
+    IC_ARG_NOT_NULL(formula, "formula");
     ic_expr *e = NULL;
     ic_status st = ic_expr_compile(&e, &formula, 1, NULL, 0, consts, nconsts, NULL, err);
     if (st != IC_OK)

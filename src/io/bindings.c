@@ -1,5 +1,6 @@
 /* Entry points for other languages (include/intercurve/bindings.h): the
  * commands' work with only handles, numbers and strings crossing. */
+#include "common/args.h"
 #include "intercurve/bindings.h"
 #include "intercurve/plot.h"
 #include "intercurve/writers.h"
@@ -31,10 +32,11 @@ ic_status ic_problem_trace(ic_trace_result **res, ic_pair **pair, const ic_probl
                            double tol, int depth, double time_limit, double fit_tol,
                            ic_error *err)
 {
-    if (!res || !pair || !problem)
-        return ic_error_set(err, IC_ERR_INVALID, 0, "ic_problem_trace: NULL argument");
+    IC_ARG_NOT_NULL(res, "res");
+    IC_ARG_NOT_NULL(pair, "pair");
     *res = NULL;
     *pair = NULL;
+    IC_ARG_NOT_NULL(problem, "problem");
     if (!(tol > 0 && tol <= MAX_REL_TOL))
         return ic_error_set(err, IC_ERR_INVALID, 0, "tol %g is not in (0, %g]", tol, MAX_REL_TOL);
     if (!(fit_tol >= 0 && fit_tol <= MAX_REL_TOL))
@@ -95,8 +97,9 @@ static ic_status write_memory(char **json, size_t *len, const document *d, ic_er
 ic_status ic_trace_json_alloc(char **json, size_t *len, const ic_trace_result *res,
                               const ic_pair *pair, ic_error *err)
 {
-    if (!json || !res || !pair)
-        return ic_error_set(err, IC_ERR_INVALID, 0, "ic_trace_json_alloc: NULL argument");
+    IC_ARG_NOT_NULL(json, "json");
+    IC_ARG_NOT_NULL(res, "res");
+    IC_ARG_NOT_NULL(pair, "pair");
     const document d = {res, NULL, pair, 0};
     return write_memory(json, len, &d, err);
 }
@@ -105,8 +108,10 @@ ic_status ic_problem_point_json(char **json, size_t *len, const ic_problem *prob
                                 const double *values, int count, int by_params, int order,
                                 const char *method, double point_tol, ic_error *err)
 {
-    if (!json || !problem || !values || !method)
-        return ic_error_set(err, IC_ERR_INVALID, 0, "ic_problem_point_json: NULL argument");
+    IC_ARG_NOT_NULL(json, "json");
+    IC_ARG_NOT_NULL(problem, "problem");
+    IC_ARG_NOT_NULL(values, "values");
+    IC_ARG_NOT_NULL(method, "method");
     *json = NULL;
     const int m = ic_method_from_name(method);
     if (m < 0)
@@ -142,8 +147,8 @@ ic_status ic_problem_plot(const char *path, const ic_problem *problem, const ic_
                           int width, int height, double azimuth, double elevation, int frames,
                           int chart, int mesh, ic_error *err)
 {
-    if (!path || !problem)
-        return ic_error_set(err, IC_ERR_INVALID, 0, "ic_problem_plot: NULL argument");
+    IC_ARG_NOT_NULL(path, "path");
+    IC_ARG_NOT_NULL(problem, "problem");
     if (frames < 0 || frames > MAX_FRAMES || mesh < MIN_MESH || mesh > MAX_MESH)
         return ic_error_set(err, IC_ERR_INVALID, 0,
                             "frames %d is not in 0..%d, or mesh %d not in %d..%d", frames,

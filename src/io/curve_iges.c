@@ -1,6 +1,7 @@
 /* Fitted intersection curves as an IGES 5.3 file (docs/output-formats.md,
  * "IGES"): each a rational B-spline curve (entity 126) that is polynomial
  * (PROP3 = 1, weights 1), in millimetres (units flag 2), model scale 1. */
+#include "common/args.h"
 #include "intercurve/writers.h"
 
 #include <math.h>
@@ -172,6 +173,8 @@ static int write_parameters(FILE *f, const ic_trace_result *res)
 
 ic_status ic_trace_write_iges(FILE *f, const ic_trace_result *res, const char *title, ic_error *err)
 {
+    IC_ARG_NOT_NULL(f, "f");
+    IC_ARG_NOT_NULL(res, "res");
     ic_status st = ic_curve_check_fits(res, "IGES", err);
     if (st != IC_OK)
         return st;

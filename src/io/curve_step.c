@@ -2,6 +2,7 @@
  * (docs/output-formats.md, "STEP"): one product whose shape is a
  * geometrically bounded wireframe of B_SPLINE_CURVE_WITH_KNOTS, in
  * millimetres. */
+#include "common/args.h"
 #include "intercurve/writers.h"
 
 #include "io/curve_out.h"
@@ -174,6 +175,8 @@ static void write_curve(FILE *f, const ic_trace_result *res, int i)
 
 ic_status ic_trace_write_step(FILE *f, const ic_trace_result *res, const char *title, ic_error *err)
 {
+    IC_ARG_NOT_NULL(f, "f");
+    IC_ARG_NOT_NULL(res, "res");
     ic_status st = ic_curve_check_fits(res, "STEP", err);
     if (st != IC_OK)
         return st;

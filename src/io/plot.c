@@ -3,6 +3,7 @@
  * cairo surface chosen by the file's extension, streamed into a safe file
  * (io/safe_file.h: a temporary and a rename, or a device in place).
  */
+#include "common/args.h"
 #include "plot_html.h"
 
 #include "io/safe_file.h"
@@ -15,6 +16,8 @@
 
 void ic_plot_defaults(ic_plot_options *opt)
 {
+    if (!opt)
+        return;
     opt->width = 1400;
     opt->height = 800;
     opt->azimuth = 35;
@@ -27,6 +30,8 @@ void ic_plot_defaults(ic_plot_options *opt)
 void ic_plot_scene_of_problem(ic_plot_scene *scene, const ic_problem *problem,
                               const ic_trace_result *trace)
 {
+    if (!scene)
+        return;
     memset(scene, 0, sizeof *scene);
     scene->title = ic_problem_title(problem);
     scene->has_box = ic_problem_box(problem, scene->box);
@@ -140,8 +145,8 @@ static ic_status render(plot_sink *sink, plot_format fmt, const char *path,
 ic_status ic_plot_write(const char *path, const ic_plot_scene *scene, const ic_plot_options *opt,
                         ic_error *err)
 {
-    if (!path || !scene)
-        return ic_error_set(err, IC_ERR_INVALID, 0, "ic_plot_write needs a path and a scene");
+    IC_ARG_NOT_NULL(path, "path");
+    IC_ARG_NOT_NULL(scene, "scene");
     ic_plot_options defaults;
     if (!opt) { /* NULL: the defaults */
         ic_plot_defaults(&defaults);

@@ -1,5 +1,6 @@
 /* The document of `intercurve point` (docs/output-formats.md, "The point
  * document"): one point of an intersection with every branch through it. */
+#include "common/args.h"
 #include "intercurve/writers.h"
 
 #include "io/json_out.h"
@@ -116,6 +117,9 @@ static void add_optional(json_out *j, const ic_local_result *res)
 ic_status ic_local_write_json(FILE *f, const ic_local_result *res, const ic_pair *pair, int order,
                               ic_error *err)
 {
+    IC_ARG_NOT_NULL(f, "f");
+    IC_ARG_NOT_NULL(res, "res");
+    IC_ARG_NOT_NULL(pair, "pair");
     int parametric[2];
     for (int s = 0; s < 2; s++)
         parametric[s] = ic_surface_get_kind(ic_pair_surface(pair, s)) == IC_PARAMETRIC;

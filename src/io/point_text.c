@@ -1,5 +1,6 @@
 /* `intercurve point --format text`: one point of an intersection for
  * people, 15 significant digits (docs/output-formats.md). */
+#include "common/args.h"
 #include "intercurve/writers.h"
 
 #include <math.h>
@@ -41,6 +42,8 @@ static void text_branch(FILE *f, const ic_branch *br, int index)
 
 ic_status ic_local_write_text(FILE *f, const ic_local_result *res, ic_error *err)
 {
+    IC_ARG_NOT_NULL(f, "f");
+    IC_ARG_NOT_NULL(res, "res");
     fprintf(f, "point        (%.15g, %.15g, %.15g)  residual %.3g\n", res->point.xyz[0],
             res->point.xyz[1], res->point.xyz[2], res->point.residual);
     fprintf(f, "type         %s (angle between the normals %.6g rad), method %s\n",

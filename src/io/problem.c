@@ -1,4 +1,5 @@
 /* Problem files: reading and validating (problem.h, docs/problem-files.md). */
+#include "common/args.h"
 #include "intercurve/problem.h"
 
 #include <errno.h>
@@ -614,13 +615,19 @@ static ic_status parse_problem(ic_problem **out, const char *json, size_t len, u
 
 ic_status ic_problem_parse(ic_problem **out, const char *json, size_t len, ic_error *err)
 {
+    IC_ARG_NOT_NULL(out, "p");
+    *out = NULL;
+    IC_ARG_NOT_NULL(json, "json");
     return parse_problem(out, json, len, 0, "", err);
 }
 
 ic_status ic_problem_read(ic_problem **out, FILE *f, const char *name, unsigned flags,
                           ic_error *err)
 {
+    IC_ARG_NOT_NULL(out, "p");
     *out = NULL;
+    IC_ARG_NOT_NULL(f, "f");
+    IC_ARG_NOT_NULL(name, "name");
     ic_error_clear(err);
     char *buf = malloc(IC_PROBLEM_MAX_FILE + 1);
     if (!buf)
@@ -646,7 +653,9 @@ ic_status ic_problem_read(ic_problem **out, FILE *f, const char *name, unsigned 
 
 ic_status ic_problem_load(ic_problem **out, const char *filename, ic_error *err)
 {
+    IC_ARG_NOT_NULL(out, "p");
     *out = NULL;
+    IC_ARG_NOT_NULL(filename, "filename");
     ic_error_clear(err);
     FILE *f = fopen(filename, "rb");
     if (!f)
@@ -666,26 +675,30 @@ void ic_problem_free(ic_problem *p)
     free(p);
 }
 
-const char *ic_problem_title(const ic_problem *p) { return p->title; }
-int ic_problem_num_surfaces(const ic_problem *p) { return p->nsurfaces; }
+const char *ic_problem_title(const ic_problem *p) { return p ? p->title : NULL; }
+int ic_problem_num_surfaces(const ic_problem *p) { return p ? p->nsurfaces : 0; }
 ic_surface *ic_problem_surface(const ic_problem *p, int i)
 {
-    return i >= 0 && i < p->nsurfaces ? p->surfaces[i] : NULL;
+    return p && i >= 0 && i < p->nsurfaces ? p->surfaces[i] : NULL;
 }
 const char *ic_problem_surface_name(const ic_problem *p, int i)
 {
-    return i >= 0 && i < p->nsurfaces ? p->names[i] : NULL;
+    return p && i >= 0 && i < p->nsurfaces ? p->names[i] : NULL;
 }
 int ic_problem_find_surface(const ic_problem *p, const char *name)
 {
+    if (!p || !name)
+        return -1;
     for (int i = 0; i < p->nsurfaces; i++)
         if (strcmp(p->names[i], name) == 0)
             return i;
     return -1;
 }
-int ic_problem_is_self(const ic_problem *p) { return p->self; }
+int ic_problem_is_self(const ic_problem *p) { return p ? p->self : 0; }
 int ic_problem_box(const ic_problem *p, double box[3][2])
 {
+    if (!p)
+        return 0;
     if (p->has_box && box)
         memcpy(box, p->box, sizeof p->box);
     return p->has_box;

@@ -3,6 +3,7 @@
 /* realpath is XSI in glibc's headers */
 #define _XOPEN_SOURCE 700
 
+#include "common/args.h"
 #include "io/safe_file.h"
 
 #include "intercurve/writers.h"
@@ -262,6 +263,8 @@ void ic_safe_abort(ic_safe_file *sf)
 ic_status ic_write_file_atomic(const char *path, ic_file_writer writer, void *user,
                                ic_error *err)
 {
+    IC_ARG_NOT_NULL(path, "path");
+    IC_ARG_NOT_NULL(writer, "writer");
     char *text = NULL;
     size_t len = 0;
     FILE *mem = open_memstream(&text, &len);

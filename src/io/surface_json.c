@@ -1,5 +1,6 @@
 /* The document of `intercurve eval` (docs/output-formats.md, "The surface
  * document"): one surface's local geometry and derivative tensor. */
+#include "common/args.h"
 #include "intercurve/writers.h"
 
 #include <stdlib.h>
@@ -146,6 +147,10 @@ static ic_status write_document(FILE *f, ic_surface *s, const char *name, const 
 ic_status ic_surface_write_json(FILE *f, ic_surface *s, const char *name, const double *at,
                                 int order, ic_error *err)
 {
+    IC_ARG_NOT_NULL(f, "f");
+    IC_ARG_NOT_NULL(s, "s");
+    IC_ARG_NOT_NULL(name, "name");
+    IC_ARG_NOT_NULL(at, "at");
     if (order < 0 || order > IC_JET_MAX_ORDER)
         return ic_error_set(err, IC_ERR_INVALID, 0, "the order %d is outside 0..%d", order,
                             IC_JET_MAX_ORDER);

@@ -1,5 +1,6 @@
 /* The document of `intercurve trace` (docs/output-formats.md,
  * "JSON"): the curves with their points, the special points, the report. */
+#include "common/args.h"
 #include "intercurve/writers.h"
 
 #include "io/json_out.h"
@@ -199,6 +200,9 @@ static void report_json(json_out *j, const ic_trace_report *rep)
 ic_status ic_trace_write_json(FILE *f, const ic_trace_result *res, const ic_pair *pair,
                               ic_error *err)
 {
+    IC_ARG_NOT_NULL(f, "f");
+    IC_ARG_NOT_NULL(res, "res");
+    IC_ARG_NOT_NULL(pair, "pair");
     int parametric[2];
     for (int s = 0; s < 2; s++)
         parametric[s] = ic_surface_get_kind(ic_pair_surface(pair, s)) == IC_PARAMETRIC;

@@ -1,5 +1,6 @@
 /* `intercurve trace --format text`: a summary table for people of the
  * curves, the singular points and the report (docs/output-formats.md). */
+#include "common/args.h"
 #include "intercurve/writers.h"
 
 static void text_curves(FILE *f, const ic_trace_result *r)
@@ -56,6 +57,8 @@ static void text_report(FILE *f, const ic_trace_report *rep)
 
 ic_status ic_trace_write_text(FILE *f, const ic_trace_result *res, const char *title, ic_error *err)
 {
+    IC_ARG_NOT_NULL(f, "f");
+    IC_ARG_NOT_NULL(res, "res");
     if (title && *title)
         fprintf(f, "%s\n", title);
     text_curves(f, res);

@@ -4,6 +4,7 @@
  * of the B-spline between them, with the apparatus of the B-spline there
  * (array "traced" = 0), so the polyline stays smooth when zoomed. Numbers
  * are written with 17 significant digits. */
+#include "common/args.h"
 #include "intercurve/bspline.h"
 #include "intercurve/writers.h"
 
@@ -172,6 +173,8 @@ static void vtk_geometry(FILE *f, const ic_trace_result *res, const vtk_point *p
 
 ic_status ic_trace_write_vtk(FILE *f, const ic_trace_result *res, ic_error *err)
 {
+    IC_ARG_NOT_NULL(f, "f");
+    IC_ARG_NOT_NULL(res, "res");
     const int ncurves = ic_trace_result_num_curves(res);
     const int nspecial = ic_trace_result_num_specials(res);
     int *count = malloc(sizeof *count * (size_t)(ncurves + 1)), npts = 0;

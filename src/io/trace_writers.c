@@ -1,6 +1,7 @@
 /* Traced intersections as CSV and OBJ (VTK: trace_vtk.c)
  * (docs/output-formats.md). Numbers are written with 17 significant digits so
  * that they read back to the same doubles. */
+#include "common/args.h"
 #include "intercurve/writers.h"
 
 #include <math.h>
@@ -9,6 +10,8 @@
 ic_point_type ic_trace_point_type(const ic_trace_result *res, const ic_trace_curve *c,
                                   const ic_trace_point *p)
 {
+    if (!p)
+        return IC_POINT_TRANSVERSAL;
     for (int i = 0; i < ic_trace_result_num_specials(res); i++) {
         const ic_trace_special *sp = ic_trace_result_special(res, i);
         const double d = fmax(fmax(fabs(sp->xyz[0] - p->xyz[0]), fabs(sp->xyz[1] - p->xyz[1])),
@@ -43,6 +46,9 @@ static void csv_vector(FILE *f, const double *x, int defined)
 ic_status ic_trace_write_csv(FILE *f, const ic_trace_result *res, const ic_pair *pair,
                              ic_error *err)
 {
+    IC_ARG_NOT_NULL(f, "f");
+    IC_ARG_NOT_NULL(res, "res");
+    IC_ARG_NOT_NULL(pair, "pair");
     int parametric[2];
     for (int s = 0; s < 2; s++)
         parametric[s] = ic_surface_get_kind(ic_pair_surface(pair, s)) == IC_PARAMETRIC;
@@ -77,6 +83,8 @@ ic_status ic_trace_write_csv(FILE *f, const ic_trace_result *res, const ic_pair 
 
 ic_status ic_trace_write_obj(FILE *f, const ic_trace_result *res, ic_error *err)
 {
+    IC_ARG_NOT_NULL(f, "f");
+    IC_ARG_NOT_NULL(res, "res");
     const int ncurves = ic_trace_result_num_curves(res);
     fputs("# intercurve trace: one polyline per curve, special points as point elements\n", f);
     for (int i = 0; i < ncurves; i++) {

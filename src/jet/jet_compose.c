@@ -10,6 +10,7 @@
  * The reversions find the series degree by degree, so they compose one
  * degree at a time (jet_chain.h) instead of recomposing at every degree.
  */
+#include "common/args.h"
 #include "jet_chain.h"
 #include "jet_internal.h"
 
@@ -93,6 +94,8 @@ static void compose_upto(double *out, const double *P, const ic_jet_space *sp_p,
 void ic_jet_compose(double *out, const double *P, const ic_jet_space *sp_p,
                     const double *const *g, const ic_jet_space *sp, double *scratch)
 {
+    if (!out || !P || !sp_p || !g || !sp || !scratch)
+        return;
     compose_upto(out, P, sp_p, g, sp, scratch, sp->K);
 }
 
@@ -103,6 +106,10 @@ void ic_jet_compose(double *out, const double *P, const ic_jet_space *sp_p,
 ic_status ic_jet_revert(double *g, const double *f, const ic_jet_space *sp, double *scratch,
                         ic_error *err)
 {
+    IC_ARG_NOT_NULL(g, "g");
+    IC_ARG_NOT_NULL(f, "f");
+    IC_ARG_NOT_NULL(sp, "sp");
+    IC_ARG_NOT_NULL(scratch, "scratch");
     if (sp->m != 1)
         return ic_error_set(err, IC_ERR_INVALID, 0, "ic_jet_revert needs a one-variable space");
     if (sp->K >= 1 && f[1] == 0.0)
@@ -127,6 +134,10 @@ ic_status ic_jet_revert(double *g, const double *f, const ic_jet_space *sp, doub
 ic_status ic_jet_revert2(double *const g[2], const double *const f[2], const ic_jet_space *sp,
                          double *scratch, ic_error *err)
 {
+    IC_ARG_NOT_NULL(g, "g");
+    IC_ARG_NOT_NULL(f, "f");
+    IC_ARG_NOT_NULL(sp, "sp");
+    IC_ARG_NOT_NULL(scratch, "scratch");
     if (sp->m != 2)
         return ic_error_set(err, IC_ERR_INVALID, 0, "ic_jet_revert2 needs a two-variable space");
     ic_jet_zero(g[0], sp);

@@ -7,6 +7,7 @@
  * recurrence off such an identity (docs/jets.md lists them): part d of the
  * result depends only on parts < d, so one pass over the degrees suffices.
  */
+#include "common/args.h"
 #include "jet_internal.h"
 
 #include <math.h>
@@ -14,6 +15,8 @@
 /* b = exp(a):  E b = b E a  =>  d b_d = sum_{j=1..d} j a_j b_{d-j}. */
 void ic_jet_exp(double *b, const double *a, const ic_jet_space *sp)
 {
+    if (!b || !a || !sp)
+        return;
     b[0] = exp(a[0]);
     for (int d = 1; d <= sp->K; d++) {
         ic_jet_part_zero(sp, b, d);
@@ -25,6 +28,9 @@ void ic_jet_exp(double *b, const double *a, const ic_jet_space *sp)
 /* b = log(a):  a E b = E a  =>  d a_0 b_d = d a_d - sum_{j=1..d-1} (d-j) a_j b_{d-j}. */
 ic_status ic_jet_log(double *b, const double *a, const ic_jet_space *sp, ic_error *err)
 {
+    IC_ARG_NOT_NULL(b, "b");
+    IC_ARG_NOT_NULL(a, "a");
+    IC_ARG_NOT_NULL(sp, "sp");
     if (!(a[0] > 0.0))
         return ic_error_set(err, IC_ERR_DOMAIN, 0, "log of %g (needs a positive value)", a[0]);
     b[0] = log(a[0]);
@@ -41,6 +47,9 @@ ic_status ic_jet_log(double *b, const double *a, const ic_jet_space *sp, ic_erro
 /* b = sqrt(a):  b b = a  =>  2 b_0 b_d = a_d - sum_{j=1..d-1} b_j b_{d-j}. */
 ic_status ic_jet_sqrt(double *b, const double *a, const ic_jet_space *sp, ic_error *err)
 {
+    IC_ARG_NOT_NULL(b, "b");
+    IC_ARG_NOT_NULL(a, "a");
+    IC_ARG_NOT_NULL(sp, "sp");
     if (a[0] < 0.0 || (a[0] == 0.0 && sp->K > 0) || !isfinite(a[0]))
         return ic_error_set(err, IC_ERR_DOMAIN, 0,
                             "sqrt of %g (needs a positive value to be differentiable)", a[0]);
@@ -60,6 +69,10 @@ ic_status ic_jet_sqrt(double *b, const double *a, const ic_jet_space *sp, ic_err
 ic_status ic_jet_pow_int(double *b, const double *a, long n, const ic_jet_space *sp,
                          double *scratch, ic_error *err)
 {
+    IC_ARG_NOT_NULL(b, "b");
+    IC_ARG_NOT_NULL(a, "a");
+    IC_ARG_NOT_NULL(sp, "sp");
+    IC_ARG_NOT_NULL(scratch, "scratch");
     if (n < 0 && a[0] == 0.0)
         return ic_error_set(err, IC_ERR_DOMAIN, 0, "negative power %ld of a jet whose value is 0",
                             n);
@@ -90,6 +103,10 @@ ic_status ic_jet_pow_int(double *b, const double *a, long n, const ic_jet_space 
 ic_status ic_jet_pow_real(double *b, const double *a, double p, const ic_jet_space *sp,
                           double *scratch, ic_error *err)
 {
+    IC_ARG_NOT_NULL(b, "b");
+    IC_ARG_NOT_NULL(a, "a");
+    IC_ARG_NOT_NULL(sp, "sp");
+    IC_ARG_NOT_NULL(scratch, "scratch");
     if (p == floor(p) && fabs(p) <= 1e9)
         return ic_jet_pow_int(b, a, (long)p, sp, scratch, err);
     if (a[0] == 0.0 && p > 0.0 && sp->K == 0) {
@@ -126,6 +143,8 @@ static void sin_cos_like(double *s, double *c, const double *a, double sgn,
 
 void ic_jet_sin_cos(double *s, double *c, const double *a, const ic_jet_space *sp)
 {
+    if (!s || !c || !a || !sp)
+        return;
     s[0] = sin(a[0]);
     c[0] = cos(a[0]);
     sin_cos_like(s, c, a, -1.0, sp);
@@ -133,16 +152,22 @@ void ic_jet_sin_cos(double *s, double *c, const double *a, const ic_jet_space *s
 
 void ic_jet_sin(double *s, const double *a, const ic_jet_space *sp, double *scratch)
 {
+    if (!s || !a || !sp || !scratch)
+        return;
     ic_jet_sin_cos(s, scratch, a, sp);
 }
 
 void ic_jet_cos(double *c, const double *a, const ic_jet_space *sp, double *scratch)
 {
+    if (!c || !a || !sp || !scratch)
+        return;
     ic_jet_sin_cos(scratch, c, a, sp);
 }
 
 void ic_jet_sinh_cosh(double *s, double *c, const double *a, const ic_jet_space *sp)
 {
+    if (!s || !c || !a || !sp)
+        return;
     s[0] = sinh(a[0]);
     c[0] = cosh(a[0]);
     sin_cos_like(s, c, a, 1.0, sp);
@@ -150,11 +175,15 @@ void ic_jet_sinh_cosh(double *s, double *c, const double *a, const ic_jet_space 
 
 void ic_jet_sinh(double *s, const double *a, const ic_jet_space *sp, double *scratch)
 {
+    if (!s || !a || !sp || !scratch)
+        return;
     ic_jet_sinh_cosh(s, scratch, a, sp);
 }
 
 void ic_jet_cosh(double *c, const double *a, const ic_jet_space *sp, double *scratch)
 {
+    if (!c || !a || !sp || !scratch)
+        return;
     ic_jet_sinh_cosh(scratch, c, a, sp);
 }
 
@@ -178,6 +207,10 @@ static void tan_like(double *t, const double *a, double t0, double sgn, const ic
 ic_status ic_jet_tan(double *t, const double *a, const ic_jet_space *sp, double *scratch,
                      ic_error *err)
 {
+    IC_ARG_NOT_NULL(t, "t");
+    IC_ARG_NOT_NULL(a, "a");
+    IC_ARG_NOT_NULL(sp, "sp");
+    IC_ARG_NOT_NULL(scratch, "scratch");
     if (cos(a[0]) == 0.0 || !isfinite(a[0]))
         return ic_error_set(err, IC_ERR_DOMAIN, 0, "tan at %g (a pole)", a[0]);
     tan_like(t, a, tan(a[0]), 1.0, sp, scratch);
@@ -186,6 +219,8 @@ ic_status ic_jet_tan(double *t, const double *a, const ic_jet_space *sp, double 
 
 void ic_jet_tanh(double *t, const double *a, const ic_jet_space *sp, double *scratch)
 {
+    if (!t || !a || !sp || !scratch)
+        return;
     tan_like(t, a, tanh(a[0]), -1.0, sp, scratch);
 }
 
@@ -214,6 +249,8 @@ static void euler(double *r, const double *a, const ic_jet_space *sp)
 /* atan:  (1 + a^2) E b = E a. */
 void ic_jet_atan(double *b, const double *a, const ic_jet_space *sp, double *scratch)
 {
+    if (!b || !a || !sp || !scratch)
+        return;
     double *w = scratch, *r = scratch + sp->n;
     ic_jet_mul(w, a, a, sp);
     w[0] += 1.0;
@@ -226,6 +263,10 @@ void ic_jet_atan(double *b, const double *a, const ic_jet_space *sp, double *scr
 ic_status ic_jet_asin(double *b, const double *a, const ic_jet_space *sp, double *scratch,
                       ic_error *err)
 {
+    IC_ARG_NOT_NULL(b, "b");
+    IC_ARG_NOT_NULL(a, "a");
+    IC_ARG_NOT_NULL(sp, "sp");
+    IC_ARG_NOT_NULL(scratch, "scratch");
     if (!(fabs(a[0]) < 1.0) && !(fabs(a[0]) == 1.0 && sp->K == 0))
         return ic_error_set(err, IC_ERR_DOMAIN, 0,
                             "asin/acos of %g (needs |value| < 1 to be differentiable)", a[0]);
@@ -248,6 +289,10 @@ ic_status ic_jet_asin(double *b, const double *a, const ic_jet_space *sp, double
 ic_status ic_jet_acos(double *b, const double *a, const ic_jet_space *sp, double *scratch,
                       ic_error *err)
 {
+    IC_ARG_NOT_NULL(b, "b");
+    IC_ARG_NOT_NULL(a, "a");
+    IC_ARG_NOT_NULL(sp, "sp");
+    IC_ARG_NOT_NULL(scratch, "scratch");
     ic_status st = ic_jet_asin(b, a, sp, scratch, err);
     if (st != IC_OK)
         return st;
@@ -260,6 +305,11 @@ ic_status ic_jet_acos(double *b, const double *a, const ic_jet_space *sp, double
 ic_status ic_jet_atan2(double *b, const double *y, const double *x, const ic_jet_space *sp,
                        double *scratch, ic_error *err)
 {
+    IC_ARG_NOT_NULL(b, "b");
+    IC_ARG_NOT_NULL(y, "y");
+    IC_ARG_NOT_NULL(x, "x");
+    IC_ARG_NOT_NULL(sp, "sp");
+    IC_ARG_NOT_NULL(scratch, "scratch");
     if (x[0] == 0.0 && y[0] == 0.0)
         return ic_error_set(err, IC_ERR_DOMAIN, 0, "atan2 at the origin (0, 0)");
     const int n = sp->n;
@@ -279,6 +329,9 @@ ic_status ic_jet_atan2(double *b, const double *y, const double *x, const ic_jet
 
 ic_status ic_jet_abs(double *b, const double *a, const ic_jet_space *sp, ic_error *err)
 {
+    IC_ARG_NOT_NULL(b, "b");
+    IC_ARG_NOT_NULL(a, "a");
+    IC_ARG_NOT_NULL(sp, "sp");
     if (a[0] == 0.0 && sp->K > 0)
         return ic_error_set(err, IC_ERR_DOMAIN, 0, "abs at 0 (not differentiable)");
     if (a[0] < 0.0)

@@ -1,4 +1,5 @@
 /* Jet spaces: the monomial order and the product tables (jet.h). */
+#include "common/args.h"
 #include "jet_chain.h"
 #include "jet_internal.h"
 
@@ -56,6 +57,7 @@ static void lower_monomial(ic_jet_space *sp, int i)
 
 ic_status ic_jet_space_new(ic_jet_space **out, int nvars, int order, ic_error *err)
 {
+    IC_ARG_NOT_NULL(out, "sp");
     *out = NULL;
     if (nvars < 1 || nvars > IC_JET_MAX_VARS)
         return ic_error_set(err, IC_ERR_INVALID, 0, "jet space: %d variables (allowed 1..%d)",
@@ -149,12 +151,14 @@ void ic_jet_space_free(ic_jet_space *sp)
     free(sp);
 }
 
-int ic_jet_space_num_vars(const ic_jet_space *sp) { return sp->m; }
-int ic_jet_space_order(const ic_jet_space *sp) { return sp->K; }
-int ic_jet_space_len(const ic_jet_space *sp) { return sp->n; }
+int ic_jet_space_num_vars(const ic_jet_space *sp) { return sp ? sp->m : 0; }
+int ic_jet_space_order(const ic_jet_space *sp) { return sp ? sp->K : 0; }
+int ic_jet_space_len(const ic_jet_space *sp) { return sp ? sp->n : 0; }
 
 size_t ic_jet_scratch_len(const ic_jet_space *sp)
 {
+    if (!sp)
+        return 0;
     /* composition: K + 1 powers, 3 per nesting level (<= 4 levels); reversion
      * and the functions with auxiliary series: 4 more (docs/jets.md). */
     const size_t len = (size_t)(sp->K + 1 + 3 * IC_JET_MAX_VARS + 4) * (size_t)sp->n;
@@ -168,7 +172,7 @@ size_t ic_jet_scratch_len(const ic_jet_space *sp)
 
 int ic_jet_degree_start(const ic_jet_space *sp, int d)
 {
-    if (d < 0)
+    if (!sp || d < 0)
         return 0;
     if (d > sp->K + 1)
         d = sp->K + 1;
@@ -177,6 +181,8 @@ int ic_jet_degree_start(const ic_jet_space *sp, int d)
 
 int ic_jet_index(const ic_jet_space *sp, const int *alpha)
 {
+    if (!sp || !alpha)
+        return -1;
     int deg = 0;
     for (int v = 0; v < sp->m; v++) {
         if (alpha[v] < 0)
@@ -190,8 +196,13 @@ int ic_jet_index(const ic_jet_space *sp, const int *alpha)
 
 void ic_jet_exponents(const ic_jet_space *sp, int index, int *alpha)
 {
+    if (!sp || !alpha || index < 0 || index >= sp->n)
+        return;
     for (int v = 0; v < sp->m; v++)
         alpha[v] = sp->exps[index * sp->m + v];
 }
 
-double ic_jet_factorial(const ic_jet_space *sp, int index) { return sp->fact[index]; }
+double ic_jet_factorial(const ic_jet_space *sp, int index)
+{
+    return sp && index >= 0 && index < sp->n ? sp->fact[index] : 0.0;
+}

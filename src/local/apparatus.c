@@ -1,5 +1,6 @@
 /* The apparatus at a located point: sheets, classification by the angle
  * between the normals, the chosen method, the Frenet frame. */
+#include "common/args.h"
 #include "tangential.h"
 #include "common/vec3.h"
 
@@ -99,6 +100,10 @@ ic_status ic_local_apparatus(ic_pair *pair, ic_local_result *res, const ic_local
                              int order, ic_method method, const ic_local_options *opt,
                              ic_error *err)
 {
+    IC_ARG_NOT_NULL(pair, "pair");
+    IC_ARG_NOT_NULL(res, "res");
+    IC_ARG_NOT_NULL(pt, "pt");
+    IC_ARG_NOT_NULL(opt, "opt");
     const long before = pair->nomem;
     const ic_status st = apparatus(pair, res, pt, order, method, opt, err);
     return ic_pair_nomem_check(pair, before, st, err);

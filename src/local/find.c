@@ -6,6 +6,7 @@
  * normal to the curve to work in, is moved onto the nearest tangential
  * point instead.
  */
+#include "common/args.h"
 #include "local_internal.h"
 #include "common/vec3.h"
 
@@ -69,8 +70,10 @@ static ic_status not_on_surfaces(ic_error *err, ic_status code, double residual,
 ic_status ic_local_find(ic_pair *pair, ic_local_point *pt, const double *values, int count,
                         int by_params, const ic_local_options *opt, ic_error *err)
 {
-    if (!pair || !pt || !values || !opt)
-        return ic_error_set(err, IC_ERR_INVALID, 0, "ic_local_find: NULL argument");
+    IC_ARG_NOT_NULL(pair, "pair");
+    IC_ARG_NOT_NULL(pt, "pt");
+    IC_ARG_NOT_NULL(values, "values");
+    IC_ARG_NOT_NULL(opt, "opt");
     if (!by_params && count != 3)
         return ic_error_set(err, IC_ERR_INVALID, 0,
                             "the point needs three coordinates X,Y,Z, got %d", count);

@@ -67,6 +67,8 @@ void ic_branch_finish(ic_branch *br, const ic_sheet sh[2], const ic_local_option
 
 void ic_branch_reverse(ic_branch *br)
 {
+    if (!br)
+        return;
     ic_scale3(br->t, br->t, -1.0);
     ic_scale3(br->b, br->b, -1.0);
     br->kappa_prime = -br->kappa_prime;
@@ -84,10 +86,10 @@ void ic_branch_reverse(ic_branch *br)
 
 int ic_branch_is_line(const ic_branch *br, double tol)
 {
-    return br->order >= 2 && br->kappa <= tol;
+    return br && br->order >= 2 && br->kappa <= tol;
 }
 
 int ic_branch_is_planar(const ic_branch *br, double tol)
 {
-    return br->tau_defined && fabs(br->tau) <= tol;
+    return br && br->tau_defined && fabs(br->tau) <= tol;
 }

@@ -14,6 +14,7 @@
  * 3. Refinement onto both surfaces: Newton on the equations of the pairing
  *    plus t . (X - X0) = 0, i.e. in the plane through X0 normal to the curve.
  */
+#include "common/args.h"
 #include "local_internal.h"
 #include "common/vec3.h"
 
@@ -433,6 +434,10 @@ static ic_status too_far_param(ic_error *err, const char *which, double dist, do
 ic_status ic_local_locate(ic_pair *pair, ic_local_point *pt, const double xyz[3],
                           const ic_local_options *opt, ic_error *err)
 {
+    IC_ARG_NOT_NULL(pair, "pair");
+    IC_ARG_NOT_NULL(pt, "pt");
+    IC_ARG_NOT_NULL(xyz, "xyz");
+    IC_ARG_NOT_NULL(opt, "opt");
     memset(pt, 0, sizeof *pt);
     memcpy(pt->xyz, xyz, sizeof pt->xyz);
     for (int k = 0; k < 3; k++)
@@ -478,6 +483,10 @@ ic_status ic_local_locate(ic_pair *pair, ic_local_point *pt, const double xyz[3]
 ic_status ic_local_locate_params(ic_pair *pair, ic_local_point *pt, const double *params,
                                  int nparams, const ic_local_options *opt, ic_error *err)
 {
+    IC_ARG_NOT_NULL(pair, "pair");
+    IC_ARG_NOT_NULL(pt, "pt");
+    IC_ARG_NOT_NULL(params, "params");
+    IC_ARG_NOT_NULL(opt, "opt");
     memset(pt, 0, sizeof *pt);
     const ic_pairing *pg = &pair->pairing;
     const int want = pg->kind->nparams;
@@ -521,6 +530,11 @@ ic_status ic_local_locate_guess(ic_pair *pair, ic_local_point *pt, const double 
                                 const double params[2][2], const ic_local_options *opt,
                                 ic_error *err)
 {
+    IC_ARG_NOT_NULL(pair, "pair");
+    IC_ARG_NOT_NULL(pt, "pt");
+    IC_ARG_NOT_NULL(xyz, "xyz");
+    IC_ARG_NOT_NULL(params, "params");
+    IC_ARG_NOT_NULL(opt, "opt");
     const ic_pairing *pg = &pair->pairing;
     double flat[4];
     if (pg->kind->nparams == 0)

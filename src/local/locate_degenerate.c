@@ -8,6 +8,7 @@
  * point (ic_height_degenerate_step), which converges quadratically; the
  * highest m whose point classifies with contact order m wins.
  */
+#include "common/args.h"
 #include "local_internal.h"
 #include "tangential.h"
 #include "common/vec3.h"
@@ -83,6 +84,9 @@ static ic_status locate_degenerate(ic_pair *pair, ic_local_point *pt, const ic_l
 ic_status ic_local_locate_degenerate(ic_pair *pair, ic_local_point *pt, const ic_local_point *near,
                                      double reach, const ic_local_options *opt, ic_error *err)
 {
+    IC_ARG_NOT_NULL(pair, "pair");
+    IC_ARG_NOT_NULL(pt, "pt");
+    IC_ARG_NOT_NULL(near, "near");
     const long before = pair->nomem;
     const ic_status st = locate_degenerate(pair, pt, near, reach, opt, err);
     return ic_pair_nomem_check(pair, before, st, err);

@@ -17,6 +17,7 @@
  * most being chosen, and the difference step shrinks with the steps so that
  * the Jacobian stays right near the root.
  */
+#include "common/args.h"
 #include "tangential_residuals.h"
 #include "common/vec3.h"
 
@@ -285,6 +286,9 @@ static double solve(const ic_tres *c, double *z, int m, double *F)
 ic_status ic_local_locate_tangential(ic_pair *pair, ic_local_point *pt, const ic_local_point *near,
                                      double reach, const ic_local_options *opt, ic_error *err)
 {
+    IC_ARG_NOT_NULL(pair, "pair");
+    IC_ARG_NOT_NULL(pt, "pt");
+    IC_ARG_NOT_NULL(near, "near");
     ic_tres c;
     double z[4] = {0}, F[6];
     ic_tres_setup(&c, pair, near, opt, z);

@@ -1,4 +1,5 @@
 /* Pairs of surfaces, options, names, and the sheets at a point. */
+#include "common/args.h"
 #include "local_internal.h"
 
 #include <math.h>
@@ -33,6 +34,8 @@ const char *ic_method_name(ic_method method)
 
 int ic_method_from_name(const char *name)
 {
+    if (!name)
+        return -1;
     for (int i = 0; i < 5; i++)
         if (strcmp(name, METHOD_NAMES[i]) == 0)
             return i;
@@ -41,6 +44,8 @@ int ic_method_from_name(const char *name)
 
 void ic_local_defaults(ic_local_options *opt)
 {
+    if (!opt)
+        return;
     opt->point_tol = 1e-6;
     opt->newton_tol = 1e-15;
     opt->max_newton = 60;
@@ -55,9 +60,9 @@ void ic_local_defaults(ic_local_options *opt)
 
 ic_status ic_pair_new(ic_pair **out, ic_surface *A, ic_surface *B, ic_error *err)
 {
+    IC_ARG_NOT_NULL(out, "pair");
     *out = NULL;
-    if (!A)
-        return ic_error_set(err, IC_ERR_INVALID, 0, "a pair needs a surface A");
+    IC_ARG_NOT_NULL(A, "A");
     if (!B && ic_surface_get_kind(A) != IC_PARAMETRIC)
         return ic_error_set(err, IC_ERR_INVALID, 0,
                             "a self-intersection needs a parametric surface");
@@ -99,9 +104,12 @@ void ic_pair_free(ic_pair *p)
     free(p);
 }
 
-int ic_pair_is_self(const ic_pair *p) { return p->self; }
+int ic_pair_is_self(const ic_pair *p) { return p ? p->self : 0; }
 const ic_pairing *ic_pair_pairing(const ic_pair *p) { return &p->pairing; }
-ic_surface *ic_pair_surface(const ic_pair *p, int which) { return p->s[which ? 1 : 0]; }
+ic_surface *ic_pair_surface(const ic_pair *p, int which)
+{
+    return p && (which == 0 || which == 1) ? p->s[which] : NULL;
+}
 
 ic_status ic_sheet_at(ic_pair *pair, ic_sheet *sh, int which, const ic_local_point *pt,
                       ic_error *err)

@@ -1,6 +1,7 @@
 /* How well the place of a located tangential point is known
  * (ic_local_tangential_place): the residuals probed outwards along each
  * unknown until they grow steadily. */
+#include "common/args.h"
 #include "tangential_residuals.h"
 #include "common/vec3.h"
 
@@ -51,6 +52,9 @@ static double place_along(const ic_tres *c, const double *z, int m, int j, int s
 ic_status ic_local_tangential_place(ic_pair *pair, const ic_local_point *pt,
                                     const ic_local_options *opt, double *radius, ic_error *err)
 {
+    IC_ARG_NOT_NULL(pair, "pair");
+    IC_ARG_NOT_NULL(pt, "pt");
+    IC_ARG_NOT_NULL(radius, "radius");
     ic_tres c;
     double z[4] = {0}, F[6];
     ic_tres_setup(&c, pair, pt, opt, z);

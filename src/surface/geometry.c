@@ -8,6 +8,7 @@
  * This form has no cancellation at umbilics, unlike H +- sqrt(H^2 - K),
  * which loses half the digits there.
  */
+#include "common/args.h"
 #include "surface_internal.h"
 
 #include <math.h>
@@ -169,6 +170,9 @@ static ic_status implicit_geometry(ic_surface *s, ic_surface_geometry *g, const 
 ic_status ic_surface_geometry_at(ic_surface *s, ic_surface_geometry *g, const double *at,
                                  ic_error *err)
 {
+    IC_ARG_NOT_NULL(s, "s");
+    IC_ARG_NOT_NULL(g, "g");
+    IC_ARG_NOT_NULL(at, "at");
     memset(g, 0, sizeof *g);
     if (s->kind == IC_PARAMETRIC)
         return parametric_geometry(s, g, at, 2, err);
@@ -178,6 +182,9 @@ ic_status ic_surface_geometry_at(ic_surface *s, ic_surface_geometry *g, const do
 ic_status ic_surface_normal_at(ic_surface *s, ic_surface_geometry *g, const double *at,
                                ic_error *err)
 {
+    IC_ARG_NOT_NULL(s, "s");
+    IC_ARG_NOT_NULL(g, "g");
+    IC_ARG_NOT_NULL(at, "at");
     memset(g, 0, sizeof *g);
     if (s->kind == IC_PARAMETRIC)
         return parametric_geometry(s, g, at, 1, err);

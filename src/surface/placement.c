@@ -5,6 +5,7 @@
  * intervals. Space x and local coordinates L are related by
  * x = center + sum_j L_j e_j, so L_j = e_j . (x - center).
  */
+#include "common/args.h"
 #include "surface_internal.h"
 
 #include <float.h>
@@ -127,8 +128,8 @@ static ic_status frame_axis(const ic_primitive *p, double e3[3], int *standard, 
 
 ic_status ic_primitive_frame(const ic_primitive *p, double frame[3][3], ic_error *err)
 {
-    if (!p)
-        return ic_error_set(err, IC_ERR_INVALID, 0, "ic_primitive_frame: no primitive");
+    IC_ARG_NOT_NULL(p, "prim");
+    IC_ARG_NOT_NULL(frame, "frame");
     double *e1 = frame[0], *e2 = frame[1], *e3 = frame[2];
     if (!all_finite(p->ref_direction))
         return ic_error_set(err, IC_ERR_INVALID, 0, "%s: the ref_direction is not finite",

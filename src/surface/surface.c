@@ -1,4 +1,5 @@
 /* Surfaces: construction, backends, Taylor coefficients, composition. */
+#include "common/args.h"
 #include "surface_internal.h"
 
 #include <math.h>
@@ -60,7 +61,11 @@ ic_status ic_surface_new_parametric(ic_surface **out, const char *const xyz[3],
                                     int nconsts, int *which, ic_error *err)
 {
     static const char *const default_params[2] = {"u", "v"};
+    IC_ARG_NOT_NULL(out, "s");
     *out = NULL;
+    IC_ARG_NOT_NULL(xyz, "xyz");
+    IC_ARG_CHECK(nconsts >= 0, "nconsts", "must not be negative");
+    IC_ARG_CHECK(nconsts == 0 || consts, "consts", "is NULL");
     ic_surface *s = surface_alloc(IC_PARAMETRIC, BACKEND_FORMULA);
     if (!s)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory creating a surface");
@@ -81,7 +86,11 @@ ic_status ic_surface_new_implicit(ic_surface **out, const char *f, const ic_cons
                                   int nconsts, ic_error *err)
 {
     static const char *const xyz[3] = {"x", "y", "z"};
+    IC_ARG_NOT_NULL(out, "s");
     *out = NULL;
+    IC_ARG_NOT_NULL(f, "f");
+    IC_ARG_CHECK(nconsts >= 0, "nconsts", "must not be negative");
+    IC_ARG_CHECK(nconsts == 0 || consts, "consts", "is NULL");
     ic_surface *s = surface_alloc(IC_IMPLICIT, BACKEND_FORMULA);
     if (!s)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory creating a surface");
@@ -99,8 +108,10 @@ ic_status ic_surface_new_implicit(ic_surface **out, const char *f, const ic_cons
 ic_status ic_surface_new_callback(ic_surface **out, ic_surface_kind kind, ic_surface_callback fn,
                                   void *user, ic_error *err)
 {
+    IC_ARG_NOT_NULL(out, "s");
     *out = NULL;
-    if (!fn || (kind != IC_PARAMETRIC && kind != IC_IMPLICIT))
+    IC_ARG_NOT_NULL(fn, "fn");
+    if ((kind != IC_PARAMETRIC && kind != IC_IMPLICIT))
         return ic_error_set(err, IC_ERR_INVALID, 0, "callback surface: no function or bad kind");
     ic_surface *s = surface_alloc(kind, BACKEND_CALLBACK);
     if (!s)
@@ -116,8 +127,10 @@ ic_status ic_surface_new_callback(ic_surface **out, ic_surface_kind kind, ic_sur
 ic_status ic_surface_new_primitive(ic_surface **out, const ic_primitive *prim, ic_surface_kind form,
                                    ic_error *err)
 {
+    IC_ARG_NOT_NULL(out, "s");
     *out = NULL;
-    if (!prim || (form != IC_PARAMETRIC && form != IC_IMPLICIT))
+    IC_ARG_NOT_NULL(prim, "prim");
+    if ((form != IC_PARAMETRIC && form != IC_IMPLICIT))
         return ic_error_set(err, IC_ERR_INVALID, 0, "primitive surface: bad arguments");
     ic_surface *s = surface_alloc(form, BACKEND_PRIMITIVE);
     if (!s)
@@ -138,7 +151,9 @@ ic_status ic_surface_new_primitive(ic_surface **out, const ic_primitive *prim, i
 
 ic_status ic_surface_new_nurbs(ic_surface **out, const ic_nurbs *nurbs, ic_error *err)
 {
+    IC_ARG_NOT_NULL(out, "s");
     *out = NULL;
+    IC_ARG_NOT_NULL(nurbs, "nurbs");
     ic_surface *s = surface_alloc(IC_PARAMETRIC, BACKEND_NURBS);
     if (!s)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory creating a surface");
@@ -163,18 +178,20 @@ ic_status ic_surface_new_nurbs(ic_surface **out, const ic_nurbs *nurbs, ic_error
 
 int ic_surface_knot_crossed(const ic_surface *s, int dir, double from, double to, double *knot)
 {
-    if (s->backend != BACKEND_NURBS || dir < 0 || dir > 1)
+    if (!s || s->backend != BACKEND_NURBS || dir < 0 || dir > 1)
         return 0;
     return ic_nurbs_knot_crossed(s->nurbs, dir, from, to, knot);
 }
 
 int ic_surface_knot_seam(const ic_surface *s, int dir)
 {
-    return s->backend == BACKEND_NURBS && dir >= 0 && dir <= 1 && ic_nurbs_seam(s->nurbs, dir);
+    return s && s->backend == BACKEND_NURBS && dir >= 0 && dir <= 1 && ic_nurbs_seam(s->nurbs, dir);
 }
 
 void ic_surface_set_knot_side(ic_surface *s, const int side[2])
 {
+    if (!s)
+        return;
     for (int d = 0; d < 2; d++)
         s->knot_side[d] = side ? (side[d] > 0) - (side[d] < 0) : 0;
 }
@@ -194,9 +211,9 @@ void ic_surface_free(ic_surface *s)
     free(s);
 }
 
-ic_surface_kind ic_surface_get_kind(const ic_surface *s) { return s->kind; }
-int ic_surface_num_vars(const ic_surface *s) { return s->kind == IC_PARAMETRIC ? 2 : 3; }
-int ic_surface_num_outputs(const ic_surface *s) { return s->kind == IC_PARAMETRIC ? 3 : 1; }
+ic_surface_kind ic_surface_get_kind(const ic_surface *s) { return s ? s->kind : IC_SURFACE_NONE; }
+int ic_surface_num_vars(const ic_surface *s) { return !s ? 0 : s->kind == IC_PARAMETRIC ? 2 : 3; }
+int ic_surface_num_outputs(const ic_surface *s) { return !s ? 0 : s->kind == IC_PARAMETRIC ? 3 : 1; }
 
 /* relative: the two ends of a periodic parameter must give the same point
  * to this fraction of the largest sampled coordinate (rounding leaves
@@ -258,6 +275,8 @@ static ic_status check_nurbs_domain(ic_surface *s, const double domain[2][2],
 ic_status ic_surface_set_domain(ic_surface *s, const double domain[2][2], const int periodic[2],
                                 ic_error *err)
 {
+    IC_ARG_NOT_NULL(s, "s");
+    IC_ARG_NOT_NULL(domain, "domain");
     if (s->kind != IC_PARAMETRIC)
         return ic_error_set(err, IC_ERR_INVALID, 0, "an implicit surface has no parameter domain");
     for (int i = 0; i < 2; i++) {
@@ -289,6 +308,8 @@ ic_status ic_surface_set_domain(ic_surface *s, const double domain[2][2], const 
 
 void ic_surface_get_domain(const ic_surface *s, double domain[2][2], int periodic[2])
 {
+    if (!s)
+        return;
     if (domain)
         memcpy(domain, s->domain, sizeof s->domain);
     if (periodic) {
@@ -420,6 +441,10 @@ static ic_status formula_taylor(ic_surface *s, double *out, const double *at,
 ic_status ic_surface_taylor(ic_surface *s, double *out, const double *at, const ic_jet_space *sp,
                             ic_error *err)
 {
+    IC_ARG_NOT_NULL(s, "s");
+    IC_ARG_NOT_NULL(out, "out");
+    IC_ARG_NOT_NULL(at, "at");
+    IC_ARG_NOT_NULL(sp, "sp");
     if (ic_jet_space_num_vars(sp) != ic_surface_num_vars(s))
         return ic_error_set(err, IC_ERR_INVALID, 0,
                             "ic_surface_taylor: the space has %d variables, the surface %d",
@@ -467,6 +492,10 @@ ic_status ic_surface_taylor_toward(ic_surface *s, double *out, const double *at,
 ic_status ic_surface_compose(ic_surface *s, double *out, const double *const *in,
                              const ic_jet_space *sp, ic_error *err)
 {
+    IC_ARG_NOT_NULL(s, "s");
+    IC_ARG_NOT_NULL(out, "out");
+    IC_ARG_NOT_NULL(in, "in");
+    IC_ARG_NOT_NULL(sp, "sp");
     const int n = ic_jet_space_len(sp), nin = ic_surface_num_vars(s);
     const int nout = ic_surface_num_outputs(s);
     if (s->backend == BACKEND_FORMULA) {
@@ -502,6 +531,9 @@ ic_status ic_surface_compose(ic_surface *s, double *out, const double *const *in
 
 ic_status ic_surface_eval(ic_surface *s, double *out, const double *at, ic_error *err)
 {
+    IC_ARG_NOT_NULL(s, "s");
+    IC_ARG_NOT_NULL(out, "out");
+    IC_ARG_NOT_NULL(at, "at");
     if (s->backend == BACKEND_FORMULA) {
         double *w = ic_surface_work(s, IC_WORK_EVAL, ic_expr_work_len(s->expr));
         if (!w)
@@ -517,6 +549,9 @@ ic_status ic_surface_eval(ic_surface *s, double *out, const double *at, ic_error
 ic_status ic_surface_eval_interval_grad(ic_surface *s, ic_interval_grad *out, const ic_interval *in,
                                         ic_error *err)
 {
+    IC_ARG_NOT_NULL(s, "s");
+    IC_ARG_NOT_NULL(out, "out");
+    IC_ARG_NOT_NULL(in, "in");
     if (s->backend == BACKEND_PRIMITIVE) {
         if (s->kind == IC_IMPLICIT)
             ic_primitive_interval_grad(s, out, in);
@@ -556,6 +591,9 @@ ic_status ic_surface_eval_interval_grad(ic_surface *s, ic_interval_grad *out, co
 ic_status ic_surface_eval_interval(ic_surface *s, ic_interval *out, const ic_interval *in,
                                    ic_error *err)
 {
+    IC_ARG_NOT_NULL(s, "s");
+    IC_ARG_NOT_NULL(out, "out");
+    IC_ARG_NOT_NULL(in, "in");
     if (s->backend == BACKEND_PRIMITIVE && s->kind == IC_IMPLICIT)
         return ic_primitive_interval(s, out, in, err);
     if (s->backend == BACKEND_PRIMITIVE) {

@@ -9,7 +9,7 @@
 
 void ic_trace_points_reverse(ic_trace_point *p, int n)
 {
-    if (n < 1)
+    if (!p || n < 1)
         return;
     const double L = p[n - 1].s + p[0].s;
     for (int i = 0; i < n / 2; i++) {

@@ -3,6 +3,7 @@
  * plane normal to the curve, step control by truncation error and chord
  * height, events.
  */
+#include "common/args.h"
 #include "trace_constants.h"
 #include "trace_internal.h"
 #include "common/vec3.h"
@@ -41,6 +42,8 @@ const char *ic_trace_event_name(ic_trace_event ev)
 
 void ic_trace_defaults(ic_trace_options *opt)
 {
+    if (!opt)
+        return;
     memset(opt, 0, sizeof *opt);
     /* fractions of the problem's size L (ic_trace_problem_scale): about the
      * absolute values of earlier versions for the bundled examples, whose L
@@ -72,9 +75,10 @@ ic_trace_options ic_trace_absolute_options(const ic_trace_options *opt, double L
 
 ic_status ic_tracer_new(ic_tracer **out, ic_pair *pair, const ic_trace_options *opt, ic_error *err)
 {
+    IC_ARG_NOT_NULL(out, "tr");
     *out = NULL;
-    if (!pair || !opt)
-        return ic_error_set(err, IC_ERR_INVALID, 0, "tracer: no pair or no options");
+    IC_ARG_NOT_NULL(pair, "pair");
+    IC_ARG_NOT_NULL(opt, "opt");
     const ic_trace_options a = ic_trace_absolute_options(opt, ic_trace_problem_scale(pair, opt));
     return ic_tracer_new_absolute(out, pair, &a, err);
 }
@@ -110,10 +114,10 @@ void ic_tracer_free(ic_tracer *tr)
     free(tr);
 }
 
-int ic_tracer_num_points(const ic_tracer *tr) { return tr->n; }
+int ic_tracer_num_points(const ic_tracer *tr) { return tr ? tr->n : 0; }
 const ic_trace_point *ic_tracer_point(const ic_tracer *tr, int i)
 {
-    return i >= 0 && i < tr->n ? &tr->pts[i] : NULL;
+    return tr && i >= 0 && i < tr->n ? &tr->pts[i] : NULL;
 }
 
 /* t along the marching direction */
@@ -181,6 +185,8 @@ static ic_status apparatus(ic_tracer *tr, ic_local_result *res, const ic_local_p
 
 ic_status ic_tracer_start(ic_tracer *tr, const ic_local_point *start, int direction, ic_error *err)
 {
+    IC_ARG_NOT_NULL(tr, "tr");
+    IC_ARG_NOT_NULL(start, "start");
     tr->n = 0;
     tr->s = 0.0;
     tr->done = 0;
@@ -759,6 +765,8 @@ static ic_status step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
  * tangential"). */
 ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
 {
+    IC_ARG_NOT_NULL(tr, "tr");
+    IC_ARG_NOT_NULL(event, "event");
     const long before = tr->pair->nomem;
     return ic_pair_nomem_check(tr->pair, before, step(tr, event, err), err);
 }
@@ -767,6 +775,8 @@ void ic_tracer_set_deadline(ic_tracer *tr, double deadline) { tr->deadline = dea
 
 ic_status ic_tracer_run(ic_tracer *tr, ic_trace_event *event, ic_error *err)
 {
+    IC_ARG_NOT_NULL(tr, "tr");
+    IC_ARG_NOT_NULL(event, "event");
     /* the clock is read after every step (a step costs tens of microseconds
      * and near a tangential point far more; a reading costs tens of
      * nanoseconds); past the deadline the curve stops as at its budget */

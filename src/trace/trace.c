@@ -4,6 +4,7 @@
  * are located and recorded. The singular points (singular.c), the joining
  * (join.c) and the shapes (shape.c) have their own files.
  */
+#include "common/args.h"
 #include "trace_constants.h"
 #include "trace_internal.h"
 #include "common/vec3.h"
@@ -975,7 +976,9 @@ void ic_trace_result_free(ic_trace_result *r)
 
 ic_status ic_trace_fit(ic_trace_result *r, ic_pair *pair, double fit_tol, ic_error *err)
 {
-    if (!r || !pair || !(fit_tol > 0) || !isfinite(fit_tol))
+    IC_ARG_NOT_NULL(r, "res");
+    IC_ARG_NOT_NULL(pair, "pair");
+    if (!(fit_tol > 0) || !isfinite(fit_tol))
         return ic_error_set(err, IC_ERR_INVALID, 0, "ic_trace_fit: a result, its pair and a "
                                                     "positive tolerance");
     const double tol = fit_tol * r->scale;
@@ -998,20 +1001,23 @@ ic_status ic_trace_fit(ic_trace_result *r, ic_pair *pair, double fit_tol, ic_err
 
 const ic_curve_fit *ic_trace_result_fit(const ic_trace_result *r, int i)
 {
-    return r->fits && i >= 0 && i < r->ncurves ? r->fits[i] : NULL;
+    return r && r->fits && i >= 0 && i < r->ncurves ? r->fits[i] : NULL;
 }
 
-int ic_trace_result_num_curves(const ic_trace_result *r) { return r->ncurves; }
+int ic_trace_result_num_curves(const ic_trace_result *r) { return r ? r->ncurves : 0; }
 const ic_trace_curve *ic_trace_result_curve(const ic_trace_result *r, int i)
 {
-    return i >= 0 && i < r->ncurves ? &r->curves[i] : NULL;
+    return r && i >= 0 && i < r->ncurves ? &r->curves[i] : NULL;
 }
-int ic_trace_result_num_specials(const ic_trace_result *r) { return r->nspecials; }
+int ic_trace_result_num_specials(const ic_trace_result *r) { return r ? r->nspecials : 0; }
 const ic_trace_special *ic_trace_result_special(const ic_trace_result *r, int i)
 {
-    return i >= 0 && i < r->nspecials ? &r->specials[i] : NULL;
+    return r && i >= 0 && i < r->nspecials ? &r->specials[i] : NULL;
 }
-const ic_trace_report *ic_trace_result_report(const ic_trace_result *r) { return &r->report; }
+const ic_trace_report *ic_trace_result_report(const ic_trace_result *r)
+{
+    return r ? &r->report : NULL;
+}
 
 /* Out of memory ends the trace, wherever it struck: the searches and the
  * march try another way after a failed step, so it is asked of the pair at
@@ -1019,8 +1025,9 @@ const ic_trace_report *ic_trace_result_report(const ic_trace_result *r) { return
 ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options *user_opt,
                    ic_error *err)
 {
-    if (!out || !pair || !user_opt)
-        return ic_error_set(err, IC_ERR_INVALID, 0, "ic_trace needs a result, a pair and options");
+    IC_ARG_NOT_NULL(out, "res");
+    IC_ARG_NOT_NULL(pair, "pair");
+    IC_ARG_NOT_NULL(user_opt, "opt");
     const long before = pair->nomem;
     ic_status st = ic_pair_nomem_check(pair, before, trace(out, pair, user_opt, err), err);
     if (st == IC_ERR_NOMEM) {

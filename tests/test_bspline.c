@@ -241,34 +241,33 @@ static void check_refinement(void)
 {
     char path[600];
     snprintf(path, sizeof path, "%s/examples/viviani-implicit.json", source_dir);
-    ic_problem *p = NULL;
-    ic_pair *pair = NULL;
-    ic_trace_result *r = NULL;
-    ic_error err;
-    ic_trace_options opt;
-    ic_trace_defaults(&opt);
-    opt.chord = 1e-2, opt.max_step = 0.2, opt.tol = 1e-6;
-    if (!REQUIRE(ic_problem_load(&p, path, &err) == IC_OK &&
-                     ic_pair_new(&pair, ic_problem_surface(p, 0), ic_problem_surface(p, 1), &err) ==
-                         IC_OK,
-                 "refinement setup: %s", err.message))
-        goto done;
-    opt.has_box = ic_problem_box(p, opt.box);
+    traced t;
+    if (trace_file_with(&t, path, coarse_trace_options()) != 0) {
+        release(&t);
+        return;
+    }
     /* a tenth of the default tolerance (L is about 4, Viviani's sphere of
      * radius 2): the coarse trace's quintics miss it by tens of times */
     const double tol = 0.1 * FIT_TOL * 4;
     ic_curve_fit *f = NULL;
-    if (!REQUIRE(ic_trace(&r, pair, &opt, &err) == IC_OK && ic_trace_result_num_curves(r) == 1 &&
-                     ic_curve_fit_new(&f, pair, ic_trace_result_curve(r, 0), tol, &err) == IC_OK,
-                 "refinement: %s", err.message))
-        goto done;
-    const ic_trace_curve *tc = ic_trace_result_curve(r, 0);
+    ic_error err;
+    ic_error_clear(&err);
+    if (!REQUIRE(ic_trace_result_num_curves(t.res) == 1 &&
+                     ic_curve_fit_new(&f, t.pair, ic_trace_result_curve(t.res, 0), tol, &err) ==
+                         IC_OK,
+                 "refinement: %s", err.message)) {
+        release(&t);
+        return;
+    }
+    const ic_trace_curve *tc = ic_trace_result_curve(t.res, 0);
     double worst = 0;
     const double s0 = tc->points[0].s, s1 = tc->points[tc->npoints - 1].s;
     for (int k = 0; k <= SAMPLES; k++) {
         double x[3];
-        if (ic_bspline_eval(&f->curve, s0 + (s1 - s0) * k / SAMPLES, 0, x, NULL) != IC_OK)
+        if (ic_bspline_eval(&f->curve, s0 + (s1 - s0) * k / SAMPLES, 0, x, NULL) != IC_OK) {
             worst = INFINITY;
+            break;
+        }
         worst = fmax(worst, fabs(sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) - 2));
         worst = fmax(worst, fabs(hypot(x[0] - 1, x[1]) - 1));
     }
@@ -278,10 +277,7 @@ static void check_refinement(void)
     printf("%-48s %d stretches for %d traced points, off %.2g\n", "refinement (coarse Viviani)",
            stretches(&f->curve), tc->npoints, worst);
     ic_curve_fit_free(f);
-done:
-    ic_trace_result_free(r);
-    ic_pair_free(pair);
-    ic_problem_free(p);
+    release(&t);
 }
 
 /* The helix of a cylinder (radius 1, implicit) and a helicoid (u cos v,

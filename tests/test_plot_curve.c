@@ -131,22 +131,11 @@ static int trace_curve(traced *t, const char *dir, int ellipse, int coarse)
     char path[600];
     snprintf(path, sizeof path, "%s/tests/data/%s", dir,
              ellipse ? "plane-elliptic-cylinder.json" : "periodic-plane-sphere.json");
-    ic_error err;
-    ic_trace_options opt;
-    ic_trace_defaults(&opt);
-    if (coarse)
-        opt.chord = 1e-2, opt.max_step = 0.2, opt.tol = 1e-6;
-    memset(t, 0, sizeof *t);
-    ic_status st = ic_problem_load(&t->problem, path, &err);
-    if (st == IC_OK) {
-        opt.has_box = ic_problem_box(t->problem, opt.box);
-        st = ic_pair_new(&t->pair, ic_problem_surface(t->problem, 0),
-                         ic_problem_surface(t->problem, 1), &err);
-    }
-    if (st == IC_OK)
-        st = ic_trace(&t->res, t->pair, &opt, &err);
-    return REQUIRE(st == IC_OK && ic_trace_result_num_curves(t->res) == 1, "%s: one curve: %s",
-                   path, st == IC_OK ? "" : err.message);
+    ic_trace_options opt = coarse_trace_options();
+    if (!coarse)
+        ic_trace_defaults(&opt);
+    return trace_file_with(t, path, opt) == 0 &&
+           REQUIRE(ic_trace_result_num_curves(t->res) == 1, "%s: one curve", path);
 }
 
 int main(int argc, char **argv)

@@ -103,21 +103,13 @@ static void check_file(const char *dir, const char *file, double a, double b, in
 {
     char path[600];
     snprintf(path, sizeof path, "%s/tests/data/%s", dir, file);
+    ic_trace_options opt = coarse_trace_options();
+    if (!coarse)
+        ic_trace_defaults(&opt);
     traced t;
-    memset(&t, 0, sizeof t);
     ic_error err;
-    ic_trace_options opt;
-    ic_trace_defaults(&opt);
-    if (coarse)
-        opt.chord = 1e-2, opt.max_step = 0.2, opt.tol = 1e-6;
-    ic_status st = ic_problem_load(&t.problem, path, &err);
-    if (st == IC_OK) {
-        opt.has_box = ic_problem_box(t.problem, opt.box);
-        st = ic_pair_new(&t.pair, ic_problem_surface(t.problem, 0), ic_problem_surface(t.problem, 1),
-                         &err);
-    }
-    if (st == IC_OK)
-        st = ic_trace(&t.res, t.pair, &opt, &err);
+    ic_error_clear(&err);
+    ic_status st = trace_file_with(&t, path, opt) == 0 ? IC_OK : IC_ERR_INVALID;
     if (st == IC_OK)
         st = ic_trace_fit(t.res, t.pair, 1e-9, &err);
     FILE *f = tmpfile();

@@ -15,12 +15,10 @@ typedef struct {
     ic_trace_result *res;
 } traced;
 
-/* Any problem file, traced with the default options (and its box). */
-static inline int trace_file(traced *t, const char *path)
+/* Any problem file, traced with the options given (and its box). */
+static inline int trace_file_with(traced *t, const char *path, ic_trace_options opt)
 {
     ic_error err;
-    ic_trace_options opt;
-    ic_trace_defaults(&opt);
     memset(t, 0, sizeof *t);
     ic_status st = ic_problem_load(&t->problem, path, &err);
     if (st == IC_OK) {
@@ -33,6 +31,25 @@ static inline int trace_file(traced *t, const char *path)
         st = ic_trace(&t->res, t->pair, &opt, &err);
     CHECK(st == IC_OK, "%s: %s", path, err.message);
     return st == IC_OK ? 0 : -1;
+}
+
+/* The options of a coarse trace (chord heights of 1e-2 of the size, steps
+ * up to 0.2 of it, truncation 1e-6): stretches that turn 0.1 to 0.25 rad,
+ * for the tests of what is drawn or fitted between the traced points. */
+static inline ic_trace_options coarse_trace_options(void)
+{
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    opt.chord = 1e-2, opt.max_step = 0.2, opt.tol = 1e-6;
+    return opt;
+}
+
+/* Any problem file, traced with the default options (and its box). */
+static inline int trace_file(traced *t, const char *path)
+{
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    return trace_file_with(t, path, opt);
 }
 
 static inline int trace_example(traced *t, const char *dir, const char *name)

@@ -256,11 +256,15 @@ typedef struct {
     int pcurve_dropped[2];
 } ic_curve_fit;
 
+/** The fit tolerance the command uses unless told (`--fit-tol`): a fraction
+ *  of the problem's size (docs/bspline.md). */
+#define IC_TRACE_FIT_TOL_DEFAULT 1e-9
+
 /**
  * Fits every curve of a result of ic_trace on `pair` as B-splines (the
  * result keeps them; ic_trace_result_fit gives them), fit_tol a fraction of
- * the problem's size L (docs/bspline.md: 1e-9 by default on the command
- * line); sets the report's fit_tol (a length) and fit_error. A curve that
+ * the problem's size L (docs/bspline.md; IC_TRACE_FIT_TOL_DEFAULT on the
+ * command line); sets the report's fit_tol (a length) and fit_error. A curve that
  * cannot be fitted (one point) has none. IC_ERR_NOMEM out of memory.
  */
 IC_API IC_NODISCARD ic_status ic_trace_fit(ic_trace_result *res, ic_pair *pair, double fit_tol,

@@ -69,10 +69,6 @@ static const ic_cli_option PLOT_OPTIONS[NOPTIONS] = {
     [OPT_NO_EXACT] = {.name = "--no-exact", .kind = IC_OPT_FLAG, .help = "as for 'intercurve trace'"},
 };
 
-/* relative to the problem's size: the curves' B-splines, as `trace --fit-tol`'s
- * default (docs/bspline.md) */
-#define PLOT_FIT_TOL 1e-9
-
 static const ic_cli_command PLOT = {
     .name = "plot",
     .summary = "Traces the intersection (as 'intercurve trace') and draws it: both surfaces as\n"
@@ -115,7 +111,7 @@ int ic_cmd_plot(int argc, char **argv)
     ic_error err;
     ic_error_clear(&err);
     /* the curves are drawn through their B-splines (docs/plots.md) */
-    ic_status st = ic_trace_fit(t.res, t.pair, PLOT_FIT_TOL, &err);
+    ic_status st = ic_trace_fit(t.res, t.pair, IC_TRACE_FIT_TOL_DEFAULT, &err);
     if (st == IC_OK)
         st = ic_plot_write(v[OPT_OUTPUT].text, &scene, &po, &err);
     if (st != IC_OK)

@@ -25,6 +25,10 @@ typedef enum {
     FORMAT_IGES
 } out_format;
 
+/* a macro's value as the text of a default ("1e-9") */
+#define TEXT_OF_TOKENS(x) #x
+#define TEXT_OF(x) TEXT_OF_TOKENS(x)
+
 static const ic_cli_option TRACE_OPTIONS[NOPTIONS] = {
     [OPT_FORMAT] = {.name = "--format",
                     .metavar = "F",
@@ -67,8 +71,8 @@ static const ic_cli_option TRACE_OPTIONS[NOPTIONS] = {
                      .kind = IC_OPT_REAL,
                      .lo = 0,
                      .hi = 1e-2,
-                     .fallback = "1e-9",
-                     .help = "the curves' B-splines in the json, step and iges outputs\n"
+                     .fallback = TEXT_OF(IC_TRACE_FIT_TOL_DEFAULT),
+                     .help = "the curves' B-splines in the json, vtk, step and iges outputs\n"
                              "(docs/bspline.md): what a pcurve's image may stray from the\n"
                              "curve, a fraction of the problem's size; the json report\n"
                              "gives the largest error found"},

@@ -11,9 +11,9 @@
 
 #include "intercurve.h"
 
-/* the command's defaults (docs/cli.md, trace): relative tolerances */
+/* the command's default truncation tolerance (docs/cli.md, trace), relative */
 #define TRACE_TOL 1e-11
-#define FIT_TOL 1e-9
+
 
 /* repetitions per batch, batches (the best one counts) */
 #define REPS 20
@@ -105,7 +105,7 @@ static int example(const char *dir, const char *name)
     const int self = ic_problem_is_self(p);
     if (ic_pair_new(&pair, ic_problem_surface(p, 0), self ? NULL : ic_problem_surface(p, 1),
                     &err) != IC_OK ||
-        ic_trace(&r, pair, &opt, &err) != IC_OK || ic_trace_fit(r, pair, FIT_TOL, &err) != IC_OK)
+        ic_trace(&r, pair, &opt, &err) != IC_OK || ic_trace_fit(r, pair, IC_TRACE_FIT_TOL_DEFAULT, &err) != IC_OK)
         fprintf(stderr, "%s: %s\n", path, err.message);
     else
         rc = time_writer(name, r, pair);

@@ -16,8 +16,6 @@
 
 #include "intercurve.h"
 
-/* relative: the fit tolerance of `intercurve trace` (docs/bspline.md) */
-#define BENCH_FIT_TOL 1e-9
 
 /* The child: 0 when the example was traced, fitted and written. */
 static int trace_one(const char *path)
@@ -36,7 +34,7 @@ static int trace_one(const char *path)
     if (st == IC_OK)
         st = ic_trace(&res, pair, &opt, NULL);
     if (st == IC_OK)
-        st = ic_trace_fit(res, pair, BENCH_FIT_TOL, NULL);
+        st = ic_trace_fit(res, pair, IC_TRACE_FIT_TOL_DEFAULT, NULL);
     FILE *sink = fopen("/dev/null", "w");
     if (st == IC_OK && sink)
         st = ic_trace_write_json(sink, res, pair, NULL);

@@ -212,7 +212,7 @@ static int run_intercurve(const bench_case *c, peer_output *out, double *seconds
     const double t0 = now_seconds();
     ic_status st = ic_trace(&res, pair, &opt, &err);
     if (st == IC_OK && fitted)
-        st = ic_trace_fit(res, pair, 1e-9, &err);
+        st = ic_trace_fit(res, pair, IC_TRACE_FIT_TOL_DEFAULT, &err);
     *seconds = now_seconds() - t0;
     if (st != IC_OK) {
         out->failed = 1;

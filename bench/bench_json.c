@@ -14,7 +14,6 @@
 /* the command's default truncation tolerance (docs/cli.md, trace), relative */
 #define TRACE_TOL 1e-11
 
-
 /* repetitions per batch, batches (the best one counts) */
 #define REPS 20
 #define BATCHES 7

@@ -13,7 +13,7 @@
  *                   curve's alpha_k solves R_u alpha_k^u + R_v alpha_k^v
  *                   = a_k - [R(alpha(s))]_k.
  * The matrix M = [t; N_A; N_B] is the same at every order; its inverse is
- * written with cross products (ic_solve_frame).
+ * written with cross products, made once (ic_frame_solver).
  *
  * [R(alpha(s))]_k and [f(c(s))]_k come from each surface's Taylor polynomial
  * of order K at the point, composed with the curve one degree at a time
@@ -218,6 +218,8 @@ ic_status ic_jet_method(ic_pair *pair, ic_branch *br, const ic_sheet sh[2], int 
     double t[3];
     ic_cross3(t, NA, NB);
     ic_normalize3(t);
+    ic_frame_solver fs;
+    ic_frame_solver_init(&fs, t, NA, NB);
     /* order 0 and 1 */
     const ic_sheet *first = sh[0].parametric ? &sh[0] : &sh[1];
     for (int c = 0; c < 3; c++)
@@ -240,7 +242,7 @@ ic_status ic_jet_method(ic_pair *pair, ic_branch *br, const ic_sheet sh[2], int 
             st = sheet_rhs(pair, &sh[s], &sj[s], k, &r[1 + s], Q[s], err);
         if (st != IC_OK)
             break;
-        ic_solve_frame(cj.a[k], t, NA, NB, r);
+        ic_frame_solve(&fs, cj.a[k], r);
         for (int s = 0; s < 2; s++) {
             if (sh[s].parametric) {
                 double w[3];

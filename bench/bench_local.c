@@ -4,7 +4,14 @@
  * sheets' geometry given), and the two surfaces' own order-K derivative
  * tensors at the same point, with the ratio of the last two (the jet
  * method's overhead over evaluating the surfaces; docs/performance.md);
- * the closed forms at K = 3 beside. The point is located once beforehand. */
+ * the closed forms at K = 3 beside. The point is located once beforehand.
+ *
+ * bench_local --instructions, run under callgrind, counts instructions
+ * instead (a shared machine's timings wander): for each pairing and K, the
+ * jet method and the surfaces each called 10 times after a warm-up call,
+ * between CALLGRIND_ZERO_STATS and CALLGRIND_DUMP_STATS_AT("jet|surfaces
+ * <pairing> K=<K>"); each dump's totals divided by 10 are the instructions
+ * per call (docs/performance.md, "Jets"). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -12,6 +19,13 @@
 #include "bench_timer.h"
 #include "intercurve.h"
 #include "local/local_internal.h"
+
+#if defined(__has_include)
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#define BENCH_CALLGRIND 1
+#endif
+#endif
 
 typedef struct {
     ic_pair *pair;
@@ -48,6 +62,28 @@ static int run_surfaces(void *ctx)
             return 1;
     }
     return 0;
+}
+
+/* --instructions: fn's calls counted apart (10 after a warm-up, labelled);
+ * 0 on success. */
+static int count_instructions(int (*fn)(void *ctx), void *ctx, const char *what, const char *name,
+                              int K)
+{
+#ifdef BENCH_CALLGRIND
+    char label[96];
+    snprintf(label, sizeof label, "%s %s K=%d", what, name, K);
+    int bad = fn(ctx); /* the warm-up */
+    CALLGRIND_ZERO_STATS;
+    for (int r = 0; r < 10; r++)
+        bad |= fn(ctx);
+    CALLGRIND_DUMP_STATS_AT(label);
+    printf("%s\n", label);
+    return bad;
+#else
+    (void)fn, (void)ctx, (void)what, (void)name, (void)K;
+    fprintf(stderr, "bench_local: built without valgrind/callgrind.h, no --instructions\n");
+    return 1;
+#endif
 }
 
 typedef struct {
@@ -98,8 +134,10 @@ static ic_surface *rational_patch(surface_pool *pool)
     return srf;
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
+    const int instructions = argc > 1 && strcmp(argv[1], "--instructions") == 0;
+    int failed = 0; /* --instructions: a count that could not be made */
     ic_primitive cyl = {.kind = IC_PRIM_CYLINDER, .center = {1, 0, 0}, .radius = 1};
     ic_primitive sph = {.kind = IC_PRIM_SPHERE, .radius = 2};
     ic_primitive torus = {.kind = IC_PRIM_TORUS, .major_radius = 2, .radius = 0.5};
@@ -158,8 +196,9 @@ int main(void)
         return 1;
     cases[n++] = (bench_case){"rational NURBS/implicit sphere", nurbs, PRIM(sph, IC_IMPLICIT),
                               {Ru[0], sqrt(4 - Ru[0] * Ru[0] - Ru[2] * Ru[2]), Ru[2]}};
-    printf("%-36s %3s %10s %10s %10s %8s %10s\n", "pairing (ns per point)", "K", "apparatus",
-           "jet method", "surfaces", "jet/surf", "closed K=3");
+    if (!instructions)
+        printf("%-36s %3s %10s %10s %10s %8s %10s\n", "pairing (ns per point)", "K", "apparatus",
+               "jet method", "surfaces", "jet/surf", "closed K=3");
     for (int i = 0; i < n; i++) {
         job j;
         memset(&j, 0, sizeof j);
@@ -183,6 +222,13 @@ int main(void)
             double r[4];
             j.order = K;
             j.method = IC_METHOD_JET;
+            if (instructions) {
+                failed |= count_instructions(run_jet_method, &j, "jet", cases[i].name, K) ||
+                          count_instructions(run_surfaces, &j, "surfaces", cases[i].name, K);
+                ic_jet_space_free(j.sp[0]);
+                ic_jet_space_free(j.sp[1]);
+                continue;
+            }
             r[0] = bench_ns_per_call(run_apparatus, &j);
             r[1] = bench_ns_per_call(run_jet_method, &j);
             r[2] = bench_ns_per_call(run_surfaces, &j);
@@ -198,6 +244,11 @@ int main(void)
             ic_jet_space_free(j.sp[1]);
         }
         ic_pair_free(j.pair);
+    }
+    if (instructions) {
+        for (int i = 0; i < pool.n; i++)
+            ic_surface_free(pool.s[i]);
+        return failed;
     }
     /* tangential points: classification (order 1), the full apparatus by the
      * height-difference method at K = 3 and 8, and the perturbation method */

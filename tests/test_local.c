@@ -385,6 +385,89 @@ static void test_line_and_plane_curve(void)
     close_pair(&tp);
 }
 
+/* The jet method on implicit primitives, which follow the curve with their
+ * own series (one call per order, ic_primitive_along_advance), against the
+ * same surfaces written as formulas, composed with the curve's jet at every
+ * order: the same equations, the surfaces' coefficients along the curve
+ * made two ways, at every order up to the highest (IC_LOCAL_MAX_ORDER), at
+ * the same located point, the formulas' coefficients the primitives' own.
+ * The orders' Taylor coefficients c^(k)/k! are compared relative to the
+ * largest of them: each order's surface coefficients may differ by a few
+ * ulps of its terms (the two sum the same products, and here in the same
+ * order: measured 0), which the solves of the orders above carry on; a
+ * wrong or stale term is off by its whole size (measured 2e-9 to 1e2). */
+#define TOL_PRIMITIVE_JETS 1e-13
+
+static void check_primitive_jets(const char *what, const ic_primitive *pa, const ic_primitive *pb,
+                                 const char *fa, const char *fb, const double at[3])
+{
+    ic_surface *s[4] = {NULL, NULL, NULL, NULL};
+    ic_pair *prim = NULL, *form = NULL;
+    ic_error err;
+    if (REQUIRE(ic_surface_new_primitive(&s[0], pa, IC_IMPLICIT, &err) == IC_OK &&
+                    ic_surface_new_primitive(&s[1], pb, IC_IMPLICIT, &err) == IC_OK &&
+                    ic_surface_new_implicit(&s[2], fa, NULL, 0, &err) == IC_OK &&
+                    ic_surface_new_implicit(&s[3], fb, NULL, 0, &err) == IC_OK &&
+                    ic_pair_new(&prim, s[0], s[1], &err) == IC_OK &&
+                    ic_pair_new(&form, s[2], s[3], &err) == IC_OK,
+                "%s: %s", what, err.message)) {
+        ic_local_options opt;
+        ic_local_defaults(&opt);
+        ic_local_point pt;
+        static ic_local_result rp, rf;
+        const int K = IC_LOCAL_MAX_ORDER;
+        if (REQUIRE(ic_local_locate(prim, &pt, at, &opt, &err) == IC_OK &&
+                        ic_local_apparatus(prim, &rp, &pt, K, IC_METHOD_JET, &opt, &err) == IC_OK &&
+                        ic_local_apparatus(form, &rf, &pt, K, IC_METHOD_JET, &opt, &err) == IC_OK,
+                    "%s: %s", what, err.message)) {
+            double scale = 0.0, worst = 0.0, fact = 1.0;
+            int worst_k = 0;
+            for (int k = 1; k <= K; k++) {
+                fact *= k;
+                for (int c = 0; c < 3; c++) {
+                    const double want = rf.branches[0].derivs[k - 1][c] / fact;
+                    const double got = rp.branches[0].derivs[k - 1][c] / fact;
+                    scale = fmax(scale, fabs(want));
+                    if (!(fabs(got - want) <= worst))
+                        worst = fabs(got - want), worst_k = k;
+                }
+            }
+            CHECK(worst <= TOL_PRIMITIVE_JETS * scale,
+                  "%s: c^(k)/k! differ by %g (of %g) at order %d", what, worst, scale, worst_k);
+            printf("%s: primitives against formulas to order %d: %.1e\n", what, K, worst / scale);
+        }
+    }
+    ic_pair_free(prim);
+    ic_pair_free(form);
+    for (int i = 0; i < 4; i++)
+        ic_surface_free(s[i]);
+}
+
+static void test_primitive_jets(void)
+{
+    const double th = 0.7;
+    const ic_primitive cyl = {.kind = IC_PRIM_CYLINDER, .center = {1, 0, 0}, .radius = 1};
+    const ic_primitive sph = {.kind = IC_PRIM_SPHERE, .radius = 2};
+    check_primitive_jets("Viviani", &cyl, &sph, "(x - 1)^2 + y^2 - 1", "x^2 + y^2 + z^2 - 4",
+                         (const double[3]){1 + cos(th), sin(th), 2 * sin(th / 2)});
+    /* 4x^2 + y^2 + z^2/4 = 1 and x^2 + 4y^2 + 4z^2 = 1 at z = 0.2: 15 y^2 = 2.37 */
+    const ic_primitive e1 = {.kind = IC_PRIM_ELLIPSOID, .axes = {0.5, 1, 2}};
+    const ic_primitive e2 = {.kind = IC_PRIM_ELLIPSOID, .axes = {1, 0.5, 0.5}};
+    const double y = sqrt(2.37 / 15);
+    check_primitive_jets("ellipsoids", &e1, &e2, "4*x^2 + y^2 + 0.25*z^2 - 1",
+                         "x^2 + 4*y^2 + 4*z^2 - 1",
+                         (const double[3]){sqrt((0.99 - y * y) / 4), y, 0.2});
+    /* a cone (apex at the origin) and a plane, at x = 0.3 on the plane; the
+     * cone's coefficient tan^2 as the primitive makes it */
+    const ic_primitive cone = {.kind = IC_PRIM_CONE, .half_angle = atan(0.5)};
+    const ic_primitive pl = {.kind = IC_PRIM_PLANE, .center = {0, 0, 1}, .normal = {0, 0.6, 0.8}};
+    const double t = tan(cone.half_angle), z = 1 - 0.75 * 0.35;
+    char fc[64];
+    snprintf(fc, sizeof fc, "x^2 + y^2 - %.17g*z^2", t * t);
+    check_primitive_jets("cone and plane", &cone, &pl, fc, "0.6*y + 0.8*(z - 1)",
+                         (const double[3]){sqrt(t * t * z * z - 0.35 * 0.35), 0.35, z});
+}
+
 int main(int argc, char **argv)
 {
     static truth_case cases[64];
@@ -394,5 +477,6 @@ int main(int argc, char **argv)
     test_locate_params();
     test_errors();
     test_line_and_plane_curve();
+    test_primitive_jets();
     return harness_finish("test_local");
 }

@@ -545,6 +545,92 @@ static void test_primitive_along(harness_rng *rng)
     }
 }
 
+/* ic_primitive_along_advance, the jet method's one call per order, against
+ * the general path it stands for (ic_primitive_along_finish of order k, then
+ * ic_primitive_along_step of order k + 1 with the curve's coefficients of
+ * that order still zero), at every order up to the jet method's highest,
+ * on random primitives, placed at random or not: an implicit quadric's
+ * step is summed there apart, in registers (quadric_next), the others go
+ * through the general path. */
+enum { ADVANCE_K = 16 }; /* IC_LOCAL_MAX_ORDER */
+
+/* The sum of the magnitudes of the terms of a quadric's order-k
+ * coefficient, sum_i |A_i| sum_j |d_ij d_i(k-j)|. Two evaluations of the
+ * same terms in any order differ by at most 2 (k + 5) DBL_EPSILON times it
+ * (recursive summation of the k + 1 products, each weighted by A_i, and the
+ * sum over i): the specialised sum adds the same terms in the same order
+ * and agrees to the bit, unless a compiler fuses multiplications and
+ * additions differently in the two; a wrong term is a whole term off. */
+static double quadric_terms(const ic_primitive_along *pa, int k)
+{
+    double sum = 0.0;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j <= k; j++)
+            sum += fabs(pa->A[i]) * fabs(pa->d[i][j] * pa->d[i][k - j]);
+    return sum;
+}
+
+static void check_advance(ic_surface *srf, const char *what, harness_rng *rng)
+{
+    const int nin = ic_surface_num_vars(srf), nout = ic_surface_num_outputs(srf);
+    double in[3][ADVANCE_K + 1] = {{0.0}};
+    for (int i = 0; i < nin; i++)
+        for (int k = 0; k <= ADVANCE_K; k++)
+            in[i][k] = harness_uniform(rng, -0.5, 0.5) + (k == 0 ? 1.0 : 0.0);
+    const double at[3] = {in[0][0], in[1][0], in[2][0]};
+    ic_primitive_along general, fast;
+    ic_primitive_along_start(&general, srf, at);
+    ic_primitive_along_start(&fast, srf, at);
+    int bad = 0, bad_order = 0;
+    double bad_got = 0.0, bad_want = 0.0;
+    for (int k = 1; k < ADVANCE_K; k++) {
+        double want[3], got[3];
+        for (int i = 0; i < nin; i++)
+            general.in[i][k] = in[i][k];
+        ic_primitive_along_finish(&general, k);
+        ic_primitive_along next = general; /* its order-(k+1) coefficients zero */
+        ic_primitive_along_step(&next, k + 1, want);
+        ic_primitive_along_advance(&fast, k, in[0][k], in[1][k], in[2][k], got);
+        const double bound =
+            next.quadric ? 2.0 * (k + 6) * DBL_EPSILON * quadric_terms(&next, k + 1) : 0.0;
+        for (int c = 0; c < nout; c++)
+            if (!(fabs(got[c] - want[c]) <= bound) && bad++ == 0)
+                bad_order = k + 1, bad_got = got[c], bad_want = want[c];
+    }
+    CHECK(bad == 0, "%s: the advance's step differs %d times, first at order %d: %.17g, want %.17g",
+          what, bad, bad_order, bad_got, bad_want);
+}
+
+static void test_primitive_advance(harness_rng *rng)
+{
+    const ic_primitive_kind kinds[6] = {IC_PRIM_CYLINDER, IC_PRIM_SPHERE, IC_PRIM_CONE,
+                                        IC_PRIM_ELLIPSOID, IC_PRIM_PLANE, IC_PRIM_TORUS};
+    const int trials = 48 * harness_multiplier();
+    for (int t = 0; t < trials; t++) {
+        ic_primitive p;
+        memset(&p, 0, sizeof p);
+        p.kind = kinds[t % 6];
+        const int placed = t / 6 % 2, form = t / 12 % 4 == 3 ? IC_PARAMETRIC : IC_IMPLICIT;
+        for (int i = 0; i < 3; i++) {
+            p.center[i] = harness_uniform(rng, -2.0, 2.0);
+            p.axes[i] = harness_uniform(rng, 0.3, 2.0);
+            p.normal[i] = harness_uniform(rng, -1.0, 1.0);
+            if (placed && p.kind != IC_PRIM_PLANE) /* (the plane is placed by its normal) */
+                p.axis[i] = harness_uniform(rng, -1.0, 1.0);
+        }
+        p.radius = harness_uniform(rng, 0.3, 2.0);
+        p.major_radius = p.radius + harness_uniform(rng, 0.5, 2.0);
+        p.half_angle = harness_uniform(rng, 0.1, 1.2);
+        ic_surface *srf = NULL;
+        char what[64];
+        snprintf(what, sizeof what, "random primitive %d (kind %d, %s%s)", t, (int)p.kind,
+                 form == IC_IMPLICIT ? "implicit" : "parametric", placed ? ", placed" : "");
+        if (REQUIRE(ic_surface_new_primitive(&srf, &p, form, NULL) == IC_OK, "%s", what))
+            check_advance(srf, what, rng);
+        ic_surface_free(srf);
+    }
+}
+
 int main(int argc, char **argv)
 {
     harness_rng rng = {0xD1B54A32D192ED03ull};
@@ -557,5 +643,6 @@ int main(int argc, char **argv)
     test_callback_and_compose();
     test_invalid();
     test_primitive_along(&rng);
+    test_primitive_advance(&rng);
     return harness_finish("test_surface");
 }

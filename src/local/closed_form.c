@@ -6,16 +6,21 @@
 #include "local_internal.h"
 #include "common/vec3.h"
 
+void ic_frame_solver_init(ic_frame_solver *fs, const double *t, const double *NA,
+                          const double *NB)
+{
+    ic_cross3(fs->ab, NA, NB);
+    ic_cross3(fs->bt, NB, t);
+    ic_cross3(fs->ta, t, NA);
+    fs->det = ic_dot3(t, fs->ab);
+}
+
 void ic_solve_frame(double *x, const double *t, const double *NA, const double *NB,
                     const double *r)
 {
-    double ab[3], bt[3], ta[3];
-    ic_cross3(ab, NA, NB);
-    ic_cross3(bt, NB, t);
-    ic_cross3(ta, t, NA);
-    const double det = ic_dot3(t, ab);
-    for (int c = 0; c < 3; c++)
-        x[c] = (r[0] * ab[c] + r[1] * bt[c] + r[2] * ta[c]) / det;
+    ic_frame_solver fs;
+    ic_frame_solver_init(&fs, t, NA, NB);
+    ic_frame_solve(&fs, x, r);
 }
 
 void ic_arc_length_derivs(double c[3][3], const double *b1, const double *b2, const double *b3)

@@ -13,14 +13,19 @@
  *                   curve's alpha_k solves R_u alpha_k^u + R_v alpha_k^v
  *                   = a_k - [R(alpha(s))]_k.
  * The matrix M = [t; N_A; N_B] is the same at every order; its inverse is
- * written with cross products (ic_solve_frame).
+ * written with cross products, made once (ic_frame_solver).
  *
  * [R(alpha(s))]_k and [f(c(s))]_k come from each surface's Taylor polynomial
  * of order K at the point, composed with the curve one degree at a time
  * (jet/jet_chain.h): the jet's lower coefficients are final, so each order
  * adds its own coefficients only (per order, one convolution per power
  * product and one sum over the terms), instead of pushing the whole jet
- * through the surface again at every order.
+ * through the surface again at every order. A primitive follows the curve
+ * with its own one-variable series instead (ic_primitive_along), and makes
+ * the next order's [.]_k as soon as a_k is solved (ic_primitive_along_advance,
+ * which takes a_k in registers): the orders follow each other as closely
+ * as the arithmetic allows, which for two quadrics is what bounds the
+ * method's time (docs/performance.md, "Jets").
  */
 #include "local_internal.h"
 #include "common/vec3.h"
@@ -47,11 +52,16 @@ typedef struct {
     int direct; /* a formula: composed with the curve's jet at every order */
     int along;  /* a primitive: pa */
     ic_primitive_along pa;
+    /* [R(alpha(s))]_k or [f(c(s))]_k at the current order k, the curve's
+     * order-k coefficients still zero (a primitive's: made by its advance
+     * at the end of the order before) */
+    double q[3];
     double at[3]; /* the expansion point: c(0) or alpha(0) */
     const ic_jet_space *sp_p;
     int nout;
     double *taylor;                                /* nout jets of sp_p */
-    double in[3][IC_LOCAL_MAX_ORDER + 1];          /* c(s) - c(0) or alpha(s) - alpha(0) */
+    double in[3][IC_LOCAL_MAX_ORDER + 1];          /* c(s) - c(0) or alpha(s) - alpha(0)
+                                                      (a primitive's are pa's) */
     ic_jet_chain chain;
 } sheet_jet;
 
@@ -93,30 +103,28 @@ static ic_status sheet_compose(ic_pair *pair, const ic_sheet *sh, const sheet_je
     return st;
 }
 
-/* Right-hand side r_S for sheet S at order k (the curve's coefficients of
- * order k still zero), and [R(alpha)]_k (parametric). */
+/* Right-hand side r_S for sheet S at order k, from sj->q (made here
+ * unless the sheet is a primitive). */
 static ic_status sheet_rhs(ic_pair *pair, const ic_sheet *sh, sheet_jet *sj, int k, double *r,
-                           double Qk[3], ic_error *err)
+                           ic_error *err)
 {
     if (sj->direct) {
-        ic_status st = sheet_compose(pair, sh, sj, k, Qk, err);
+        ic_status st = sheet_compose(pair, sh, sj, k, sj->q, err);
         if (st != IC_OK)
             return st;
-    } else if (sj->along) {
-        ic_primitive_along_step(&sj->pa, k, Qk);
-    } else {
+    } else if (!sj->along) {
         const int n = ic_jet_space_len(sj->sp_p);
         double out[IC_LOCAL_MAX_ORDER + 1];
         ic_jet_chain_extend(&sj->chain, k);
         for (int c = 0; c < sj->nout; c++) {
             ic_jet_chain_part(&sj->chain, out, sj->taylor + (size_t)c * n, k);
-            Qk[c] = out[k];
+            sj->q[c] = out[k];
         }
     }
     if (sh->parametric)
-        *r = ic_dot3(sh->geo.normal, Qk);
+        *r = ic_dot3(sh->geo.normal, sj->q);
     else
-        *r = -Qk[0] / sh->geo.normal_length;
+        *r = -sj->q[0] / sh->geo.normal_length;
     return IC_OK;
 }
 
@@ -130,16 +138,19 @@ static void tangent_to_params(const ic_sheet *sh, const double *w, double *xy)
     xy[1] = (E * q - F * p) / det;
 }
 
-/* The inputs of sheet s along the curve gain their order-k coefficients
- * (a primitive's series are then completed at that order). */
-static void sheet_advance(const ic_sheet *sh, sheet_jet *sj, const curve_jet *cj, int s, int k)
+/* The inputs of sheet s along the curve gain their order-k coefficients;
+ * a primitive's series, which hold their own, are completed at that order
+ * and take the step of the next (its sj->q). */
+static void sheet_advance(const ic_sheet *sh, sheet_jet *sj, const curve_jet *cj, int s, int k,
+                          int order)
 {
-    for (int v = 0; v < (sh->parametric ? 2 : 3); v++)
-        sj->in[v][k] = sh->parametric ? cj->alpha[s][k][v] : cj->a[k][v];
-    if (sj->along) {
-        for (int v = 0; v < (sh->parametric ? 2 : 3); v++)
-            sj->pa.in[v][k] = sj->in[v][k];
-        ic_primitive_along_finish(&sj->pa, k);
+    const double *ak = sh->parametric ? cj->alpha[s][k] : cj->a[k];
+    const int nin = sh->parametric ? 2 : 3;
+    if (!sj->along) {
+        for (int v = 0; v < nin; v++)
+            sj->in[v][k] = ak[v];
+    } else if (k < order) { /* after the last order the series are not read */
+        ic_primitive_along_advance(&sj->pa, k, ak[0], ak[1], nin == 3 ? ak[2] : 0.0, sj->q);
     }
 }
 
@@ -153,17 +164,17 @@ static ic_status sheets_open(ic_pair *pair, const ic_sheet sh[2], sheet_jet sj[2
     size_t len = 0;
     *mem = NULL;
     for (int s = 0; s < 2; s++) {
-        /* not the whole struct: a primitive's series are started below */
-        memset(sj[s].in, 0, sizeof sj[s].in);
-        sj[s].direct = sj[s].along = 0;
         sj[s].taylor = NULL;
         sj[s].nout = sh[s].parametric ? 3 : 1;
         memcpy(sj[s].at, sh[s].parametric ? cj->alpha[s][0] : cj->a[0], sizeof sj[s].at);
         sj[s].direct = ic_surface_is_formula(sh[s].s);
         sj[s].along = ic_primitive_along_serves(sh[s].s);
+        /* not the whole struct: a primitive's series hold their own inputs */
         if (sj[s].along)
             ic_primitive_along_start(&sj[s].pa, sh[s].s, sj[s].at);
-        sheet_advance(&sh[s], &sj[s], cj, s, 1);
+        else
+            memset(sj[s].in, 0, sizeof sj[s].in);
+        sheet_advance(&sh[s], &sj[s], cj, s, 1, order);
         if (sj[s].direct || sj[s].along)
             continue;
         sj[s].sp_p = ic_surface_space(sh[s].s, order, err);
@@ -194,6 +205,15 @@ static ic_status sheets_open(ic_pair *pair, const ic_sheet sh[2], sheet_jet sj[2
     return IC_OK;
 }
 
+/* t . a_k from |c'| = 1: -1/(2k) sum_{i=1..k-2} (i+1)(k-i) a_{i+1} . a_{k-i}. */
+static double unit_speed_rhs(const double a[][3], int k)
+{
+    double r = 0.0;
+    for (int i = 1; i <= k - 2; i++)
+        r -= (i + 1) * (k - i) * ic_dot3(a[i + 1], a[k - i]);
+    return r / (2.0 * k);
+}
+
 /* c^(k) = k! a_k, and the parameter curves' derivatives likewise. */
 static void branch_store(ic_branch *br, const ic_sheet sh[2], const curve_jet *cj, int order)
 {
@@ -218,6 +238,8 @@ ic_status ic_jet_method(ic_pair *pair, ic_branch *br, const ic_sheet sh[2], int 
     double t[3];
     ic_cross3(t, NA, NB);
     ic_normalize3(t);
+    ic_frame_solver fs;
+    ic_frame_solver_init(&fs, t, NA, NB);
     /* order 0 and 1 */
     const ic_sheet *first = sh[0].parametric ? &sh[0] : &sh[1];
     for (int c = 0; c < 3; c++)
@@ -232,22 +254,19 @@ ic_status ic_jet_method(ic_pair *pair, ic_branch *br, const ic_sheet sh[2], int 
     double *mem = NULL;
     ic_status st = order >= 2 ? sheets_open(pair, sh, sj, &cj, order, &mem, err) : IC_OK;
     for (int k = 2; k <= order && st == IC_OK; k++) {
-        double r[3] = {0, 0, 0}, Q[2][3];
-        for (int i = 1; i <= k - 2; i++)
-            r[0] -= (i + 1) * (k - i) * ic_dot3(cj.a[i + 1], cj.a[k - i]);
-        r[0] /= 2.0 * k;
+        double r[3] = {unit_speed_rhs(cj.a, k), 0, 0};
         for (int s = 0; s < 2 && st == IC_OK; s++)
-            st = sheet_rhs(pair, &sh[s], &sj[s], k, &r[1 + s], Q[s], err);
+            st = sheet_rhs(pair, &sh[s], &sj[s], k, &r[1 + s], err);
         if (st != IC_OK)
             break;
-        ic_solve_frame(cj.a[k], t, NA, NB, r);
+        ic_frame_solve(&fs, cj.a[k], r);
         for (int s = 0; s < 2; s++) {
             if (sh[s].parametric) {
                 double w[3];
-                ic_axpy3(w, cj.a[k], -1.0, Q[s]);
+                ic_axpy3(w, cj.a[k], -1.0, sj[s].q);
                 tangent_to_params(&sh[s], w, cj.alpha[s][k]);
             }
-            sheet_advance(&sh[s], &sj[s], &cj, s, k);
+            sheet_advance(&sh[s], &sj[s], &cj, s, k, order);
         }
     }
     free(mem);

@@ -94,15 +94,31 @@ ic_status ic_closed_abdel_all(ic_branch *br, const ic_sheet sh[2], ic_paper_valu
 ic_status ic_closed_patrikalakis_maekawa(ic_branch *br, const ic_sheet sh[2],
                                          ic_paper_values *paper, ic_error *err);
 
-/* x with t . x = r[0], N_A . x = r[1], N_B . x = r[2] (unit t normal to
- * both): x = (r0 N_A x N_B + r1 N_B x t + r2 t x N_A) / det[t; N_A; N_B]. */
 /* The parameters of the point of parametric sheet `which` nearest to X, by
  * damped Newton on |R(u, v) - X|^2 from uv (updated); *dist the distance. */
 ic_status ic_local_project(ic_pair *pair, int which, double uv[2], const double X[3],
                            const ic_local_options *opt, double *dist);
 
+/* x with t . x = r[0], N_A . x = r[1], N_B . x = r[2] (unit t normal to
+ * both): x = (r0 N_A x N_B + r1 N_B x t + r2 t x N_A) / det[t; N_A; N_B]. */
 void ic_solve_frame(double *x, const double *t, const double *NA, const double *NB,
                     const double *r);
+
+/* The same solve with its cross products and determinant made once: the
+ * jet method solves with the same t, N_A, N_B at every order. */
+typedef struct {
+    double ab[3], bt[3], ta[3]; /* N_A x N_B, N_B x t, t x N_A */
+    double det;                 /* det[t; N_A; N_B] */
+} ic_frame_solver;
+
+void ic_frame_solver_init(ic_frame_solver *fs, const double *t, const double *NA,
+                          const double *NB);
+
+static inline void ic_frame_solve(const ic_frame_solver *fs, double *x, const double *r)
+{
+    for (int c = 0; c < 3; c++)
+        x[c] = (r[0] * fs->ab[c] + r[1] * fs->bt[c] + r[2] * fs->ta[c]) / fs->det;
+}
 /* c', c'', c''' (arc length) of a curve from its derivatives b1, b2, b3 with
  * respect to any regular parameter (the chain rule for d/ds = |b1|^-1 d/dp). */
 void ic_arc_length_derivs(double c[3][3], const double *b1, const double *b2, const double *b3);

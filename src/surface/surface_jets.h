@@ -50,6 +50,7 @@ typedef struct {
     double rho[IC_JET_MAX_ORDER + 1];  /* implicit torus: d_x^2 + d_y^2 */
     double sum[IC_JET_MAX_ORDER + 1];  /* implicit torus: |d|^2 + R^2 - r^2 */
     double A[3], B[3], C;              /* implicit quadric: sum A_i d_i^2 + B_i d_i + C */
+    int quadric;                       /* implicit, not a torus: the series are d alone */
 } ic_primitive_along;
 
 /* Whether ic_primitive_along serves the surface (a primitive). */
@@ -69,5 +70,20 @@ void ic_primitive_along_step(ic_primitive_along *pa, int k, double *out);
 /* Completes the series at order k once the curve's order-k coefficients are
  * final: a step without its output. */
 void ic_primitive_along_finish(ic_primitive_along *pa, int k);
+
+/* ic_primitive_along_finish and ic_primitive_along_step of order k + 1 in
+ * one call, for the jet method, which finds the curve's coefficients of
+ * each order from the step of that order: sets the curve's final order-k
+ * coefficients (in0, in1, in2: u, v and one ignored, or x, y, z), completes
+ * the series at order k and writes the step of order k + 1 (k >= 1,
+ * k + 1 <= IC_JET_MAX_ORDER) into next, the curve's coefficients above
+ * order k being still zero (as ic_primitive_along_start leaves them). The
+ * same result to the bit; an implicit quadric's step is made from the
+ * order-k coefficients kept in registers (they come by value): read back
+ * from memory just after they were written, a wide load the compiler may
+ * make of two of them waits for the writes to reach the cache, and the
+ * whole step waits on them. */
+void ic_primitive_along_advance(ic_primitive_along *pa, int k, double in0, double in1, double in2,
+                                double *next);
 
 #endif

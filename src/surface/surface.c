@@ -201,6 +201,7 @@ void ic_surface_free(ic_surface *s)
     if (!s)
         return;
     ic_nurbs_patch_free(s->nurbs);
+    ic_net_shape_free(s->net_shape);
     ic_expr_free(s->expr);
     for (int k = 0; k <= IC_JET_MAX_ORDER; k++) {
         ic_jet_space_free(s->spaces[k]);

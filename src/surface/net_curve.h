@@ -45,9 +45,10 @@ typedef enum { IC_NET_ANGLE, IC_NET_ALONG } ic_net_reading;
 typedef struct {
     ic_net_reading reading;
     double c[2], d[2]; /* the centre, or the line's point and unit direction */
-    int n;
+    int n, p;
     double *t, *pos; /* n + 1 each; owned */
     int *span;       /* n; owned */
+    double *net;     /* n Bezier nets of the homogeneous curve, (p + 1) x 3 each; owned */
     int sign;        /* +1: the position increases with t; -1: it decreases */
 } ic_net_pieces;
 
@@ -60,8 +61,9 @@ int ic_net_pieces_make(ic_net_pieces *pc, const ic_net_curve *c, ic_net_reading 
 void ic_net_pieces_free(ic_net_pieces *pc);
 
 /* The parameter where the position is pos (pos between pos[0] and pos[n]):
- * the piece that holds it, then Newton's method kept inside the piece's
- * bracket by bisection. 0, or -1 when pos lies outside the range. */
+ * the piece that holds it, then Newton's method on its Bezier net kept
+ * inside the piece's bracket by bisection. 0, or -1 when pos lies outside
+ * the range. */
 int ic_net_pieces_invert(const ic_net_pieces *pc, const ic_net_curve *c, double pos, double *t);
 
 #endif

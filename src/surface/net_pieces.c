@@ -52,11 +52,12 @@ static double position_of(const ic_net_pieces *pc, const double F[2])
     return pc->reading == IC_NET_ANGLE ? atan2(F[1], F[0]) : F[1] / F[0];
 }
 
-/* The Bezier net of F over [a, b] on span s, and its rounding bound. */
+/* The Bezier net of the curve over [a, b] on span s and that of F, and
+ * F's rounding bound. */
 static double piece_net(const ic_net_pieces *pc, const ic_net_curve *c, int s, double a, double b,
-                        double F[MAXP][2])
+                        double net[MAXP][3], double F[MAXP][2])
 {
-    double net[MAXP][3], big = 0;
+    double big = 0;
     ic_nurbs_blossom(&net[0][0], 3, &c->hom[s - c->p][0], 3, 3, c->p, c->knots, s, a, b);
     for (int k = 0; k <= c->p; k++) {
         reading_of(pc, net[k], F[k]);
@@ -111,26 +112,37 @@ typedef struct {
     int sign; /* 0 until the first piece */
 } growth;
 
-static int append(ic_net_pieces *pc, growth *g, int s, double b, double pos_b, int sign)
+/* Room for cap pieces: 0, or -1 out of memory. */
+static int grow(ic_net_pieces *pc, int cap)
+{
+    double *t = realloc(pc->t, sizeof *t * (size_t)(cap + 1));
+    if (t)
+        pc->t = t;
+    double *pos = realloc(pc->pos, sizeof *pos * (size_t)(cap + 1));
+    if (pos)
+        pc->pos = pos;
+    int *span = realloc(pc->span, sizeof *span * (size_t)cap);
+    if (span)
+        pc->span = span;
+    double *net = realloc(pc->net, sizeof *net * 3 * (size_t)(pc->p + 1) * (size_t)cap);
+    if (net)
+        pc->net = net;
+    return t && pos && span && net ? 0 : -1;
+}
+
+static int append(ic_net_pieces *pc, growth *g, int s, const double net[MAXP][3], double b,
+                  double pos_b, int sign)
 {
     if (g->sign != 0 && sign != g->sign)
         return 1; /* the position turns back */
     g->sign = sign;
-    if (pc->n + 2 > g->cap) {
-        const int cap = 2 * g->cap + 8;
-        double *t = realloc(pc->t, sizeof *t * (size_t)cap);
-        if (t)
-            pc->t = t;
-        double *pos = realloc(pc->pos, sizeof *pos * (size_t)cap);
-        if (pos)
-            pc->pos = pos;
-        int *span = realloc(pc->span, sizeof *span * (size_t)cap);
-        if (span)
-            pc->span = span;
-        if (!t || !pos || !span)
+    if (pc->n + 1 > g->cap) {
+        if (grow(pc, 2 * g->cap + 8) != 0)
             return -1;
-        g->cap = cap;
+        g->cap = 2 * g->cap + 8;
     }
+    memcpy(pc->net + 3 * (size_t)(pc->p + 1) * (size_t)pc->n, net,
+           sizeof(double) * 3 * (size_t)(pc->p + 1));
     pc->span[pc->n] = s;
     pc->t[pc->n + 1] = b;
     pc->pos[pc->n + 1] = pos_b;
@@ -143,8 +155,8 @@ static int append(ic_net_pieces *pc, growth *g, int s, double b, double pos_b, i
 static int cut(ic_net_pieces *pc, growth *g, const ic_net_curve *c, int s, double a, double b,
                int depth)
 {
-    double F[MAXP][2];
-    const double err = piece_net(pc, c, s, a, b, F);
+    double F[MAXP][2], net[MAXP][3];
+    const double err = piece_net(pc, c, s, a, b, net, F);
     const int sign = turning_sign(F, c->p, err);
     if (sign != 0 && (pc->reading == IC_NET_ALONG || in_half_plane(F, c->p, err))) {
         /* the end's position: the turn from the start (less than pi), or
@@ -154,7 +166,7 @@ static int cut(ic_net_pieces *pc, growth *g, const ic_net_curve *c, int s, doubl
                                  ? pc->pos[pc->n] + atan2(cross2(Fa, Fb),
                                                           Fa[0] * Fb[0] + Fa[1] * Fb[1])
                                  : position_of(pc, Fb);
-        return append(pc, g, s, b, pos_b, sign);
+        return append(pc, g, s, net, b, pos_b, sign);
     }
     if (depth >= NET_MAX_SPLITS)
         return 1;
@@ -168,18 +180,15 @@ int ic_net_pieces_make(ic_net_pieces *pc, const ic_net_curve *c, ic_net_reading 
 {
     memset(pc, 0, sizeof *pc);
     pc->reading = reading;
+    pc->p = c->p;
     pc->c[0] = c0[0], pc->c[1] = c0[1];
     if (d)
         pc->d[0] = d[0], pc->d[1] = d[1];
-    growth g = {0, 0};
-    pc->t = malloc(sizeof *pc->t * 8);
-    pc->pos = malloc(sizeof *pc->pos * 8);
-    pc->span = malloc(sizeof *pc->span * 8);
-    if (!pc->t || !pc->pos || !pc->span) {
+    growth g = {8, 0};
+    if (grow(pc, g.cap) != 0) {
         ic_net_pieces_free(pc);
         return -1;
     }
-    g.cap = 8;
     const double t0 = c->knots[c->p];
     double F0[2], h0[3] = {0, 0, 0}, P[2];
     ic_net_curve_point(c, t0, P);
@@ -206,29 +215,23 @@ void ic_net_pieces_free(ic_net_pieces *pc)
     free(pc->t);
     free(pc->pos);
     free(pc->span);
-    pc->t = pc->pos = NULL;
+    free(pc->net);
+    pc->t = pc->pos = pc->net = NULL;
     pc->span = NULL;
     pc->n = 0;
 }
 
-/* F and F' at t on span s. */
-static void reading_at(const ic_net_pieces *pc, const ic_net_curve *c, int s, double t,
-                       double F[2], double dF[2])
+/* The Bernstein polynomial of coefficients g[0..p] at x, and its
+ * derivative, by de Casteljau's scheme. */
+static double bernstein_at(const double *g, int p, double x, double *dg)
 {
-    double b[2][IC_NURBS_MAX_DEGREE + 1], h[3] = {0, 0, 0}, dh[3] = {0, 0, 0};
-    ic_basis_taylor(b, c->knots, s, c->p, t, 1);
-    for (int i = 0; i <= c->p; i++)
-        for (int e = 0; e < 3; e++) {
-            h[e] += b[0][i] * c->hom[s - c->p + i][e];
-            dh[e] += b[1][i] * c->hom[s - c->p + i][e];
-        }
-    reading_of(pc, h, F);
-    /* the reading is linear in h: F' is the reading of h' */
-    const double x = dh[0] - pc->c[0] * dh[2], y = dh[1] - pc->c[1] * dh[2];
-    if (pc->reading == IC_NET_ANGLE)
-        dF[0] = x, dF[1] = y;
-    else
-        dF[0] = dh[2], dF[1] = x * pc->d[0] + y * pc->d[1];
+    double b[MAXP];
+    memcpy(b, g, sizeof(double) * (size_t)(p + 1));
+    for (int j = 1; j < p; j++)
+        for (int i = 0; i + j <= p; i++)
+            b[i] += x * (b[i + 1] - b[i]);
+    *dg = p * (b[1] - b[0]);
+    return b[0] + x * (b[1] - b[0]);
 }
 
 /* The piece holding pos (positions ordered by sign), or -1. */
@@ -251,37 +254,41 @@ static int piece_of(const ic_net_pieces *pc, double pos)
 
 int ic_net_pieces_invert(const ic_net_pieces *pc, const ic_net_curve *c, double pos, double *t)
 {
-    const int k = piece_of(pc, pos);
+    (void)c; /* the pieces keep their nets */
+    const int k = piece_of(pc, pos), p = pc->p;
     if (k < 0)
         return -1;
     /* g = cross(d, F): the sine of the angle from the target direction d
-     * times |F|, or the coordinate less pos times W; of one sign on either
-     * side of the root within the piece */
+     * times |F|, or the coordinate less pos times W; a polynomial of degree
+     * p on the piece (its Bernstein coefficients those of the net's
+     * points), of one sign on either side of its one root there, growing
+     * through it when the position does (sign) */
     const double d[2] = {pc->reading == IC_NET_ANGLE ? cos(pos) : 1.0,
                          pc->reading == IC_NET_ANGLE ? sin(pos) : pos};
-    double lo = pc->t[k], hi = pc->t[k + 1];
-    const double span = hi - lo, p0 = pc->pos[k], p1 = pc->pos[k + 1];
-    double x = p1 != p0 ? lo + span * (pos - p0) / (p1 - p0) : lo;
-    /* g grows with t when the position does */
+    double g[MAXP];
+    for (int i = 0; i <= p; i++) {
+        double F[2];
+        reading_of(pc, pc->net + 3 * ((size_t)(p + 1) * (size_t)k + (size_t)i), F);
+        g[i] = pc->sign * cross2(d, F);
+    }
+    double lo = 0, hi = 1, x = g[0] < g[p] ? g[0] / (g[0] - g[p]) : 0;
     for (int it = 0; it < NET_INVERT_ITERATIONS; it++) {
-        double F[2], dF[2];
-        reading_at(pc, c, pc->span[k], x, F, dF);
-        const double g = pc->sign * cross2(d, F), dg = pc->sign * cross2(d, dF);
-        if (g == 0)
+        double dg;
+        const double v = bernstein_at(g, p, x, &dg);
+        if (v == 0)
             break;
-        if (g > 0)
+        if (v > 0)
             hi = x;
         else
             lo = x;
-        double next = dg > 0 ? x - g / dg : 0.5 * (lo + hi);
+        double next = dg > 0 ? x - v / dg : 0.5 * (lo + hi);
         if (!(next > lo && next < hi))
             next = 0.5 * (lo + hi);
         const double step = fabs(next - x);
         x = next;
-        const double rounding = 4 * DBL_EPSILON * (fabs(x) + span);
-        if (step <= rounding || hi - lo <= rounding)
+        if (step <= 4 * DBL_EPSILON || hi - lo <= 4 * DBL_EPSILON)
             break;
     }
-    *t = x;
+    *t = pc->t[k] + x * (pc->t[k + 1] - pc->t[k]);
     return 0;
 }

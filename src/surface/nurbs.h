@@ -37,10 +37,12 @@ ic_status ic_nurbs_taylor(const ic_nurbs_patch *patch, double *out, const double
                           const ic_nurbs_side side[2], const ic_jet_space *sp, double *work,
                           ic_error *err);
 
-/* The point at (u, v), wrapped along periodic parameters (a parameter on
- * a knot takes the piece above it): the basis values and the homogeneous
- * tensor sum, no jets. */
-void ic_nurbs_point(const ic_nurbs_patch *patch, const double uv[2], double out[3]);
+/* The point at (u, v), wrapped along periodic parameters, each
+ * parameter's piece chosen by side[] on a knot: the basis values and the
+ * homogeneous tensor sum, no jets; the same bits as ic_nurbs_taylor's
+ * constant terms. */
+void ic_nurbs_point(const ic_nurbs_patch *patch, const double uv[2], const ic_nurbs_side side[2],
+                    double out[3]);
 
 /* Doubles of workspace ic_nurbs_compose needs for jets of n coefficients. */
 size_t ic_nurbs_compose_work_len(const ic_nurbs_patch *patch, int n);

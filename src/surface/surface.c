@@ -395,6 +395,16 @@ static ic_status nurbs_taylor(ic_surface *s, double *out, const double *at, cons
     return ic_nurbs_taylor(s->nurbs, out, at, side, sp, w, err);
 }
 
+int ic_surface_nurbs_point(ic_surface *s, const double uv[2], double out[3])
+{
+    if (s->backend != BACKEND_NURBS)
+        return -1;
+    ic_nurbs_side side[2];
+    nurbs_sides(s, NULL, side);
+    ic_nurbs_point(s->nurbs, uv, side, out);
+    return 0;
+}
+
 /* The direction a parameter jet moves in: its first nonzero coefficient of
  * degree 1 (in the order of the space's variables), 0 if it stands still. */
 static double jet_heading(const double *jet, const ic_jet_space *sp)

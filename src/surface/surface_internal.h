@@ -48,6 +48,11 @@ double *ic_surface_work(ic_surface *s, int slot, size_t len);
  * part of its knots' domain, a patch not recognised, or out of memory. */
 const ic_net_shape *ic_surface_net_shape(ic_surface *s);
 
+/* A NURBS surface's point at uv, the same bits as the constant terms of
+ * its Taylor coefficients there (ic_nurbs_point; a forced knot side
+ * respected), without jets: 0, or -1 for any other surface. */
+int ic_surface_nurbs_point(ic_surface *s, const double uv[2], double out[3]);
+
 /* Primitives (primitive.c) */
 ic_status ic_primitive_check(ic_surface *s, ic_error *err);
 /* Sets the natural domain and periodic flags of a parametric primitive. */

@@ -194,7 +194,7 @@ static int fill_params(ic_trace_point *pts, const double *phi, const int *mark, 
                     pts[i].knot_line |= 1 << s;
                     pts[i].knot_side = 1;
                 }
-            ic_nurbs_point(src[s].surface->nurbs, uv, S);
+            ic_surface_nurbs_point(src[s].surface, uv, S);
             ic_axpy3(d, S, -1.0, pts[i].xyz);
             if (!(ic_norm3(d) <= IC_EXACT_ON_NET * L))
                 return 1;

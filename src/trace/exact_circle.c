@@ -189,8 +189,7 @@ static int fill_params(ic_trace_point *pts, const double *phi, const int *mark, 
             for (int j = mark[i]; j >= 0 && j < nk && k[j].phi - k[mark[i]].phi <= EXACT_SAME_ANGLE;
                  j++)
                 if (k[j].sheet == s) {
-                    if (!(s == ss->seam_sheet && k[j].seam))
-                        snap(&src[s], &k[j], &uv[k[j].dir]);
+                    snap(&src[s], &k[j], &uv[k[j].dir]);
                     pts[i].knot_line |= 1 << s;
                     pts[i].knot_side = 1;
                 }

@@ -332,6 +332,12 @@ static void perturbed_nets(void)
     p2.x[2] += PERTURB; /* the profile no longer a circle */
     sphere_net(&n, &circle, &p2);
     refused("the sphere with its profile moved by 1e-9", &n);
+    /* a torus' tube, whose centre nothing else fixes, 1e-9 off a circle */
+    circle9(&p2);
+    curve_place(&p2, 0.4, 1.2, 0);
+    p2.x[3] += PERTURB;
+    revolve(&n, &circle, &p2, &NET_STANDARD, 0, 1);
+    refused("a torus with its tube's profile moved by 1e-9", &n);
 }
 
 /* A curve of the first count points of c over the knots given. */
@@ -356,22 +362,37 @@ static void partial_nets(void)
     part_of(&part, &profile, 3, (const double[]){0, 0, 0, 1, 1, 1}); /* south pole to equator */
     revolve(&n, &circle, &part, &NET_STANDARD, 0, 0);
     refused("the southern half of a sphere (a quarter profile)", &n);
+    /* from the south pole to 80 degrees north: the last arc's middle point
+     * where the tangents meet, r (1, tan 40 deg), weight cos 40 deg */
+    const double a = 40 * NET_PI / 180;
+    curve_set(&part, 2, 5, half, (const double[]){0, 1, 1, 1, cos(2 * a)},
+              (const double[]){-1, -1, 0, tan(a), sin(2 * a)},
+              (const double[]){1, sqrt(0.5), 1, cos(a), 1});
+    revolve(&n, &circle, &part, &NET_STANDARD, 0, 0);
+    refused("a sphere short of its north pole by 10 degrees", &n);
     net_curve tube;
     circle9(&tube);
     curve_place(&tube, 0.4, 1.2, 0);
     part_of(&part, &tube, 7, three); /* three quarters of the tube */
     revolve(&n, &circle, &part, &NET_STANDARD, 0, 0);
     refused("three quarters of a torus' tube", &n);
-    /* a circle going round twice: the 9 points, then 8 more again */
-    net_curve twice;
-    double k[20], x[17], y[17], w[17];
-    for (int i = 0; i < 17; i++)
-        x[i] = circle.x[i % 8], y[i] = circle.y[i % 8], w[i] = circle.w[i % 8];
-    for (int i = 0; i < 20; i++)
-        k[i] = i < 3 ? 0 : i >= 17 ? 1 : (double)((i - 1) / 2) / 8;
-    curve_set(&twice, 2, 17, k, x, y, w);
-    revolve(&n, &twice, &profile, &NET_STANDARD, 0, 0);
-    refused("a sphere whose rows go round twice", &n);
+    /* circles going round twice and four times: the 9 points, then 8 more
+     * again and again (four turns put the rows' points at a third and two
+     * thirds of the domain counterclockwise from the start, as one does) */
+    for (int turns = 2; turns <= 4; turns += 2) {
+        net_curve many;
+        double k[NET_MAX_KNOTS], x[NET_MAX_CTRL], y[NET_MAX_CTRL], w[NET_MAX_CTRL];
+        const int count = 8 * turns + 1;
+        for (int i = 0; i < count; i++)
+            x[i] = circle.x[i % 8], y[i] = circle.y[i % 8], w[i] = circle.w[i % 8];
+        for (int i = 0; i < count + 3; i++)
+            k[i] = i < 3 ? 0 : i >= count ? 1 : (double)((i - 1) / 2) / (4 * turns);
+        curve_set(&many, 2, count, k, x, y, w);
+        revolve(&n, &many, &profile, &NET_STANDARD, 0, 0);
+        refused(turns == 2 ? "a sphere whose rows go round twice"
+                           : "a sphere whose rows go round four times",
+                &n);
+    }
 }
 
 /* Profiles that are not a standard part: crossing the axis, overshooting

@@ -153,8 +153,7 @@ static int arc(ic_net_shape *sh, double tol)
     memcpy(pr->c, centre, sizeof pr->c);
     pr->r = r;
     const int poles = fabs(first[0]) <= tol && fabs(last[0]) <= tol;
-    if (fabs(centre[0]) <= tol && poles && fabs(fabs(last[1] - first[1]) - 2 * r) <= tol &&
-        fabs(turn - IC_PI) < NET_TURN_SLACK) {
+    if (fabs(centre[0]) <= tol && poles && fabs(turn - IC_PI) < NET_TURN_SLACK) {
         pr->pole[0] = pr->pole[1] = 1;
         set_axis(sh, IC_PRIM_SPHERE, centre[1]);
         sh->prim.radius = r;

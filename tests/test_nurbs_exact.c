@@ -98,6 +98,8 @@ static void add_circle(net_case *c, const net_place *pl, double rho, double z, i
     c->tangential[c->ncircles++] = tangential;
 }
 
+/* circle_variant: 0 the 9-point circle, 1 elevated, 2 a knot inserted at
+ * 0.1, 3 the 7-point circle. */
 static void sphere_sheet(sheet *s, const net_place *pl, double r, double zc, int circle_variant)
 {
     net_curve circle, profile;
@@ -106,14 +108,17 @@ static void sphere_sheet(sheet *s, const net_place *pl, double r, double zc, int
         curve_elevate(&circle);
     else if (circle_variant == 2)
         curve_insert(&circle, 0.1);
+    if (circle_variant == 3)
+        circle7(&circle);
     half_circle(&profile, r, zc);
     s->is_net = 1;
     revolve(&s->net, &circle, &profile, pl, 0, 0);
 }
 
 /* The plane z = h of the place as a square net of half width w, turned by
- * a about the axis and moved by (dx, dy) in it; interior knots at 0.3
- * along both parameters when `knotted`. */
+ * a about the axis and moved by (dx, dy) in it; `knotted` 1: an interior
+ * knot at 0.3 along both parameters (inserted: the map stays linear); 2: a
+ * kink at 0.5, the coordinates -w, -w/5, w (the map only C^0 there). */
 static void plane_sheet(sheet *s, const net_place *pl, double h, double w, double a, double dx,
                         double dy, int knotted)
 {
@@ -126,8 +131,14 @@ static void plane_sheet(sheet *s, const net_place *pl, double h, double w, doubl
     net_curve fu, fv;
     segment(&fu, -w, 0, w, 0);
     segment(&fv, -w, 0, w, 0);
-    if (knotted)
+    if (knotted == 1)
         curve_insert(&fu, 0.3), curve_insert(&fv, 0.3);
+    if (knotted == 2) {
+        static const double k[] = {0, 0, 0.5, 1, 1};
+        const double x[] = {-w, -w / 5, w}, y[] = {0, 0, 0};
+        curve_set(&fu, 1, 3, k, x, y, NULL);
+        fv = fu;
+    }
     s->is_net = 1;
     plane_grid(&s->net, &fu, &fv, NET_PI / 2, &q);
 }
@@ -156,6 +167,8 @@ enum {
     SPHERE_PLANE_NET,
     SPHERE_ELEVATED_PLANE,
     SPHERE_INSERTED_PLANE_KNOTTED,
+    SPHERE7_PLANE,
+    SPHERE_PLANE_KINKED,
     CYLINDER_SPHERE,
     CONE_PLANE_NET,
     TORUS_PLANE,
@@ -168,6 +181,7 @@ enum {
 static const char *const FAMILY[NFAMILIES] = {
     "sphere net, plane",          "sphere net, plane net",
     "elevated sphere net, plane", "knot-inserted sphere net, knotted plane net",
+    "sphere net of the 7-point circle, plane", "sphere net, plane net with a kink",
     "cylinder net, sphere",       "cone net, plane net",
     "torus net, plane",           "torus net, sphere net touching",
     "sphere net on a plane net at its pole", "sphere net turned on a plane net",
@@ -184,13 +198,18 @@ static void make_case(net_case *c, int family, const net_place *pl, harness_rng 
     case SPHERE_PLANE_NET:
     case SPHERE_ELEVATED_PLANE:
     case SPHERE_INSERTED_PLANE_KNOTTED:
+    case SPHERE7_PLANE:
+    case SPHERE_PLANE_KINKED:
         sphere_sheet(&c->s[0], pl, 1.0, 0.3,
-                     family == SPHERE_ELEVATED_PLANE ? 1 : family == SPHERE_INSERTED_PLANE_KNOTTED);
-        if (family == SPHERE_PLANE || family == SPHERE_ELEVATED_PLANE)
+                     family == SPHERE_ELEVATED_PLANE           ? 1
+                     : family == SPHERE_INSERTED_PLANE_KNOTTED ? 2
+                     : family == SPHERE7_PLANE                 ? 3
+                                                               : 0);
+        if (family == SPHERE_PLANE || family == SPHERE_ELEVATED_PLANE || family == SPHERE7_PLANE)
             c->s[1].prim = about(IC_PRIM_PLANE, pl, 0.3 + h);
         else
             plane_sheet(&c->s[1], pl, 0.3 + h, 1.5, a, 0.1, -0.1,
-                        family == SPHERE_INSERTED_PLANE_KNOTTED);
+                        family == SPHERE_INSERTED_PLANE_KNOTTED ? 1 : 2 * (family == SPHERE_PLANE_KINKED));
         add_circle(c, pl, sqrt(1 - h * h), 0.3 + h, 0);
         break;
     case CYLINDER_SPHERE: /* r = 0.7 over [-0.5, 0.8]; the sphere R = 1 at height 0.3 + h/20:

@@ -321,6 +321,11 @@ static void perturbed_nets(void)
     for (int k = 0; k < 3; k++)
         n.points[3 * at + k] += PERTURB * 2;
     refused("the sphere with a control point moved by 1e-9 of its size", &n);
+    /* the point (3, 2) is r (-1, 1, 0): moved along (1, 1, 0), normal to it,
+     * it leaves the least-squares profile and the rows' circle as they were */
+    sphere_net(&n, &circle, &profile);
+    n.points[3 * at] += PERTURB * 2, n.points[3 * at + 1] += PERTURB * 2;
+    refused("the sphere with a control point moved by 1e-9 of its size along its row", &n);
     sphere_net(&n, &circle, &profile);
     n.weights[at] *= 1 + PERTURB;
     refused("the sphere with a weight changed by 1e-9", &n);

@@ -1,11 +1,11 @@
 /* Planar affine nets (net_shape.h; docs/nurbs.md, "Recognised nets"): one
  * weight for all (a polynomial patch) and control points P_ij = O + f_i E1
  * + g_j E2 on a grid, E1, E2 unit and not parallel. Then S = O + f(u) E1 +
- * g(v) E2 with f = sum N_i f_i, g = sum M_j g_j (the bases sum to 1), and
- * with strictly increasing f_i (g_j) f (g) strictly increases (its
- * derivative is a positive combination of their differences): the patch is
- * exactly the parallelogram O + [f(u0), f(u1)] E1 + [g(v0), g(v1)] E2, and
- * one to one onto it. */
+ * g(v) E2 with f = sum N_i f_i, g = sum M_j g_j (the bases sum to 1). With
+ * f and g strictly monotone (the Bernstein coefficients of their
+ * derivatives on every span, net_pieces.c) the patch is exactly the
+ * parallelogram O + [f(u0), f(u1)] E1 + [g(v0), g(v1)] E2, and one to one
+ * onto it. */
 #include "net_shape.h"
 #include "common/vec3.h"
 
@@ -25,7 +25,7 @@ static void point(const ic_nurbs_patch *pt, int i, int j, double P[3])
 
 /* The edge from P_00 along dir: its unit direction E and the coordinates
  * of its control points along it (into the curve), each within tol of the
- * line and strictly increasing. */
+ * line. */
 static int edge(const ic_nurbs_patch *pt, int dir, double tol, double E[3], ic_net_curve *c)
 {
     double O[3], P[3], w[3];
@@ -40,7 +40,7 @@ static int edge(const ic_nurbs_patch *pt, int dir, double tol, double E[3], ic_n
         ic_axpy3(w, P, -1.0, O);
         const double f = ic_dot3(w, E);
         ic_axpy3(w, w, -f, E);
-        if (!(ic_norm3(w) <= tol) || (i > 0 && !(f - c->hom[i - 1][0] > tol)))
+        if (!(ic_norm3(w) <= tol))
             return 0;
         c->hom[i][0] = f, c->hom[i][1] = 0, c->hom[i][2] = 1;
     }

@@ -501,6 +501,17 @@ static void check_fit(traced *t, const net_case *c)
 
 /* ---- against the general path ---- */
 
+/* The way the curve runs about the case's axis at its first point: +1
+ * counterclockwise, -1 clockwise. */
+static int turning(const net_case *c, const ic_trace_curve *cv, int i)
+{
+    double r[3], m[3];
+    for (int k = 0; k < 3; k++)
+        r[k] = cv->points[0].xyz[k] - c->centre[i][k];
+    net_cross(m, r, cv->points[0].t);
+    return dot3(m, c->axis) > 0 ? 1 : -1;
+}
+
 static void check_against_general(traced *t, const net_case *c)
 {
     const ic_trace_result *g = t->res[0], *x = t->res[1];
@@ -526,6 +537,9 @@ static void check_against_general(traced *t, const net_case *c)
               "%s: circle %d: the general path's points on it, closed %d/%d, tangential %d/%d, "
               "shape %s/%s", c->name, i, gc->closed, xc->closed, gc->tangential, xc->tangential,
               ic_shape_name(gc->shape), ic_shape_name(xc->shape));
+        CHECK(gc->tangential || turning(c, gc, i) == turning(c, xc, i),
+              "%s: circle %d runs the general path's way about the axis (%+d, exact %+d)",
+              c->name, i, turning(c, gc, i), turning(c, xc, i));
         CHECK(fabs(gc->length - xc->length) <= GENERAL_LENGTH * xc->length,
               "%s: circle %d: lengths %.17g (general), %.17g (exact)", c->name, i, gc->length,
               xc->length);

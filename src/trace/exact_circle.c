@@ -7,6 +7,7 @@
 #include "exact_profile.h"
 #include "common/mathconst.h"
 #include "common/vec3.h"
+#include "local/local_internal.h"
 #include "surface/surface_internal.h"
 
 #include <math.h>
@@ -236,4 +237,38 @@ int ic_exact_circle_points(ic_exact_circle *c, int n, const ic_exact_source src[
     }
     *pts = p;
     return 0;
+}
+
+/* Sheet s's normal at the point: a parametric sheet's R_u x R_v at its
+ * parameters, an implicit one's gradient (the pair's spaces of order 2: no
+ * allocation). 0, or -1 where it cannot be evaluated. */
+static int sheet_normal(ic_pair *pair, int s, const ic_trace_point *p, double n[3])
+{
+    ic_surface *S = ic_pair_surface(pair, s);
+    const int parametric = ic_surface_get_kind(S) == IC_PARAMETRIC;
+    const ic_jet_space *sp = pair->near[parametric ? 0 : 1];
+    const int len = ic_jet_space_len(sp);
+    double t[3 * 10];
+    if (3 * len > 30 || ic_surface_taylor(S, t, parametric ? p->params[s] : p->xyz, sp, NULL) != IC_OK)
+        return -1;
+    if (!parametric) {
+        for (int k = 0; k < 3; k++)
+            n[k] = t[ic_jet_index(sp, (const int[]){k == 0, k == 1, k == 2})];
+        return 0;
+    }
+    const int iu = ic_jet_index(sp, (const int[]){1, 0}), iv = ic_jet_index(sp, (const int[]){0, 1});
+    const double Ru[3] = {t[iu], t[len + iu], t[2 * len + iu]};
+    const double Rv[3] = {t[iv], t[len + iv], t[2 * len + iv]};
+    ic_cross3(n, Ru, Rv);
+    return 0;
+}
+
+void ic_exact_circle_orient(ic_pair *pair, ic_trace_point *pts, int n)
+{
+    double a[3], b[3], t[3];
+    if (n < 2 || sheet_normal(pair, 0, &pts[0], a) != 0 || sheet_normal(pair, 1, &pts[0], b) != 0)
+        return;
+    ic_cross3(t, a, b);
+    if (ic_dot3(t, pts[0].t) < 0)
+        ic_trace_points_reverse(pts, n);
 }

@@ -47,4 +47,9 @@ int ic_exact_circle_knots(const ic_exact_circle *c, const ic_exact_source src[2]
 int ic_exact_circle_points(ic_exact_circle *c, int n, const ic_exact_source src[2], double L,
                            ic_trace_point **pts, int *npts);
 
+/* A transversal circle's points turned, when they run against it, to run
+ * along N_A x N_B at its start (a net's normal R_u x R_v, an implicit
+ * surface's gradient), as the general path's curves run. */
+void ic_exact_circle_orient(ic_pair *pair, ic_trace_point *pts, int n);
+
 #endif

@@ -278,7 +278,7 @@ static ic_exact_circle circle_of(const axis *ax, const piece_found *f)
 /* Every circle's points (pts[i], np[i]; NULL for a contact point): 0, 1
  * where the general path must trace (a patch's parameters cannot follow a
  * circle), -1 out of memory; nothing kept unless 0. */
-static int circles_traced(const axis *ax, const piece_found *found, int nf,
+static int circles_traced(ic_pair *pair, const axis *ax, const piece_found *found, int nf,
                           const ic_exact_source src[2], const ic_trace_options *opt, double L,
                           ic_trace_point *pts[IC_PROFILE_MAX_MEETINGS], int np[IC_PROFILE_MAX_MEETINGS])
 {
@@ -289,6 +289,10 @@ static int circles_traced(const axis *ax, const piece_found *found, int nf,
             continue;
         ic_exact_circle c = circle_of(ax, &found[i]);
         st = ic_exact_circle_points(&c, circle_arcs(opt, found[i].rho), src, L, &pts[i], &np[i]);
+        /* on recognised nets, the way the general path runs (two implicit
+         * primitives keep theirs: counterclockwise about the axis) */
+        if (st == 0 && !found[i].tangent && (src[0].net || src[1].net))
+            ic_exact_circle_orient(pair, pts[i], np[i]);
     }
     for (int i = 0; st != 0 && i < nf; i++) {
         free(pts[i]);
@@ -394,7 +398,7 @@ ic_status ic_trace_exact_revolution(ic_trace_result *r, ic_pair *pair,
             return IC_OK; /* the general path reports the budget */
     ic_trace_point *pts[IC_PROFILE_MAX_MEETINGS];
     int np[IC_PROFILE_MAX_MEETINGS];
-    const int st = circles_traced(&ax, found, nf, src, &opt, L, pts, np);
+    const int st = circles_traced(pair, &ax, found, nf, src, &opt, L, pts, np);
     if (st < 0)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory tracing a circle");
     if (st > 0)

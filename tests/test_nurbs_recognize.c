@@ -36,6 +36,14 @@
 
 static double worst_shape, worst_param;
 
+/* The surface's recognised shape, or NULL (none, or out of memory: no test
+ * here runs short of it). */
+static const ic_net_shape *net_shape(ic_surface *S)
+{
+    const ic_net_shape *sh = NULL;
+    return ic_surface_net_shape(S, &sh) == 0 ? sh : NULL;
+}
+
 typedef enum { SPHERE, CYLINDER, CONE, TORUS, DISC, ANNULUS, NFAMILIES } family;
 static const char *const FAMILY[NFAMILIES] = {"sphere", "cylinder", "cone",
                                               "torus",  "disc",     "annulus"};
@@ -212,7 +220,7 @@ static void revolved_case(family f, int circle_variant, int profile_variant, int
     ic_error err;
     if (!REQUIRE(net_surface(&S, &n, &err) == IC_OK, "%s: %s", name, err.message))
         return;
-    const ic_net_shape *sh = ic_surface_net_shape(S);
+    const ic_net_shape *sh = net_shape(S);
     double off = INFINITY;
     if (REQUIRE(sh && sh->around == around && shape_matches(sh, &e, &pl, &off),
                 "%s: recognised (%s), kind %d (want %d), off by %.3g of its size", name,
@@ -253,7 +261,7 @@ static void planar_case(int variant_u, int variant_v, double skew, harness_rng *
     ic_error err;
     if (!REQUIRE(net_surface(&S, &n, &err) == IC_OK, "%s: %s", name, err.message))
         return;
-    const ic_net_shape *sh = ic_surface_net_shape(S);
+    const ic_net_shape *sh = net_shape(S);
     if (REQUIRE(sh && sh->kind == IC_NET_PLANAR && sh->prim.kind == IC_PRIM_PLANE,
                 "%s: recognised as a parallelogram", name)) {
         double corner[3], e0[3], e1[3], c[3], normal[3];
@@ -291,7 +299,7 @@ static void refused(const char *name, const net_patch *n)
     ic_error err;
     if (!REQUIRE(net_surface(&S, n, &err) == IC_OK, "%s: %s", name, err.message))
         return;
-    CHECK(ic_surface_net_shape(S) == NULL, "%s: not recognised", name);
+    CHECK(net_shape(S) == NULL, "%s: not recognised", name);
     ic_surface_free(S);
 }
 
@@ -313,7 +321,7 @@ static void perturbed_nets(void)
     ic_error err;
     /* the control: the same net untouched is a sphere */
     if (REQUIRE(net_surface(&S, &n, &err) == IC_OK, "the sphere: %s", err.message))
-        CHECK(ic_surface_net_shape(S) && ic_surface_net_shape(S)->prim.kind == IC_PRIM_SPHERE,
+        CHECK(net_shape(S) && net_shape(S)->prim.kind == IC_PRIM_SPHERE,
               "the sphere's net, untouched, is recognised");
     ic_surface_free(S);
     const int at = 3 * 5 + 2; /* control point (3, 2), on the equator */
@@ -453,9 +461,9 @@ static void restricted_domain(void)
     const double part[2][2] = {{0, 0.5}, {0, 1}}, whole[2][2] = {{0, 1}, {0, 1}};
     const int periodic[2] = {0, 0};
     CHECK(ic_surface_set_domain(S, part, periodic, &err) == IC_OK &&
-              ic_surface_net_shape(S) == NULL,
+              net_shape(S) == NULL,
           "a sphere's net over half its u domain is not recognised");
-    CHECK(ic_surface_set_domain(S, whole, periodic, &err) == IC_OK && ic_surface_net_shape(S),
+    CHECK(ic_surface_set_domain(S, whole, periodic, &err) == IC_OK && net_shape(S),
           "and over all of it again it is");
     ic_surface_free(S);
 }

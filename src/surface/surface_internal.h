@@ -44,9 +44,10 @@ double *ic_surface_work(ic_surface *s, int slot, size_t len);
 #include "surface_jets.h"
 
 /* A NURBS surface's recognised shape (net_shape.h; surface_net.c), found
- * on first use and kept; NULL for any other surface, a patch restricted to
- * part of its knots' domain, a patch not recognised, or out of memory. */
-const ic_net_shape *ic_surface_net_shape(ic_surface *s);
+ * on first use and kept, in *out: NULL for any other surface, a patch
+ * restricted to part of its knots' domain, a patch not recognised. 0, or -1
+ * out of memory (then tried again on the next call). */
+int ic_surface_net_shape(ic_surface *s, const ic_net_shape **out);
 
 /* A NURBS surface's point at uv, the same bits as the constant terms of
  * its Taylor coefficients there (ic_nurbs_point; a forced knot side

@@ -2,17 +2,19 @@
  * recognised once, on first use, for the patch over its whole domain. */
 #include "surface_internal.h"
 
-const ic_net_shape *ic_surface_net_shape(ic_surface *s)
+int ic_surface_net_shape(ic_surface *s, const ic_net_shape **out)
 {
+    *out = NULL;
     if (!s || s->backend != BACKEND_NURBS)
-        return NULL;
+        return 0;
     for (int d = 0; d < 2; d++) /* a patch cut to part of its domain is a part */
         if (s->domain[d][0] != s->nurbs->domain[d][0] || s->domain[d][1] != s->nurbs->domain[d][1])
-            return NULL;
+            return 0;
     if (!s->net_tried) {
         if (ic_net_recognize(s->nurbs, &s->net_shape) != 0)
-            return NULL; /* out of memory: tried again next time */
+            return -1;
         s->net_tried = 1;
     }
-    return s->net_shape;
+    *out = s->net_shape;
+    return 0;
 }

@@ -377,8 +377,12 @@ ic_status ic_trace_exact_revolution(ic_trace_result *r, ic_pair *pair,
 {
     *done = 0;
     ic_exact_source src[2];
-    if (!user_opt->exact_paths || !ic_exact_sources(pair, src) || !revolves(&src[0]) ||
-        !revolves(&src[1]))
+    if (!user_opt->exact_paths)
+        return IC_OK;
+    const int sources = ic_exact_sources(pair, src);
+    if (sources < 0)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory recognising a NURBS patch");
+    if (sources == 0 || !revolves(&src[0]) || !revolves(&src[1]))
         return IC_OK;
     const int nets = src[0].net || src[1].net;
     if (!nets && !user_opt->has_box) /* two implicit surfaces are sought in a box */

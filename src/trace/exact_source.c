@@ -9,6 +9,8 @@
 
 #include <string.h>
 
+/* 1, 0 (neither an implicit primitive nor a recognised patch), or -1 out
+ * of memory. */
 static int source_of(ic_surface *s, ic_exact_source *out)
 {
     memset(out, 0, sizeof *out);
@@ -19,7 +21,9 @@ static int source_of(ic_surface *s, ic_exact_source *out)
                sizeof out->frame);
         return 1;
     }
-    const ic_net_shape *sh = ic_surface_net_shape(s);
+    const ic_net_shape *sh;
+    if (ic_surface_net_shape(s, &sh) != 0)
+        return -1;
     if (!sh)
         return 0;
     out->prim = sh->prim;
@@ -30,8 +34,11 @@ static int source_of(ic_surface *s, ic_exact_source *out)
 
 int ic_exact_sources(ic_pair *pair, ic_exact_source src[2])
 {
-    return !ic_pair_is_self(pair) && source_of(ic_pair_surface(pair, 0), &src[0]) &&
-           source_of(ic_pair_surface(pair, 1), &src[1]);
+    if (ic_pair_is_self(pair))
+        return 0;
+    const int a = source_of(ic_pair_surface(pair, 0), &src[0]);
+    const int b = a > 0 ? source_of(ic_pair_surface(pair, 1), &src[1]) : a;
+    return b;
 }
 
 int ic_exact_net_coaxial(const ic_exact_source *src, const double o[3], const double e[3],

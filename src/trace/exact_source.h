@@ -31,9 +31,9 @@ typedef struct {
     ic_surface *surface;
 } ic_exact_source;
 
-/* Both surfaces of the pair as sources: 1, or 0 when either is neither an
+/* Both surfaces of the pair as sources: 1, 0 when either is neither an
  * implicit primitive nor a NURBS patch recognised whole (or the pair is a
- * self-intersection). */
+ * self-intersection), -1 out of memory (recognising a patch). */
 int ic_exact_sources(ic_pair *pair, ic_exact_source src[2]);
 
 /* Where the circle of radius rho about the line through centre along the

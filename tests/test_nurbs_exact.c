@@ -15,6 +15,7 @@
 
 #include "harness.h"
 #include "nurbs_nets.h"
+#include "trace/exact_source.h"
 
 /* relative to the problem's size L: the exact path's points, centres,
  * contact points and lengths against the closed forms here: a few roundings
@@ -37,6 +38,9 @@
  * "The whole intersection", step 4), Newton's on a double root, which stops
  * about sqrt(eps) L = 1.5e-8 L away (measured 1.45e-8 L) */
 #define GENERAL_APPROX 1e-7
+/* relative to the period: the parameters of one point before and after a
+ * full turn, a whole period apart but for the inversion's ulps */
+#define TURN_REL 1e-12
 
 static const char NETS[] = "closed form: NURBS nets recognised as coaxial surfaces of revolution";
 static double worst_exact, worst_on_net;
@@ -685,9 +689,69 @@ static void circle_off_patch(void)
     release(&t);
 }
 
+/* ---- the steps another exact path would take (exact_source.h) ---- */
+
+/* What a cylinder's net (r = 0.7 over heights [-0.5, 0.8]) and a square
+ * plane's net (half width 1 at height 0) cover, point by point, and the
+ * parameters of the points of an ellipse, a plane's oblique section of the
+ * cylinder, on its net: back on the net at each, continued across the seam
+ * (one period in all). */
+static void generic_steps(void)
+{
+    net_case c;
+    memset(&c, 0, sizeof c);
+    cylinder_sheet(&c.s[0], &NET_STANDARD, 0.7, -0.5, 0.8);
+    plane_sheet(&c.s[1], &NET_STANDARD, 0, 1, 0, 0, 0, 0);
+    traced t;
+    ic_error err;
+    memset(&t, 0, sizeof t);
+    t.L = nets_size(&c);
+    ic_exact_source src[2];
+    if (!REQUIRE(net_surface(&t.S[0], &c.s[0].net, &err) == IC_OK &&
+                     net_surface(&t.S[1], &c.s[1].net, &err) == IC_OK &&
+                     ic_pair_new(&t.pair, t.S[0], t.S[1], &err) == IC_OK &&
+                     ic_exact_sources(t.pair, src) == 1,
+                 "the cylinder's and the plane's nets as sources")) {
+        release(&t);
+        return;
+    }
+    const double m = IC_EXACT_COVER_MARGIN * t.L;
+    const double at[6][3] = {{0.7, 0, 0},     {0, 0.7, 0.8 + 10 * m}, {0, -0.7, 0.8 - m / 10},
+                             {0.2, 0.3, 0},   {1 + 10 * m, 0, 0},     {0, 1 - m / 10, 0}};
+    const int want[6] = {1, 0, -1, 1, 0, -1};
+    for (int k = 0; k < 6; k++)
+        CHECK(ic_exact_covers_point(&src[k / 3], at[k], m) == want[k],
+              "point %d on %s: covered %d, want %d", k, k < 3 ? "the cylinder" : "the plane",
+              ic_exact_covers_point(&src[k / 3], at[k], m), want[k]);
+    enum { N = 65 };
+    static ic_trace_point pts[N];
+    for (int k = 0; k < N; k++) {
+        const double a = 2 * NET_PI * k / (N - 1) + 0.1;
+        memset(&pts[k], 0, sizeof pts[k]);
+        pts[k].xyz[0] = 0.7 * cos(a), pts[k].xyz[1] = 0.7 * sin(a), pts[k].xyz[2] = 0.21 * cos(a);
+    }
+    const ic_exact_source cyl[2] = {src[0], {.net = NULL}};
+    if (REQUIRE(ic_exact_curve_params(cyl, pts, N, t.L) == 0, "the ellipse's parameters")) {
+        double off = 0;
+        int up = 1;
+        for (int k = 0; k < N; k++) {
+            double x[3];
+            off = fmax(off, ic_surface_eval(t.S[0], x, pts[k].params[0], &err) == IC_OK
+                                ? dist3(x, pts[k].xyz) / t.L
+                                : INFINITY);
+            up &= k == 0 || pts[k].params[0][0] > pts[k - 1].params[0][0];
+        }
+        CHECK(off <= ON_NET_REL && up && fabs(pts[N - 1].params[0][0] - pts[0].params[0][0] - 1) <= TURN_REL,
+              "the ellipse on the net: %.3g L off, increasing %d, %.17g periods", off, up,
+              pts[N - 1].params[0][0] - pts[0].params[0][0]);
+    }
+    release(&t);
+}
+
 int main(void)
 {
     families();
+    generic_steps();
     fall_back_cases();
     circle_off_patch();
     printf("worst: %.3g L from the closed forms, %.3g L from the nets\n", worst_exact, worst_on_net);

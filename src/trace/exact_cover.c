@@ -93,3 +93,18 @@ int ic_exact_covers(const ic_exact_source *src, const double centre[3], const do
     return src->net->kind == IC_NET_PLANAR ? planar_side(src->net, centre, rho, margin)
                                            : revolved_side(src->net, centre, rho, margin);
 }
+
+int ic_exact_covers_point(const ic_exact_source *src, const double x[3], double margin)
+{
+    const ic_net_shape *sh = src->net;
+    if (!sh)
+        return 1;
+    if (sh->kind == IC_NET_PLANAR)
+        return planar_side(sh, x, 0, margin);
+    /* the point as a circle about the net's own axis */
+    double w[3], c[3];
+    ic_axpy3(w, x, -1.0, sh->origin);
+    ic_axpy3(c, sh->origin, ic_dot3(w, sh->frame[2]), sh->frame[2]);
+    ic_axpy3(w, x, -1.0, c);
+    return revolved_side(sh, c, ic_norm3(w), margin);
+}

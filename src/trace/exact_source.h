@@ -44,6 +44,21 @@ int ic_exact_sources(ic_pair *pair, ic_exact_source src[2]);
 int ic_exact_covers(const ic_exact_source *src, const double centre[3], const double e[3],
                     double rho, double margin);
 
+/* The same for a point x of the source's surface (any curve's point): 1
+ * inside what the patch covers by more than the margin, 0 outside by
+ * more, -1 near its edge; 1 for an implicit primitive. */
+int ic_exact_covers_point(const ic_exact_source *src, const double x[3], double margin);
+
+/* The parameters of any curve's points on the recognised patches of the
+ * pair (a circle's are best made by ic_exact_circle_points, which adds the
+ * knot lines' points): each point's by inverting its patch's structure, a
+ * wrapping parameter continued from the point before by whole periods,
+ * every point checked on its patch (IC_EXACT_ON_NET L). 0, or 1 where the
+ * general path must trace (a point with no parameters, on an axis; a point
+ * off its patch). Knot-line points are the caller's to add (exact_circle.c
+ * shows how). */
+int ic_exact_curve_params(const ic_exact_source src[2], ic_trace_point *pts, int n, double L);
+
 /* Whether a recognised revolved net's axis is the line through o along e
  * (within IC_EXACT_COAXIAL, lengths relative to L): its circles about that
  * line are then its parameter lines. */

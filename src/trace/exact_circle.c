@@ -99,13 +99,15 @@ static int by_angle(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* The equal arcs and the crossings merged by angle into pts (n + nk + 1
- * room), phi[] each point's angle, mark[] its first crossing or -1; the
- * first point again at the end. Returns the count. */
+/* The equal arcs and the crossings merged by angle into pts (room for
+ * n + nk + 1, and n more where nk > 0), phi[] each point's angle, mark[]
+ * its first crossing or -1; the first point again at the end. Returns the
+ * count. */
 static int merge(const ic_exact_circle *c, int n, const ic_exact_knot *k, int nk,
                  ic_trace_point *pts, double *phi, int *mark)
 {
-    ic_trace_point *arcs = pts + nk + 1; /* the equal arcs at the end of the room */
+    /* the equal arcs in place, or after the room when crossings come in */
+    ic_trace_point *arcs = nk ? pts + nk + 1 : pts;
     equal_arcs(arcs, n, c);
     int m = 0, j = 0;
     for (int i = 0; i <= n; i++) {
@@ -118,7 +120,8 @@ static int merge(const ic_exact_circle *c, int n, const ic_exact_knot *k, int nk
         }
         if (i == n)
             break;
-        memmove(&pts[m], &arcs[i], sizeof pts[m]); /* arcs[i] lies at or after pts + m */
+        if (&arcs[i] != &pts[m]) /* arcs[i] lies after pts + m */
+            memcpy(&pts[m], &arcs[i], sizeof pts[m]);
         phi[m] = at, mark[m] = -1;
         for (; j < nk && k[j].phi <= at + EXACT_SAME_ANGLE; j++)
             if (mark[m] < 0)
@@ -220,7 +223,7 @@ int ic_exact_circle_points(ic_exact_circle *c, int n, const ic_exact_source src[
             k[i].phi = 0;
     qsort(k, (size_t)nk, sizeof *k, by_angle);
     const size_t room = (size_t)(n + nk + 1);
-    ic_trace_point *p = malloc(sizeof *p * (room + (size_t)n));
+    ic_trace_point *p = malloc(sizeof *p * (room + (nk ? (size_t)n : 0)));
     double *phi = malloc(sizeof *phi * room);
     int *mark = malloc(sizeof *mark * room);
     int out = !p || !phi || !mark ? -1 : 0;

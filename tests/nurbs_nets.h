@@ -110,7 +110,8 @@ static inline void curve_elevate(net_curve *c)
             const int lo = s * p + i - 1, hi = s * p + i;
             double h[3] = {0, 0, 0};
             if (i > 0)
-                h[0] += a * c->w[lo] * c->x[lo], h[1] += a * c->w[lo] * c->y[lo], h[2] += a * c->w[lo];
+                h[0] += a * c->w[lo] * c->x[lo], h[1] += a * c->w[lo] * c->y[lo],
+                    h[2] += a * c->w[lo];
             if (i <= p)
                 h[0] += (1 - a) * c->w[hi] * c->x[hi], h[1] += (1 - a) * c->w[hi] * c->y[hi],
                     h[2] += (1 - a) * c->w[hi];

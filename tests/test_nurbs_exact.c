@@ -182,14 +182,19 @@ enum {
     DISC_SPHERE,
     NFAMILIES
 };
-static const char *const FAMILY[NFAMILIES] = {
-    "sphere net, plane",          "sphere net, plane net",
-    "elevated sphere net, plane", "knot-inserted sphere net, knotted plane net",
-    "sphere net of the 7-point circle, plane", "sphere net, plane net with a kink",
-    "cylinder net, sphere",       "cone net, plane net",
-    "torus net, plane",           "torus net, sphere net touching",
-    "sphere net on a plane net at its pole", "sphere net turned on a plane net",
-    "disc net, sphere"};
+static const char *const FAMILY[NFAMILIES] = {"sphere net, plane",
+                                              "sphere net, plane net",
+                                              "elevated sphere net, plane",
+                                              "knot-inserted sphere net, knotted plane net",
+                                              "sphere net of the 7-point circle, plane",
+                                              "sphere net, plane net with a kink",
+                                              "cylinder net, sphere",
+                                              "cone net, plane net",
+                                              "torus net, plane",
+                                              "torus net, sphere net touching",
+                                              "sphere net on a plane net at its pole",
+                                              "sphere net turned on a plane net",
+                                              "disc net, sphere"};
 
 static void make_case(net_case *c, int family, const net_place *pl, harness_rng *g)
 {
@@ -212,8 +217,9 @@ static void make_case(net_case *c, int family, const net_place *pl, harness_rng 
         if (family == SPHERE_PLANE || family == SPHERE_ELEVATED_PLANE || family == SPHERE7_PLANE)
             c->s[1].prim = about(IC_PRIM_PLANE, pl, 0.3 + h);
         else
-            plane_sheet(&c->s[1], pl, 0.3 + h, 1.5, a, 0.1, -0.1,
-                        family == SPHERE_INSERTED_PLANE_KNOTTED ? 1 : 2 * (family == SPHERE_PLANE_KINKED));
+            plane_sheet(
+                &c->s[1], pl, 0.3 + h, 1.5, a, 0.1, -0.1,
+                family == SPHERE_INSERTED_PLANE_KNOTTED ? 1 : 2 * (family == SPHERE_PLANE_KINKED));
         add_circle(c, pl, sqrt(1 - h * h), 0.3 + h, 0);
         break;
     case CYLINDER_SPHERE: /* r = 0.7 over [-0.5, 0.8]; the sphere R = 1 at height 0.3 + h/20:
@@ -238,7 +244,8 @@ static void make_case(net_case *c, int family, const net_place *pl, harness_rng 
         for (int sg = -1; sg <= 1; sg += 2)
             add_circle(c, pl, 1.2 + sg * sqrt(0.16 - h * h / 9), 0.1 + h / 3, 0);
         break;
-    case TORUS_SPHERE_NETS: /* the peer benchmark's case: the sphere R + r about the torus' centre */
+    case TORUS_SPHERE_NETS: /* the peer benchmark's case: the sphere R + r about the torus' centre
+                             */
         torus_sheet(&c->s[0], pl, 2, 0.5, 0);
         sphere_sheet(&c->s[1], pl, 2.5, 0, 0);
         add_circle(c, pl, 2.5, 0, 1);
@@ -310,9 +317,9 @@ static int trace_case(traced *t, const net_case *c, int general)
     memset(t, 0, sizeof *t);
     t->L = nets_size(c);
     for (int s = 0; s < 2; s++) {
-        const ic_status st = c->s[s].is_net ? net_surface(&t->S[s], &c->s[s].net, &err)
-                                            : ic_surface_new_primitive(&t->S[s], &c->s[s].prim,
-                                                                       IC_IMPLICIT, &err);
+        const ic_status st =
+            c->s[s].is_net ? net_surface(&t->S[s], &c->s[s].net, &err)
+                           : ic_surface_new_primitive(&t->S[s], &c->s[s].prim, IC_IMPLICIT, &err);
         if (!REQUIRE(st == IC_OK, "%s: surface %d: %s", c->name, s, err.message))
             return 0;
     }
@@ -464,8 +471,8 @@ static void check_exact(traced *t, const net_case *c)
         worst_on_net = fmax(worst_on_net, on);
         CHECK(off <= EXACT_REL && len <= EXACT_REL && cv->closed && cv->shape == IC_SHAPE_CIRCLE &&
                   cv->tangential == c->tangential[i],
-              "%s: circle %d: %.3g L off, length %.3g L off, closed %d, %s, tangential %d",
-              c->name, i, off, len, cv->closed, ic_shape_name(cv->shape), cv->tangential);
+              "%s: circle %d: %.3g L off, length %.3g L off, closed %d, %s, tangential %d", c->name,
+              i, off, len, cv->closed, ic_shape_name(cv->shape), cv->tangential);
         CHECK(on <= ON_NET_REL, "%s: circle %d: the nets at the points' parameters %.3g L off",
               c->name, i, on);
         for (int s = 0; s < 2; s++)
@@ -498,8 +505,8 @@ static void check_fit(traced *t, const net_case *c)
             CHECK(!c->s[s].is_net || (f->pcurves[s].ncontrol > 0 && !f->pcurve_dropped[s]),
                   "%s: curve %d: net %d's pcurve kept (dropped %d)", c->name, k, s,
                   f->pcurve_dropped[s]);
-        CHECK(f->fit_error <= rep->fit_tol, "%s: curve %d: fit error %.3g, tolerance %.3g",
-              c->name, k, f->fit_error, rep->fit_tol);
+        CHECK(f->fit_error <= rep->fit_tol, "%s: curve %d: fit error %.3g, tolerance %.3g", c->name,
+              k, f->fit_error, rep->fit_tol);
     }
 }
 
@@ -525,8 +532,8 @@ static void check_against_general(traced *t, const net_case *c)
     const int n = ic_trace_result_num_curves(g);
     CHECK(n == ic_trace_result_num_curves(x) &&
               ic_trace_result_num_specials(g) == ic_trace_result_num_specials(x),
-          "%s: the general path's %d curves and %d points, the exact path's %d and %d", c->name,
-          n, ic_trace_result_num_specials(g), ic_trace_result_num_curves(x),
+          "%s: the general path's %d curves and %d points, the exact path's %d and %d", c->name, n,
+          ic_trace_result_num_specials(g), ic_trace_result_num_curves(x),
           ic_trace_result_num_specials(x));
     for (int k = 0; k < n; k++) {
         const ic_trace_curve *gc = ic_trace_result_curve(g, k), *xc = NULL;
@@ -539,11 +546,12 @@ static void check_against_general(traced *t, const net_case *c)
         CHECK(off_circle(c, gc, i) <= GENERAL_ON_EXACT * t->L && gc->closed == xc->closed &&
                   gc->tangential == xc->tangential && gc->shape == xc->shape,
               "%s: circle %d: the general path's points on it, closed %d/%d, tangential %d/%d, "
-              "shape %s/%s", c->name, i, gc->closed, xc->closed, gc->tangential, xc->tangential,
+              "shape %s/%s",
+              c->name, i, gc->closed, xc->closed, gc->tangential, xc->tangential,
               ic_shape_name(gc->shape), ic_shape_name(xc->shape));
         CHECK(gc->tangential || turning(c, gc, i) == turning(c, xc, i),
-              "%s: circle %d runs the general path's way about the axis (%+d, exact %+d)",
-              c->name, i, turning(c, gc, i), turning(c, xc, i));
+              "%s: circle %d runs the general path's way about the axis (%+d, exact %+d)", c->name,
+              i, turning(c, gc, i), turning(c, xc, i));
         CHECK(fabs(gc->length - xc->length) <= GENERAL_LENGTH * xc->length,
               "%s: circle %d: lengths %.17g (general), %.17g (exact)", c->name, i, gc->length,
               xc->length);
@@ -552,7 +560,8 @@ static void check_against_general(traced *t, const net_case *c)
      * path's point is approximate: its analysis is made beside the pole) */
     for (int k = 0; k < ic_trace_result_num_specials(g) && k < ic_trace_result_num_specials(x);
          k++) {
-        const ic_trace_special *a = ic_trace_result_special(g, k), *b = ic_trace_result_special(x, k);
+        const ic_trace_special *a = ic_trace_result_special(g, k),
+                               *b = ic_trace_result_special(x, k);
         const double tol = (a->approximate ? GENERAL_APPROX : GENERAL_ON_EXACT) * t->L;
         CHECK(a->type == b->type && a->nbranches == b->nbranches && dist3(a->xyz, b->xyz) <= tol,
               "%s: point %d: %s (general), %s (exact), %.3g apart", c->name, k,
@@ -611,8 +620,10 @@ static void fall_back(const net_case *c)
 {
     traced t;
     if (trace_case(&t, c, 1))
-        CHECK(same_results(t.res[0], t.res[1]), "%s: left to the general path, exactly what it "
-              "gives (%d curves; method %s)", c->name, ic_trace_result_num_curves(t.res[1]),
+        CHECK(same_results(t.res[0], t.res[1]),
+              "%s: left to the general path, exactly what it "
+              "gives (%d curves; method %s)",
+              c->name, ic_trace_result_num_curves(t.res[1]),
               ic_trace_result_report(t.res[1])->method);
     release(&t);
 }
@@ -716,8 +727,8 @@ static void generic_steps(void)
         return;
     }
     const double m = IC_EXACT_COVER_MARGIN * t.L;
-    const double at[6][3] = {{0.7, 0, 0},     {0, 0.7, 0.8 + 10 * m}, {0, -0.7, 0.8 - m / 10},
-                             {0.2, 0.3, 0},   {1 + 10 * m, 0, 0},     {0, 1 - m / 10, 0}};
+    const double at[6][3] = {{0.7, 0, 0},   {0, 0.7, 0.8 + 10 * m}, {0, -0.7, 0.8 - m / 10},
+                             {0.2, 0.3, 0}, {1 + 10 * m, 0, 0},     {0, 1 - m / 10, 0}};
     const int want[6] = {1, 0, -1, 1, 0, -1};
     for (int k = 0; k < 6; k++)
         CHECK(ic_exact_covers_point(&src[k / 3], at[k], m) == want[k],
@@ -741,7 +752,8 @@ static void generic_steps(void)
                                 : INFINITY);
             up &= k == 0 || pts[k].params[0][0] > pts[k - 1].params[0][0];
         }
-        CHECK(off <= ON_NET_REL && up && fabs(pts[N - 1].params[0][0] - pts[0].params[0][0] - 1) <= TURN_REL,
+        CHECK(off <= ON_NET_REL && up &&
+                  fabs(pts[N - 1].params[0][0] - pts[0].params[0][0] - 1) <= TURN_REL,
               "the ellipse on the net: %.3g L off, increasing %d, %.17g periods", off, up,
               pts[N - 1].params[0][0] - pts[0].params[0][0]);
     }
@@ -754,6 +766,7 @@ int main(void)
     generic_steps();
     fall_back_cases();
     circle_off_patch();
-    printf("worst: %.3g L from the closed forms, %.3g L from the nets\n", worst_exact, worst_on_net);
+    printf("worst: %.3g L from the closed forms, %.3g L from the nets\n", worst_exact,
+           worst_on_net);
     return harness_finish("nurbs_exact");
 }

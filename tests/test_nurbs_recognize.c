@@ -51,9 +51,9 @@ static const char *const FAMILY[NFAMILIES] = {"sphere", "cylinder", "cone",
 /* What a family's net is, in the place's local coordinates (scale 1). */
 typedef struct {
     ic_primitive_kind kind;
-    double zc;               /* the centre's (apex's, plane's) height on the axis */
+    double zc; /* the centre's (apex's, plane's) height on the axis */
     double radius, major, half_angle;
-    double lo, hi;           /* the covered heights (cylinder, cone) or radii (disc, annulus) */
+    double lo, hi; /* the covered heights (cylinder, cone) or radii (disc, annulus) */
     int periodic_profile;
 } expected;
 
@@ -272,10 +272,12 @@ static void planar_case(int variant_u, int variant_v, double skew, harness_rng *
         }
         net_cross(normal, sh->frame[2], pl.e[2]);
         net_cross(c, sh->edge[0], e0);
-        double off = fmax(dist3(sh->corner, corner), fmax(dist3(sh->edge[0], e0),
-                                                           dist3(sh->edge[1], e1)));
-        off = fmax(off, sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]) *
-                            sh->size) / sh->size;
+        double off =
+            fmax(dist3(sh->corner, corner), fmax(dist3(sh->edge[0], e0), dist3(sh->edge[1], e1)));
+        off =
+            fmax(off, sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]) *
+                          sh->size) /
+            sh->size;
         worst_shape = fmax(worst_shape, off);
         CHECK(off <= SHAPE_REL, "%s: the parallelogram off by %.3g of its size", name, off);
         params_round_trip(S, sh, g, name);
@@ -460,8 +462,7 @@ static void restricted_domain(void)
         return;
     const double part[2][2] = {{0, 0.5}, {0, 1}}, whole[2][2] = {{0, 1}, {0, 1}};
     const int periodic[2] = {0, 0};
-    CHECK(ic_surface_set_domain(S, part, periodic, &err) == IC_OK &&
-              net_shape(S) == NULL,
+    CHECK(ic_surface_set_domain(S, part, periodic, &err) == IC_OK && net_shape(S) == NULL,
           "a sphere's net over half its u domain is not recognised");
     CHECK(ic_surface_set_domain(S, whole, periodic, &err) == IC_OK && net_shape(S),
           "and over all of it again it is");

@@ -162,10 +162,10 @@ static int cut(ic_net_pieces *pc, growth *g, const ic_net_curve *c, int s, doubl
         /* the end's position: the turn from the start (less than pi), or
          * the slope */
         const double *Fa = F[0], *Fb = F[c->p];
-        const double pos_b = pc->reading == IC_NET_ANGLE
-                                 ? pc->pos[pc->n] + atan2(cross2(Fa, Fb),
-                                                          Fa[0] * Fb[0] + Fa[1] * Fb[1])
-                                 : position_of(pc, Fb);
+        const double pos_b =
+            pc->reading == IC_NET_ANGLE
+                ? pc->pos[pc->n] + atan2(cross2(Fa, Fb), Fa[0] * Fb[0] + Fa[1] * Fb[1])
+                : position_of(pc, Fb);
         return append(pc, g, s, net, b, pos_b, sign);
     }
     if (depth >= NET_MAX_SPLITS)

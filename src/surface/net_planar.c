@@ -104,7 +104,8 @@ int ic_net_recognize_planar(const ic_nurbs_patch *pt, ic_net_shape *sh)
     if (!(ic_norm3(cr) > NET_MIN_SINE) || !on_grid(pt, sh, tol))
         return 1;
     for (int d = 0; d < 2; d++) {
-        const int st = ic_net_pieces_make(&sh->pieces[d], &sh->curve[d], IC_NET_ALONG, origin, along);
+        const int st =
+            ic_net_pieces_make(&sh->pieces[d], &sh->curve[d], IC_NET_ALONG, origin, along);
         if (st != 0)
             return st;
     }

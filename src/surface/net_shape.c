@@ -102,8 +102,8 @@ int ic_net_profile_param(const ic_net_shape *sh, double x, double z, double *t)
     const ic_net_pieces *pc = &sh->pieces[1];
     const double tol = IC_NET_REL * sh->size;
     if (!pr->circle)
-        return invert_clamped(pc, &sh->curve[1], (x - pr->c[0]) * pr->d[0] + (z - pr->c[1]) * pr->d[1],
-                              tol, t);
+        return invert_clamped(pc, &sh->curve[1],
+                              (x - pr->c[0]) * pr->d[0] + (z - pr->c[1]) * pr->d[1], tol, t);
     /* the least representative of the point's angle about the centre from
      * the arc's range on (on a closed circle's seam, the range's lower end) */
     const double lo = fmin(pc->pos[0], pc->pos[pc->n]), slack = tol / pr->r;

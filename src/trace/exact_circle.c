@@ -64,8 +64,7 @@ typedef struct {
     int seam_sheet;
 } sheet_setup;
 
-static int setup_sheets(ic_exact_circle *c, const ic_exact_source src[2], double L,
-                        sheet_setup *ss)
+static int setup_sheets(ic_exact_circle *c, const ic_exact_source src[2], double L, sheet_setup *ss)
 {
     memset(ss, 0, sizeof *ss);
     ss->seam_sheet = -1;
@@ -84,8 +83,8 @@ static int setup_sheets(ic_exact_circle *c, const ic_exact_source src[2], double
         }
         double x0[3], w[3];
         ic_axpy3(x0, c->centre, c->rho, c->u);
-        ss->theta0[s] = s == ss->seam_sheet ? (ss->way[s] > 0 ? 0 : 2 * IC_PI)
-                                            : ic_net_angle_of(sh, x0);
+        ss->theta0[s] =
+            s == ss->seam_sheet ? (ss->way[s] > 0 ? 0 : 2 * IC_PI) : ic_net_angle_of(sh, x0);
         ic_axpy3(w, c->centre, -1.0, sh->origin);
         if (ic_net_profile_param(sh, c->rho, ic_dot3(w, sh->frame[2]), &ss->profile[s]) != 0)
             return 1;
@@ -252,14 +251,16 @@ static int sheet_normal(ic_pair *pair, int s, const ic_trace_point *p, double n[
     const ic_jet_space *sp = pair->near[parametric ? 0 : 1];
     const int len = ic_jet_space_len(sp);
     double t[3 * 10];
-    if (3 * len > 30 || ic_surface_taylor(S, t, parametric ? p->params[s] : p->xyz, sp, NULL) != IC_OK)
+    if (3 * len > 30 ||
+        ic_surface_taylor(S, t, parametric ? p->params[s] : p->xyz, sp, NULL) != IC_OK)
         return -1;
     if (!parametric) {
         for (int k = 0; k < 3; k++)
             n[k] = t[ic_jet_index(sp, (const int[]){k == 0, k == 1, k == 2})];
         return 0;
     }
-    const int iu = ic_jet_index(sp, (const int[]){1, 0}), iv = ic_jet_index(sp, (const int[]){0, 1});
+    const int iu = ic_jet_index(sp, (const int[]){1, 0}),
+              iv = ic_jet_index(sp, (const int[]){0, 1});
     const double Ru[3] = {t[iu], t[len + iu], t[2 * len + iu]};
     const double Rv[3] = {t[iv], t[len + iv], t[2 * len + iv]};
     ic_cross3(n, Ru, Rv);

@@ -34,8 +34,8 @@ typedef struct {
  * patch; way[s] = +1 (-1) when its angle grows (falls) along the circle;
  * L the problem's size. */
 int ic_exact_circle_knots(const ic_exact_circle *c, const ic_exact_source src[2],
-                          const double theta0[2], const int way[2], ic_exact_knot **marks,
-                          int *n, double L);
+                          const double theta0[2], const int way[2], ic_exact_knot **marks, int *n,
+                          double L);
 
 /* The circle's points: n equal arcs (a multiple of 8), the crossings of
  * knot lines put in, the first point again at the end (at s = 2 pi rho).

@@ -55,7 +55,8 @@ typedef struct {
 static int revolves(const ic_exact_source *s)
 {
     const ic_primitive *p = &s->prim;
-    return p->kind != IC_PRIM_ELLIPSOID && (p->kind != IC_PRIM_TORUS || p->radius < p->major_radius);
+    return p->kind != IC_PRIM_ELLIPSOID &&
+           (p->kind != IC_PRIM_TORUS || p->radius < p->major_radius);
 }
 
 static int has_axis_line(const ic_exact_source *s)
@@ -210,8 +211,8 @@ static int place_side(const ic_trace_options *opt, const axis *ax, const ic_exac
 /* The circles and contact points in the box and on the patches: their
  * count, or -1 where the general path must decide. */
 static int intersection_pieces(const ic_profile *pa, const ic_profile *pb, const axis *ax,
-                               const ic_exact_source src[2], const ic_trace_options *opt,
-                               double L, piece_found found[IC_PROFILE_MAX_MEETINGS])
+                               const ic_exact_source src[2], const ic_trace_options *opt, double L,
+                               piece_found found[IC_PROFILE_MAX_MEETINGS])
 {
     ic_profile_meeting m[IC_PROFILE_MAX_MEETINGS];
     int nm, nf = 0;
@@ -280,7 +281,8 @@ static ic_exact_circle circle_of(const axis *ax, const piece_found *f)
  * circle), -1 out of memory; nothing kept unless 0. */
 static int circles_traced(ic_pair *pair, const axis *ax, const piece_found *found, int nf,
                           const ic_exact_source src[2], const ic_trace_options *opt, double L,
-                          ic_trace_point *pts[IC_PROFILE_MAX_MEETINGS], int np[IC_PROFILE_MAX_MEETINGS])
+                          ic_trace_point *pts[IC_PROFILE_MAX_MEETINGS],
+                          int np[IC_PROFILE_MAX_MEETINGS])
 {
     int st = 0;
     for (int i = 0; i < nf; i++) {

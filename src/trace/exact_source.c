@@ -41,8 +41,7 @@ int ic_exact_sources(ic_pair *pair, ic_exact_source src[2])
     return b;
 }
 
-int ic_exact_net_coaxial(const ic_exact_source *src, const double o[3], const double e[3],
-                         double L)
+int ic_exact_net_coaxial(const ic_exact_source *src, const double o[3], const double e[3], double L)
 {
     const ic_net_shape *sh = src->net;
     if (!sh || sh->kind != IC_NET_REVOLVED)

@@ -435,6 +435,27 @@ static void test_contact_at_pole(void)
     release(&t);
 }
 
+/* The same nets with the exact paths on (the default): recognised as a
+ * sphere and a plane, the contact found in closed form at the pole, exact
+ * (not approximate), without a search (test_nurbs_exact.c checks this path
+ * at random places against the general one). */
+static void test_contact_at_pole_exact(void)
+{
+    traced t;
+    if (trace_named(&t, "problem-sphere-touch-nurbs-nurbs.json") != 0)
+        return;
+    const double origin[3] = {0, 0, 0};
+    const ic_trace_report *rep = ic_trace_result_report(t.res);
+    CHECK(ic_trace_result_num_curves(t.res) == 0 && rep->complete && rep->cells == 0 &&
+              strcmp(rep->method,
+                     "closed form: NURBS nets recognised as coaxial surfaces of revolution") == 0,
+          "sphere touching a plane at its pole, nets recognised: %d curves, complete %d, %s",
+          ic_trace_result_num_curves(t.res), rep->complete, rep->method);
+    check_special(t.res, "sphere touching a plane at its pole, in closed form", "contact", origin,
+                  CONTACT_TOL, 0);
+    release(&t);
+}
+
 /* The cusp and the tacnode of the bundled examples with their polynomial
  * surfaces written exactly as B-spline patches with interior knots
  * (tests/truth/gen_nurbs_polynomial.py): the same kind of point at the
@@ -545,6 +566,7 @@ int main(int argc, char **argv)
     test_quadrics();
     test_viviani_pairings();
     test_contact_at_pole();
+    test_contact_at_pole_exact();
     test_with_primitive();
     test_polynomial_kinds(source_dir);
     test_freeform_pair();

@@ -52,7 +52,8 @@ static int revolved_knots(const ic_exact_source *src, int sheet, double theta0, 
 
 /* A planar patch: the lines f(u) = f(kappa) (g(v) = g(kappa)) of its
  * distinct interior knots against the circle. 1 where one nearly touches
- * it (two crossings within IC_EXACT_NEAR L of each other). */
+ * it: rho^2 - d^2 (d its distance from the centre; the square of half
+ * its chord) within (IC_EXACT_NEAR L)^2 of 0. */
 static int planar_knots(const ic_exact_circle *c, const ic_exact_source *src, int sheet, double L,
                         marks *k)
 {

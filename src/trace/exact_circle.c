@@ -220,7 +220,8 @@ int ic_exact_circle_points(ic_exact_circle *c, int n, const ic_exact_source src[
     for (int i = 0; i < nk; i++) /* a crossing at the end of the turn is at its start */
         if (k[i].phi > 2 * IC_PI - EXACT_SAME_ANGLE)
             k[i].phi = 0;
-    qsort(k, (size_t)nk, sizeof *k, by_angle);
+    if (nk > 1) /* (none: no array at all) */
+        qsort(k, (size_t)nk, sizeof *k, by_angle);
     const size_t room = (size_t)(n + nk + 1);
     ic_trace_point *p = malloc(sizeof *p * (room + (nk ? (size_t)n : 0)));
     double *phi = malloc(sizeof *phi * room);

@@ -444,6 +444,58 @@ static ic_status trace_exact(ic_error *err, char *summary)
     return st;
 }
 
+/* The unit sphere's exact NURBS net (the 9-point circle revolved with a
+ * half circle) and a square plane's bilinear net at height h: recognised
+ * as a sphere and a plane, traced in closed form. */
+static ic_status nurbs_sphere_plane(made_pair *m, double h, ic_error *err)
+{
+    static const double cx[9] = {1, 1, 0, -1, -1, -1, 0, 1, 1}, cy[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
+    static const double px[5] = {0, 1, 1, 1, 0}, pz[5] = {-1, -1, 0, 1, 1};
+    static const double ku[12] = {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1};
+    static const double kv[8] = {0, 0, 0, 0.5, 0.5, 1, 1, 1}, k1[4] = {0, 0, 1, 1};
+    double P[3 * 45], w[45], Q[12];
+    for (int i = 0; i < 9; i++)
+        for (int j = 0; j < 5; j++) {
+            const int at = 5 * i + j;
+            P[3 * at] = px[j] * cx[i], P[3 * at + 1] = px[j] * cy[i], P[3 * at + 2] = pz[j];
+            w[at] = (i % 2 ? sqrt(0.5) : 1) * (j % 2 ? sqrt(0.5) : 1);
+        }
+    for (int i = 0; i < 4; i++)
+        Q[3 * i] = i < 2 ? -2 : 2, Q[3 * i + 1] = i % 2 ? 2 : -2, Q[3 * i + 2] = h;
+    const ic_nurbs sphere = {{2, 2}, {9, 5}, {ku, kv}, P, w, {1, 0}};
+    const ic_nurbs plane = {{1, 1}, {2, 2}, {k1, k1}, Q, NULL, {0, 0}};
+    memset(m, 0, sizeof *m);
+    ic_status st = ic_surface_new_nurbs(&m->A, &sphere, err);
+    if (st == IC_OK)
+        st = ic_surface_new_nurbs(&m->B, &plane, err);
+    if (st == IC_OK)
+        st = ic_pair_new(&m->pair, m->A, m->B, err);
+    return st;
+}
+
+/* the exact path on recognised nets: a circle with its parameters, and a
+ * contact point at a pole */
+static ic_status trace_exact_nets(ic_error *err, char *summary)
+{
+    ic_status st = IC_OK;
+    for (int c = 0; c < 2 && st == IC_OK; c++) {
+        made_pair m;
+        st = nurbs_sphere_plane(&m, c ? -1 : 0.5, err);
+        ic_trace_options opt;
+        ic_trace_defaults(&opt);
+        ic_trace_result *res = NULL;
+        if (st == IC_OK)
+            st = ic_trace(&res, m.pair, &opt, err);
+        if (st == IC_OK) {
+            say(summary, "%s; ", ic_trace_result_report(res)->method);
+            say_trace(summary, res);
+        }
+        ic_trace_result_free(res);
+        free_pair(&m);
+    }
+    return st;
+}
+
 /* a tangential curve: the unit cylinder touches the plane x = 1 along a line */
 static ic_status trace_tangential(ic_error *err, char *summary)
 {
@@ -748,6 +800,7 @@ int main(int argc, char **argv)
         {"trace, self", trace_self},
         {"trace, tangential", trace_tangential},
         {"trace, exact", trace_exact},
+        {"trace, exact nets", trace_exact_nets},
         {"problem file", problem_file},
         {"writers", writers},
         {"bindings", bindings},

@@ -38,11 +38,29 @@ static char source_dir[400];
 /* the largest relative curvature or torsion error seen, for the record */
 static double worst_apparatus;
 
-static int trace_named(traced *t, const char *file)
+static int trace_named_with(traced *t, const char *file, ic_trace_options opt)
 {
     char path[600];
     snprintf(path, sizeof path, "%s/tests/data/nurbs/%s", source_dir, file);
-    return trace_file(t, path);
+    return trace_file_with(t, path, opt);
+}
+
+static int trace_named(traced *t, const char *file)
+{
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    return trace_named_with(t, file, opt);
+}
+
+/* The general path's options: the search and the marching even where the
+ * nets are recognised as surfaces with a closed form (test_nurbs_exact.c
+ * checks that path on the same files). */
+static ic_trace_options general_path(void)
+{
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    opt.exact_paths = 0;
+    return opt;
 }
 
 static double dist3(const double *a, const double *b)
@@ -400,11 +418,13 @@ static void test_with_primitive(void)
 
 /* The sphere resting on a plane at its pole, both NURBS (the peer
  * benchmark's sphere-touch case): before, the locator refused the pole and
- * the search ran into its 2000000-cell limit, incomplete, with no point. */
+ * the search ran into its 2000000-cell limit, incomplete, with no point.
+ * The nets are recognised (a sphere, a plane) and have a closed form: the
+ * general path is asked for, as this tests it. */
 static void test_contact_at_pole(void)
 {
     traced t;
-    if (trace_named(&t, "problem-sphere-touch-nurbs-nurbs.json") != 0)
+    if (trace_named_with(&t, "problem-sphere-touch-nurbs-nurbs.json", general_path()) != 0)
         return;
     const double origin[3] = {0, 0, 0};
     CHECK(ic_trace_result_num_curves(t.res) == 0 && ic_trace_result_report(t.res)->complete,
@@ -412,6 +432,27 @@ static void test_contact_at_pole(void)
           ic_trace_result_num_curves(t.res), ic_trace_result_report(t.res)->complete);
     check_special(t.res, "sphere touching a plane at its pole", "contact", origin,
                   CONTACT_POLE_TOL, 1);
+    release(&t);
+}
+
+/* The same nets with the exact paths on (the default): recognised as a
+ * sphere and a plane, the contact found in closed form at the pole, exact
+ * (not approximate), without a search (test_nurbs_exact.c checks this path
+ * at random places against the general one). */
+static void test_contact_at_pole_exact(void)
+{
+    traced t;
+    if (trace_named(&t, "problem-sphere-touch-nurbs-nurbs.json") != 0)
+        return;
+    const double origin[3] = {0, 0, 0};
+    const ic_trace_report *rep = ic_trace_result_report(t.res);
+    CHECK(ic_trace_result_num_curves(t.res) == 0 && rep->complete && rep->cells == 0 &&
+              strcmp(rep->method,
+                     "closed form: NURBS nets recognised as coaxial surfaces of revolution") == 0,
+          "sphere touching a plane at its pole, nets recognised: %d curves, complete %d, %s",
+          ic_trace_result_num_curves(t.res), rep->complete, rep->method);
+    check_special(t.res, "sphere touching a plane at its pole, in closed form", "contact", origin,
+                  CONTACT_TOL, 0);
     release(&t);
 }
 
@@ -525,6 +566,7 @@ int main(int argc, char **argv)
     test_quadrics();
     test_viviani_pairings();
     test_contact_at_pole();
+    test_contact_at_pole_exact();
     test_with_primitive();
     test_polynomial_kinds(source_dir);
     test_freeform_pair();

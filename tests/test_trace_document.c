@@ -25,15 +25,33 @@ static ic_status write_text(FILE *f, void *user, ic_error *err)
     return ic_trace_write_text(f, t->res, t->problem ? ic_problem_title(t->problem) : NULL, err);
 }
 
+/* A point's "knot_line" (docs/nurbs.md, "Knot lines"): which surfaces'
+ * knot lines it is on, and whose side its apparatus is of. */
+static int knot_line_matches(const cJSON *o, const ic_trace_point *p)
+{
+    static const char *const keys[] = {"surfaces", "apparatus_of", NULL};
+    const cJSON *on = doc_get(o, "surfaces");
+    int ok = doc_keys_are(o, keys) && cJSON_GetArraySize(on) == 2 &&
+             doc_string_is(doc_get(o, "apparatus_of"), p->knot_side < 0 ? "before" : "after");
+    for (int s = 0; ok && s < 2; s++)
+        ok = cJSON_IsBool(cJSON_GetArrayItem(on, s)) &&
+             cJSON_IsTrue(cJSON_GetArrayItem(on, s)) == ((p->knot_line >> s) & 1);
+    return ok;
+}
+
 static int point_matches(const cJSON *o, const ic_trace_point *p, const ic_trace_curve *c,
                          const traced *t, const int parametric[2])
 {
     static const char *const keys[] = {"s",     "xyz", "params", "t",    "n", "b",
                                        "kappa", "tau", "angle",  "type", NULL};
+    static const char *const knot_keys[] = {"s",   "xyz",   "params", "t",         "n", "b",
+                                            "kappa", "tau", "angle",  "type", "knot_line", NULL};
     const int fd = p->frame_defined;
     const cJSON *params = doc_get(o, "params");
     int ok =
-        doc_keys_are(o, keys) && doc_number_is(doc_get(o, "s"), p->s) &&
+        doc_keys_are(o, p->knot_line ? knot_keys : keys) &&
+        (!p->knot_line || knot_line_matches(doc_get(o, "knot_line"), p)) &&
+        doc_number_is(doc_get(o, "s"), p->s) &&
         doc_vector_is(doc_get(o, "xyz"), p->xyz, 3) && doc_vector_is(doc_get(o, "t"), p->t, 3) &&
         (fd ? doc_vector_is(doc_get(o, "n"), p->n, 3) : cJSON_IsNull(doc_get(o, "n"))) &&
         (fd ? doc_vector_is(doc_get(o, "b"), p->b, 3) : cJSON_IsNull(doc_get(o, "b"))) &&
@@ -318,6 +336,30 @@ static void check_closed_form(void)
     ic_surface_free(B);
 }
 
+/* A sphere's and a plane's NURBS nets, recognised: the circle in closed form
+ * with both nets' parameters at every point and points on their knot lines
+ * (docs/tracing.md, "Exact paths"), written as any trace is, fitted or not,
+ * and the report says how it was found. */
+static void check_closed_form_nets(const char *dir)
+{
+    char path[600];
+    snprintf(path, sizeof path, "%s/tests/data/nurbs/problem-sphere-plane-nets.json", dir);
+    traced t;
+    if (trace_file(&t, path) == 0) {
+        const char *name = "sphere's and plane's nets";
+        check_document(&t, name);
+        ic_error err;
+        if (REQUIRE(ic_trace_fit(t.res, t.pair, 1e-9, &err) == IC_OK, "fit: %s", err.message))
+            check_document(&t, name);
+        cJSON *doc = doc_parse(write_json, &t, name);
+        CHECK(doc_string_is(doc_get(doc_get(doc, "report"), "method"),
+                            "closed form: NURBS nets recognised as coaxial surfaces of revolution"),
+              "%s: the report's method", name);
+        cJSON_Delete(doc);
+    }
+    release(&t);
+}
+
 int main(int argc, char **argv)
 {
     const char *dir = argc > 1 ? argv[1] : ".";
@@ -338,5 +380,6 @@ int main(int argc, char **argv)
     }
     check_line();
     check_closed_form();
+    check_closed_form_nets(dir);
     return harness_finish("test_trace_document");
 }

@@ -220,8 +220,9 @@ static int run_intercurve(const bench_case *c, peer_output *out, double *seconds
         rc = 0;
         goto done;
     }
-    if (primitives)
-        peer_output_note(out, "%s; ", ic_trace_result_report(res)->method);
+    /* how it was found: the search, or a closed form (on primitives, or on
+     * nets recognised as them) */
+    peer_output_note(out, "%s; ", ic_trace_result_report(res)->method);
     rc = fitted ? collect_bsplines(res, out) : collect(res, out);
 done:
     ic_trace_result_free(res);

@@ -37,6 +37,13 @@ ic_status ic_nurbs_taylor(const ic_nurbs_patch *patch, double *out, const double
                           const ic_nurbs_side side[2], const ic_jet_space *sp, double *work,
                           ic_error *err);
 
+/* The point at (u, v), wrapped along periodic parameters, each
+ * parameter's piece chosen by side[] on a knot: the basis values and the
+ * homogeneous tensor sum, no jets; the same bits as ic_nurbs_taylor's
+ * constant terms. */
+void ic_nurbs_point(const ic_nurbs_patch *patch, const double uv[2], const ic_nurbs_side side[2],
+                    double out[3]);
+
 /* Doubles of workspace ic_nurbs_compose needs for jets of n coefficients. */
 size_t ic_nurbs_compose_work_len(const ic_nurbs_patch *patch, int n);
 
@@ -52,6 +59,13 @@ ic_status ic_nurbs_compose(const ic_nurbs_patch *patch, double *out, const doubl
  * along a parameter that does not wrap. */
 ic_status ic_nurbs_interval_grad(const ic_nurbs_patch *patch, ic_interval_grad *out,
                                  const ic_interval in[2], int with_grad, ic_error *err);
+
+/* out[k * ostride + e] (k = 0..deg, e < dim <= 4) = the blossom f(a^(deg-k),
+ * b^k) of the piece on span s of a degree-deg B-spline with knots kn: the
+ * piece's Bezier net over [a, b]; ctrl[i * cstride + e] its deg + 1 control
+ * points (those of span s, the first being control point s - deg). */
+void ic_nurbs_blossom(double *out, int ostride, const double *ctrl, int cstride, int dim, int deg,
+                      const double *kn, int s, double a, double b);
 
 /* Span index s with knots[s] <= t < knots[s + 1] (LEFT: knots[s] < t <=
  * knots[s + 1]) among the nonempty spans of the domain; t outside the

@@ -163,3 +163,28 @@ ic_status ic_nurbs_compose(const ic_nurbs_patch *pt, double *out, const double *
     }
     return IC_OK;
 }
+
+void ic_nurbs_point(const ic_nurbs_patch *pt, const double uv[2], const ic_nurbs_side side[2],
+                    double out[3])
+{
+    int span[2];
+    double b[2][1][IC_NURBS_MAX_DEGREE + 1], h[4] = {0, 0, 0, 0};
+    for (int d = 0; d < 2; d++) {
+        const double t = ic_nurbs_wrap_side(pt, d, uv[d], side[d]);
+        span[d] = ic_nurbs_find_span(pt, d, t, side[d]);
+        ic_basis_taylor(b[d], pt->knots[d], span[d], pt->p[d], t, 0);
+    }
+    const int p = pt->p[0], q = pt->p[1], nv = pt->n[1];
+    for (int i = 0; i <= p; i++)
+        for (int j = 0; j <= q; j++) {
+            const double f = b[0][0][i] * b[1][0][j];
+            const double *P = pt->hom + 4 * ((span[0] - p + i) * nv + span[1] - q + j);
+            for (int e = 0; e < 4; e++)
+                h[e] += f * P[e];
+        }
+    /* as ic_nurbs_taylor's constant terms, to the last bit: the common
+     * weight of a polynomial patch, else the jet quotient's reciprocal */
+    const double w = pt->hom[3], inv = 1.0 / h[3];
+    for (int e = 0; e < 3; e++)
+        out[e] = !pt->rational ? (w == 1.0 ? h[e] : h[e] / w) : h[e] * inv;
+}

@@ -24,32 +24,6 @@ enum { MAXP = IC_NURBS_MAX_DEGREE + 1, DIM = 4 };
  * bound below is 16 eps per level, over the p + q levels plus one */
 #define NET_ROUNDING_PER_LEVEL (16 * DBL_EPSILON)
 
-/* out[k * ostride] = the blossom f(a^(deg-k), b^k) of the piece on span s
- * of a degree-deg B-spline with knots kn, from its deg+1 control points
- * ctrl[i * cstride] (DIM doubles each), by de Boor's triangle. */
-static void blossom_net(double *out, int ostride, const double *ctrl, int cstride, int deg,
-                        const double *kn, int s, double a, double b)
-{
-    for (int k = 0; k <= deg; k++) {
-        double d[MAXP][DIM];
-        for (int i = 0; i <= deg; i++)
-            for (int e = 0; e < DIM; e++)
-                d[i][e] = ctrl[i * cstride + e];
-        for (int j = 1; j <= deg; j++) {
-            const double x = j <= deg - k ? a : b;
-            for (int r = deg; r >= j; r--) {
-                const int i = s - deg + r;
-                const double h = kn[s + r - j + 1] - kn[i];
-                const double alpha = h > 0 ? (x - kn[i]) / h : 0.0;
-                for (int e = 0; e < DIM; e++)
-                    d[r][e] = (1 - alpha) * d[r - 1][e] + alpha * d[r][e];
-            }
-        }
-        for (int e = 0; e < DIM; e++)
-            out[k * ostride + e] = d[deg][e];
-    }
-}
-
 /* One tensor net: degrees (p, q), spans (su, sv) of knots (ku, kv), source
  * net with rows of nv points; the piece over [ua, ub] x [va, vb] into hull. */
 typedef struct {
@@ -66,12 +40,12 @@ static double sub_net(const tensor_net *tn, int su, int sv, const double box[2][
     const int p = tn->p, q = tn->q;
     double tmp[MAXP * MAXP * DIM];
     for (int j = 0; j <= q; j++) /* along u, column by column */
-        blossom_net(tmp + j * DIM, (q + 1) * DIM,
-                    tn->net + DIM * ((su - p) * tn->nv + sv - q + j), tn->nv * DIM, p, tn->ku, su,
-                    box[0][0], box[0][1]);
+        ic_nurbs_blossom(tmp + j * DIM, (q + 1) * DIM,
+                         tn->net + DIM * ((su - p) * tn->nv + sv - q + j), tn->nv * DIM, DIM, p,
+                         tn->ku, su, box[0][0], box[0][1]);
     for (int i = 0; i <= p; i++) /* then along v, row by row */
-        blossom_net(net + i * (q + 1) * DIM, DIM, tmp + i * (q + 1) * DIM, DIM, q, tn->kv, sv,
-                    box[1][0], box[1][1]);
+        ic_nurbs_blossom(net + i * (q + 1) * DIM, DIM, tmp + i * (q + 1) * DIM, DIM, DIM, q, tn->kv,
+                         sv, box[1][0], box[1][1]);
     double big = 0;
     for (int i = 0; i <= p; i++)
         for (int j = 0; j <= q; j++)

@@ -201,6 +201,7 @@ void ic_surface_free(ic_surface *s)
     if (!s)
         return;
     ic_nurbs_patch_free(s->nurbs);
+    ic_net_shape_free(s->net_shape);
     ic_expr_free(s->expr);
     for (int k = 0; k <= IC_JET_MAX_ORDER; k++) {
         ic_jet_space_free(s->spaces[k]);
@@ -392,6 +393,16 @@ static ic_status nurbs_taylor(ic_surface *s, double *out, const double *at, cons
     ic_nurbs_side side[2];
     nurbs_sides(s, heading, side);
     return ic_nurbs_taylor(s->nurbs, out, at, side, sp, w, err);
+}
+
+int ic_surface_nurbs_point(ic_surface *s, const double uv[2], double out[3])
+{
+    if (s->backend != BACKEND_NURBS)
+        return -1;
+    ic_nurbs_side side[2];
+    nurbs_sides(s, NULL, side);
+    ic_nurbs_point(s->nurbs, uv, side, out);
+    return 0;
 }
 
 /* The direction a parameter jet moves in: its first nonzero coefficient of

@@ -4,6 +4,7 @@
 
 #include "intercurve/expr.h"
 #include "intercurve/surface.h"
+#include "net_shape.h"
 #include "nurbs.h"
 
 typedef enum { BACKEND_FORMULA, BACKEND_CALLBACK, BACKEND_PRIMITIVE, BACKEND_NURBS } ic_backend;
@@ -16,6 +17,8 @@ struct ic_surface {
     void *user;
     ic_primitive prim;             /* primitive */
     ic_nurbs_patch *nurbs;         /* NURBS patch */
+    ic_net_shape *net_shape;       /* NURBS: what it was recognised as (ic_surface_net_shape) */
+    int net_tried;                 /* NURBS: recognition was run (net_shape its answer) */
     int knot_side[2];              /* NURBS: -1, +1 a piece forced on knot lines; 0 by heading */
     double plane_frame[3][3];      /* plane: e1, e2, unit normal */
     int placed;                    /* primitive not in standard position: uses frame */
@@ -39,6 +42,17 @@ enum { IC_WORK_EVAL = 0, IC_WORK_COMPOSE = 1 };
 double *ic_surface_work(ic_surface *s, int slot, size_t len);
 /* ic_surface_space, ic_surface_taylor_toward */
 #include "surface_jets.h"
+
+/* A NURBS surface's recognised shape (net_shape.h; surface_net.c), found
+ * on first use and kept, in *out: NULL for any other surface, a patch
+ * restricted to part of its knots' domain, a patch not recognised. 0, or -1
+ * out of memory (then tried again on the next call). */
+int ic_surface_net_shape(ic_surface *s, const ic_net_shape **out);
+
+/* A NURBS surface's point at uv, the same bits as the constant terms of
+ * its Taylor coefficients there (ic_nurbs_point; a forced knot side
+ * respected), without jets: 0, or -1 for any other surface. */
+int ic_surface_nurbs_point(ic_surface *s, const double uv[2], double out[3]);
 
 /* Primitives (primitive.c) */
 ic_status ic_primitive_check(ic_surface *s, ic_error *err);

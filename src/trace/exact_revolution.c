@@ -1,20 +1,24 @@
 /*
  * Exact paths for coaxial surfaces of revolution (docs/tracing.md, "Exact
  * paths"): a plane normal to the axis, a sphere centred on it, a cylinder,
- * a cone with its apex on it and a torus about it, all implicit primitives,
- * meet in circles about the axis and in points on it. Their meridian
- * profiles (exact_profile.c) meet where the surfaces do: a crossing at
- * rho > 0 is a transversal circle, a tangency there a tangential circle, a
- * tangency on the axis an isolated contact. Everything else (coincident or
- * nearly tangent profiles, a cone's apex on the other surface, a circle the
- * box cuts, axes only nearly one) is left to the general path, which stays
- * the reference (ic_trace_options.exact_paths = 0 always takes it).
+ * a cone with its apex on it and a torus about it, implicit primitives or
+ * NURBS patches recognised as them (exact_source.h), meet in circles about
+ * the axis and in points on it. Their meridian profiles (exact_profile.c)
+ * meet where the surfaces do: a crossing at rho > 0 is a transversal
+ * circle, a tangency there a tangential circle, a tangency on the axis an
+ * isolated contact. A patch keeps what it covers (exact_cover.c), and its
+ * circles carry its parameters (exact_circle.c). Everything else
+ * (coincident or nearly tangent profiles, a cone's apex on the other
+ * surface, a circle the box or a patch's edge cuts, axes only nearly one)
+ * is left to the general path, which stays the reference
+ * (ic_trace_options.exact_paths = 0 always takes it).
  */
+#include "exact_circle.h"
 #include "exact_profile.h"
+#include "exact_source.h"
 #include "trace_internal.h"
 #include "common/mathconst.h"
 #include "common/vec3.h"
-#include "surface/surface_internal.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -24,6 +28,8 @@
  * file's. */
 const char ic_trace_method_search[] = "search";
 const char ic_trace_method_revolution[] = "closed form: coaxial surfaces of revolution";
+const char ic_trace_method_revolution_nets[] =
+    "closed form: NURBS nets recognised as coaxial surfaces of revolution";
 
 /* relative length: a circle or contact point this near a face of the box
  * (inside or out) falls back: the general path decides what the box cuts */
@@ -31,13 +37,6 @@ const char ic_trace_method_revolution[] = "closed form: coaxial surfaces of revo
 /* count: the fewest arcs a circle is traced in (the shape test and the
  * B-spline fit want a few points whatever the step rules allow) */
 #define IC_EXACT_MIN_ARCS 8
-
-/* A primitive of the pair and its frame (rows e1, e2, e3; e3 the axis or
- * the plane's unit normal). */
-typedef struct {
-    const ic_primitive *p;
-    const double (*frame)[3];
-} revolved;
 
 /* The common axis: through o along the unit e, with (u, v, e) right-handed
  * orthonormal (u is where the circles' points start). */
@@ -51,23 +50,19 @@ typedef struct {
     int tangent;
 } piece_found;
 
-static int as_revolved(ic_surface *s, revolved *out)
+/* The surfaces this path takes: no ellipsoid, no torus whose tube reaches
+ * the axis (a spindle, singular there). */
+static int revolves(const ic_exact_source *s)
 {
-    if (s->backend != BACKEND_PRIMITIVE || s->kind != IC_IMPLICIT)
-        return 0;
     const ic_primitive *p = &s->prim;
-    /* a torus whose tube reaches the axis is singular there (a spindle) */
-    if (p->kind == IC_PRIM_ELLIPSOID || (p->kind == IC_PRIM_TORUS && !(p->radius < p->major_radius)))
-        return 0;
-    out->p = p;
-    out->frame = (const double(*)[3])(p->kind == IC_PRIM_PLANE ? s->plane_frame : s->frame);
-    return 1;
+    return p->kind != IC_PRIM_ELLIPSOID &&
+           (p->kind != IC_PRIM_TORUS || p->radius < p->major_radius);
 }
 
-static int has_axis_line(const revolved *s)
+static int has_axis_line(const ic_exact_source *s)
 {
-    return s->p->kind == IC_PRIM_CYLINDER || s->p->kind == IC_PRIM_CONE ||
-           s->p->kind == IC_PRIM_TORUS;
+    return s->prim.kind == IC_PRIM_CYLINDER || s->prim.kind == IC_PRIM_CONE ||
+           s->prim.kind == IC_PRIM_TORUS;
 }
 
 /* u, v completing the unit e to a right-handed frame. */
@@ -95,22 +90,22 @@ static void axis_from_frame(axis *ax, const double *o, const double (*frame)[3])
 /* The axis both surfaces would share: a surface's own axis line, else the
  * plane's normal through the sphere's centre, else the line of the
  * spheres' centres (any through them when they are one point). */
-static void candidate_axis(const revolved *a, const revolved *b, axis *ax)
+static void candidate_axis(const ic_exact_source *a, const ic_exact_source *b, axis *ax)
 {
-    const revolved *s[2] = {a, b};
+    const ic_exact_source *s[2] = {a, b};
     for (int i = 0; i < 2; i++)
         if (has_axis_line(s[i])) {
-            axis_from_frame(ax, s[i]->p->center, s[i]->frame);
+            axis_from_frame(ax, s[i]->prim.center, s[i]->frame);
             return;
         }
     for (int i = 0; i < 2; i++)
-        if (s[i]->p->kind == IC_PRIM_PLANE) {
-            const revolved *other = s[1 - i];
-            axis_from_frame(ax, other->p->center, s[i]->frame);
+        if (s[i]->prim.kind == IC_PRIM_PLANE) {
+            const ic_exact_source *other = s[1 - i];
+            axis_from_frame(ax, other->prim.center, s[i]->frame);
             return;
         }
-    memcpy(ax->o, a->p->center, sizeof ax->o);
-    ic_axpy3(ax->e, b->p->center, -1.0, a->p->center);
+    memcpy(ax->o, a->prim.center, sizeof ax->o);
+    ic_axpy3(ax->e, b->prim.center, -1.0, a->prim.center);
     if (ic_normalize3(ax->e) == 0.0)
         ax->e[0] = ax->e[1] = 0, ax->e[2] = 1;
     complete_frame(ax);
@@ -118,17 +113,17 @@ static void candidate_axis(const revolved *a, const revolved *b, axis *ax)
 
 /* Whether the surface is one of revolution about the axis, within
  * IC_EXACT_COAXIAL: its direction along e, its centre on the line. */
-static int about_axis(const revolved *s, const axis *ax, double L)
+static int about_axis(const ic_exact_source *s, const axis *ax, double L)
 {
     double w[3], c[3];
-    if (s->p->kind != IC_PRIM_SPHERE) {
+    if (s->prim.kind != IC_PRIM_SPHERE) {
         ic_cross3(c, s->frame[2], ax->e);
         if (ic_norm3(c) > IC_EXACT_COAXIAL)
             return 0;
     }
-    if (s->p->kind == IC_PRIM_PLANE)
+    if (s->prim.kind == IC_PRIM_PLANE)
         return 1;
-    ic_axpy3(w, s->p->center, -1.0, ax->o);
+    ic_axpy3(w, s->prim.center, -1.0, ax->o);
     ic_axpy3(w, w, -ic_dot3(w, ax->e), ax->e);
     return ic_norm3(w) <= IC_EXACT_COAXIAL * L;
 }
@@ -145,9 +140,9 @@ static void set_circle(ic_profile_piece *pc, double rho, double z, double r)
     pc->c[0] = rho, pc->c[1] = z, pc->r = r;
 }
 
-static void profile_of(const revolved *s, const axis *ax, ic_profile *pr)
+static void profile_of(const ic_exact_source *s, const axis *ax, ic_profile *pr)
 {
-    const ic_primitive *p = s->p;
+    const ic_primitive *p = &s->prim;
     double w[3];
     ic_axpy3(w, p->center, -1.0, ax->o);
     const double h = ic_dot3(w, ax->e);
@@ -194,10 +189,29 @@ static int box_side(const ic_trace_options *opt, const axis *ax, double rho, dou
     return inside;
 }
 
-/* The circles and contact points in the box: their count, or -1 where the
- * general path must decide. */
+/* Where the circle (the point when rho = 0) at height z lies against the
+ * box (when there is one) and the patches' covered parts: 1 on all, 0 off
+ * one, -1 where the general path must decide. */
+static int place_side(const ic_trace_options *opt, const axis *ax, const ic_exact_source src[2],
+                      double rho, double z, double L)
+{
+    const int box = opt->has_box ? box_side(opt, ax, rho, z, L) : 1;
+    if (box <= 0)
+        return box;
+    double c[3];
+    ic_axpy3(c, ax->o, z, ax->e);
+    int side = 1;
+    for (int s = 0; s < 2 && side != 0; s++) {
+        const int on = ic_exact_covers(&src[s], c, ax->e, rho, IC_EXACT_COVER_MARGIN * L);
+        side = on == 0 ? 0 : on < 0 ? -1 : side;
+    }
+    return side;
+}
+
+/* The circles and contact points in the box and on the patches: their
+ * count, or -1 where the general path must decide. */
 static int intersection_pieces(const ic_profile *pa, const ic_profile *pb, const axis *ax,
-                               const ic_trace_options *opt, double L,
+                               const ic_exact_source src[2], const ic_trace_options *opt, double L,
                                piece_found found[IC_PROFILE_MAX_MEETINGS])
 {
     ic_profile_meeting m[IC_PROFILE_MAX_MEETINGS];
@@ -216,7 +230,7 @@ static int intersection_pieces(const ic_profile *pa, const ic_profile *pb, const
         } else if (!m[i].tangent && m[i].angle < IC_EXACT_MIN_ANGLE) {
             return -1;
         }
-        const int side = box_side(opt, ax, rho, m[i].z, L);
+        const int side = place_side(opt, ax, src, rho, m[i].z, L);
         if (side < 0)
             return -1;
         if (side == 0)
@@ -241,7 +255,7 @@ static double circle_step(const ic_trace_options *opt, double rho)
     return fmin(h, sqrt(8 * opt->chord * rho));
 }
 
-/* The arcs a circle is traced in, a multiple of 8 (circle_points); 0 when
+/* The arcs a circle is traced in, a multiple of 8 (exact_circle.c); 0 when
  * the point budget is too small. */
 static int circle_arcs(const ic_trace_options *opt, double rho)
 {
@@ -250,74 +264,73 @@ static int circle_arcs(const ic_trace_options *opt, double rho)
     return n + 1 <= opt->max_points ? (int)n : 0;
 }
 
-/* Point k of n on the circle, at the angle whose cosine and sine are cs, sn:
- * its exact apparatus: t about e (counterclockwise), n towards the axis,
- * b = e, kappa = 1 / rho, tau = 0. */
-static void circle_point(ic_trace_point *p, int k, int n, const double *centre, const axis *ax,
-                         const piece_found *f, double cs, double sn)
+/* The circle a piece found sweeps about the axis. */
+static ic_exact_circle circle_of(const axis *ax, const piece_found *f)
 {
-    memset(p, 0, sizeof *p);
-    p->s = f->rho * (2 * IC_PI * k / n);
-    for (int i = 0; i < 3; i++) {
-        const double radial = cs * ax->u[i] + sn * ax->v[i];
-        p->xyz[i] = centre[i] + f->rho * radial;
-        p->t[i] = -sn * ax->u[i] + cs * ax->v[i];
-        p->n[i] = -radial;
-        p->b[i] = ax->e[i];
-    }
-    p->kappa = 1.0 / f->rho;
-    p->tau = 0.0;
-    p->angle = f->angle;
-    p->frame_defined = 1;
+    ic_exact_circle c;
+    ic_axpy3(c.centre, ax->o, f->z, ax->e);
+    memcpy(c.u, ax->u, sizeof c.u);
+    memcpy(c.v, ax->v, sizeof c.v);
+    memcpy(c.e, ax->e, sizeof c.e);
+    c.rho = f->rho, c.angle = f->angle, c.tangent = f->tangent;
+    return c;
 }
 
-/* The closed circle's n + 1 points, n a multiple of 8, the last the first
- * again at s = 2 pi rho. The cosine and sine of one octant serve all eight
- * (exact reflections: a quarter of the time of computing each). */
-static void circle_points(ic_trace_point *pts, int n, const axis *ax, const piece_found *f)
+/* Every circle's points (pts[i], np[i]; NULL for a contact point): 0, 1
+ * where the general path must trace (a patch's parameters cannot follow a
+ * circle), -1 out of memory; nothing kept unless 0. */
+static int circles_traced(ic_pair *pair, const axis *ax, const piece_found *found, int nf,
+                          const ic_exact_source src[2], const ic_trace_options *opt, double L,
+                          ic_trace_point *pts[IC_PROFILE_MAX_MEETINGS],
+                          int np[IC_PROFILE_MAX_MEETINGS])
 {
-    double c[3];
-    ic_axpy3(c, ax->o, f->z, ax->e);
-    const int q = n / 4;
-    for (int j = 0; j <= n / 8; j++) {
-        const double cs = cos(2 * IC_PI * j / n), sn = sin(2 * IC_PI * j / n);
-        const int k[8] = {j, q - j, q + j, 2 * q - j, 2 * q + j, 3 * q - j, 3 * q + j, (n - j) % n};
-        const double cc[8] = {cs, sn, -sn, -cs, -cs, -sn, sn, cs};
-        const double ss[8] = {sn, cs, cs, sn, -sn, -cs, -cs, -sn};
-        for (int m = 0; m < 8; m++)
-            circle_point(&pts[k[m]], k[m], n, c, ax, f, cc[m], ss[m]);
+    int st = 0;
+    for (int i = 0; i < nf; i++) {
+        pts[i] = NULL;
+        if (st != 0 || found[i].rho == 0)
+            continue;
+        ic_exact_circle c = circle_of(ax, &found[i]);
+        st = ic_exact_circle_points(&c, circle_arcs(opt, found[i].rho), src, L, &pts[i], &np[i]);
+        /* on recognised nets, the way the general path runs (two implicit
+         * primitives keep theirs: counterclockwise about the axis) */
+        if (st == 0 && !found[i].tangent && (src[0].net || src[1].net))
+            ic_exact_circle_orient(pair, pts[i], np[i]);
     }
-    pts[n] = pts[0];
-    pts[n].s = 2 * IC_PI * f->rho;
+    for (int i = 0; st != 0 && i < nf; i++) {
+        free(pts[i]);
+        pts[i] = NULL;
+    }
+    return st;
 }
 
+/* The circles (their points taken, freed by the result from now on) and
+ * the contact points into the result. */
 static ic_status add_pieces(ic_trace_result *r, const axis *ax, const piece_found *found, int nf,
-                            const ic_trace_options *opt, ic_error *err)
+                            ic_trace_point **pts, const int *np, const ic_trace_options *opt,
+                            ic_error *err)
 {
+    ic_status st = IC_OK;
     for (int i = 0; i < nf; i++) {
         const piece_found *f = &found[i];
         if (f->rho == 0) {
             double x[3];
             ic_axpy3(x, ax->o, f->z, ax->e);
-            if (ic_trace_add_exact_special(r, x, IC_POINT_ISOLATED_CONTACT) != 0)
-                return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory adding a point");
+            if (st == IC_OK && ic_trace_add_exact_special(r, x, IC_POINT_ISOLATED_CONTACT) != 0)
+                st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory adding a point");
             continue;
         }
-        const int n = circle_arcs(opt, f->rho);
-        ic_trace_point *pts = malloc((size_t)(n + 1) * sizeof *pts);
-        if (!pts)
-            return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory adding a curve");
-        circle_points(pts, n, ax, f);
+        if (st != IC_OK) {
+            free(pts[i]);
+            continue;
+        }
         /* a circle by construction: kappa constant, tau 0 exactly, which
          * the shape test (shape.c) reads as a circle at any tolerance */
-        const ic_status st =
-            ic_trace_add_shaped_curve(r, pts, n + 1, 1, IC_TRACE_CLOSED, IC_TRACE_CLOSED,
-                                      opt->shape_tol, IC_SHAPE_CIRCLE, -1, -1, err);
-        if (st != IC_OK)
-            return st;
-        r->curves[r->ncurves - 1].tangential = f->tangent;
+        st = ic_trace_add_shaped_curve(r, pts[i], np[i], 1, IC_TRACE_CLOSED, IC_TRACE_CLOSED,
+                                       opt->shape_tol, IC_SHAPE_CIRCLE, -1, -1, err);
+        if (st == IC_OK)
+            r->curves[r->ncurves - 1].tangential = f->tangent;
     }
-    return IC_OK;
+    return st;
 }
 
 /* The size of what was found, as the search takes it for the marching's
@@ -340,31 +353,46 @@ static double found_scale(double L, const axis *ax, const piece_found *found, in
 }
 
 /* The report of a closed form: nothing searched, nothing left open. */
-static void closed_form_report(ic_trace_report *rep)
+static void closed_form_report(ic_trace_report *rep, int nets)
 {
     rep->complete = 1;
     rep->proven = 1;
-    rep->method = ic_trace_method_revolution;
+    rep->method = nets ? ic_trace_method_revolution_nets : ic_trace_method_revolution;
+}
+
+/* The profiles about the common axis and where they meet: the count of
+ * circles and points, or -1 (the general path). */
+static int coaxial_pieces(const ic_exact_source src[2], const ic_trace_options *opt, double L,
+                          axis *ax, piece_found found[IC_PROFILE_MAX_MEETINGS])
+{
+    candidate_axis(&src[0], &src[1], ax);
+    if (!about_axis(&src[0], ax, L) || !about_axis(&src[1], ax, L))
+        return -1;
+    ic_profile pa, pb;
+    profile_of(&src[0], ax, &pa);
+    profile_of(&src[1], ax, &pb);
+    return intersection_pieces(&pa, &pb, ax, src, opt, L, found);
 }
 
 ic_status ic_trace_exact_revolution(ic_trace_result *r, ic_pair *pair,
                                     const ic_trace_options *user_opt, int *done, ic_error *err)
 {
     *done = 0;
-    revolved a, b;
-    if (!user_opt->exact_paths || !user_opt->has_box || ic_pair_is_self(pair) ||
-        !as_revolved(ic_pair_surface(pair, 0), &a) || !as_revolved(ic_pair_surface(pair, 1), &b))
+    ic_exact_source src[2];
+    if (!user_opt->exact_paths)
+        return IC_OK;
+    const int sources = ic_exact_sources(pair, src);
+    if (sources < 0)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory recognising a NURBS patch");
+    if (sources == 0 || !revolves(&src[0]) || !revolves(&src[1]))
+        return IC_OK;
+    const int nets = src[0].net || src[1].net;
+    if (!nets && !user_opt->has_box) /* two implicit surfaces are sought in a box */
         return IC_OK;
     const double L = r->scale;
     axis ax;
-    candidate_axis(&a, &b, &ax);
-    if (!about_axis(&a, &ax, L) || !about_axis(&b, &ax, L))
-        return IC_OK;
-    ic_profile pa, pb;
-    profile_of(&a, &ax, &pa);
-    profile_of(&b, &ax, &pb);
     piece_found found[IC_PROFILE_MAX_MEETINGS];
-    const int nf = intersection_pieces(&pa, &pb, &ax, user_opt, L, found);
+    const int nf = coaxial_pieces(src, user_opt, L, &ax, found);
     if (nf < 0)
         return IC_OK;
     /* the marching's lengths at the size of what was found, as the search
@@ -374,8 +402,15 @@ ic_status ic_trace_exact_revolution(ic_trace_result *r, ic_pair *pair,
     for (int i = 0; i < nf; i++)
         if (found[i].rho > 0 && circle_arcs(&opt, found[i].rho) == 0)
             return IC_OK; /* the general path reports the budget */
+    ic_trace_point *pts[IC_PROFILE_MAX_MEETINGS];
+    int np[IC_PROFILE_MAX_MEETINGS];
+    const int st = circles_traced(pair, &ax, found, nf, src, &opt, L, pts, np);
+    if (st < 0)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory tracing a circle");
+    if (st > 0)
+        return IC_OK;
     *done = 1;
     r->scale = F;
-    closed_form_report(&r->report);
-    return add_pieces(r, &ax, found, nf, &opt, err);
+    closed_form_report(&r->report, nets);
+    return add_pieces(r, &ax, found, nf, pts, np, &opt, err);
 }

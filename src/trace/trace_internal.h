@@ -180,14 +180,16 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
                              ic_trace_point **pts_out, int *n_out, ic_error *err);
 
 /* exact_revolution.c: the pair in closed form when its surfaces are
- * coaxial surfaces of revolution (the user's options, relative; r->scale
- * the problem's size L): *done = 1 with r filled, its scale that of what
- * was found and its report complete, else *done = 0 and r untouched;
- * IC_ERR_NOMEM out of memory. The report's method strings. */
+ * coaxial surfaces of revolution, implicit primitives or NURBS patches
+ * recognised as them (the user's options, relative; r->scale the problem's
+ * size L): *done = 1 with r filled, its scale that of what was found and
+ * its report complete, else *done = 0 and r untouched; IC_ERR_NOMEM out of
+ * memory. The report's method strings. */
 ic_status ic_trace_exact_revolution(ic_trace_result *r, ic_pair *pair,
                                     const ic_trace_options *user_opt, int *done, ic_error *err);
 extern const char ic_trace_method_search[];
 extern const char ic_trace_method_revolution[];
+extern const char ic_trace_method_revolution_nets[];
 
 /* trace.c: adds the curve of the points pts (the result's from now on,
  * freed with it even when this fails) of a shape known; and a special point

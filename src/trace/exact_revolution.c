@@ -10,6 +10,7 @@
  * box cuts, axes only nearly one) is left to the general path, which stays
  * the reference (ic_trace_options.exact_paths = 0 always takes it).
  */
+#include "exact_common.h"
 #include "exact_profile.h"
 #include "trace_internal.h"
 #include "common/mathconst.h"
@@ -24,13 +25,6 @@
  * file's. */
 const char ic_trace_method_search[] = "search";
 const char ic_trace_method_revolution[] = "closed form: coaxial surfaces of revolution";
-
-/* relative length: a circle or contact point this near a face of the box
- * (inside or out) falls back: the general path decides what the box cuts */
-#define IC_EXACT_BOX_MARGIN 1e-6
-/* count: the fewest arcs a circle is traced in (the shape test and the
- * B-spline fit want a few points whatever the step rules allow) */
-#define IC_EXACT_MIN_ARCS 8
 
 /* A primitive of the pair and its frame (rows e1, e2, e3; e3 the axis or
  * the plane's unit normal). */
@@ -176,22 +170,23 @@ static void profile_of(const revolved *s, const axis *ax, ic_profile *pr)
     }
 }
 
+/* The centre of the circle of the axis of radius rho at height z, and its
+ * half-extent along each coordinate axis. */
+static void circle_extent(const axis *ax, double rho, double z, double centre[3], double ext[3])
+{
+    for (int k = 0; k < 3; k++) {
+        centre[k] = ax->o[k] + z * ax->e[k];
+        ext[k] = rho * sqrt(fmax(0.0, 1.0 - ax->e[k] * ax->e[k]));
+    }
+}
+
 /* Where a circle of the axis (a point when rho = 0) lies against the box
- * widened and narrowed by the margin: 1 inside, 0 outside, -1 across a
- * face or near one. */
+ * (ic_exact_box_side). */
 static int box_side(const ic_trace_options *opt, const axis *ax, double rho, double z, double L)
 {
-    const double m = IC_EXACT_BOX_MARGIN * L;
-    int inside = 1;
-    for (int k = 0; k < 3; k++) {
-        const double x = ax->o[k] + z * ax->e[k];
-        const double ext = rho * sqrt(fmax(0.0, 1.0 - ax->e[k] * ax->e[k]));
-        if (x + ext < opt->box[k][0] - m || x - ext > opt->box[k][1] + m)
-            return 0;
-        if (x - ext < opt->box[k][0] + m || x + ext > opt->box[k][1] - m)
-            inside = -1;
-    }
-    return inside;
+    double centre[3], ext[3];
+    circle_extent(ax, rho, z, centre, ext);
+    return ic_exact_box_side(opt, centre, ext, L);
 }
 
 /* The circles and contact points in the box: their count, or -1 where the
@@ -227,25 +222,11 @@ static int intersection_pieces(const ic_profile *pa, const ic_profile *pb, const
     return nf;
 }
 
-/* The step of the general tracer's rules on a circle of radius rho: the
- * truncation terms of orders K-1 and K (|c^(k)| = rho^(1-k)), the chord
- * height rho (1 - cos(h / (2 rho))) ~ h^2 / (8 rho), the longest step. */
-static double circle_step(const ic_trace_options *opt, double rho)
-{
-    double h = opt->max_step, fact = 1.0;
-    for (int k = 1; k <= opt->order; k++) {
-        fact *= k;
-        if (k >= opt->order - 1)
-            h = fmin(h, pow(opt->tol * fact * pow(rho, k - 1), 1.0 / k));
-    }
-    return fmin(h, sqrt(8 * opt->chord * rho));
-}
-
 /* The arcs a circle is traced in, a multiple of 8 (circle_points); 0 when
  * the point budget is too small. */
 static int circle_arcs(const ic_trace_options *opt, double rho)
 {
-    double n = ceil(2 * IC_PI * rho / circle_step(opt, rho) / 8) * 8;
+    double n = ceil(2 * IC_PI * rho / ic_exact_circle_step(opt, rho) / 8) * 8;
     n = n < IC_EXACT_MIN_ARCS ? IC_EXACT_MIN_ARCS : n;
     return n + 1 <= opt->max_points ? (int)n : 0;
 }
@@ -320,31 +301,17 @@ static ic_status add_pieces(ic_trace_result *r, const axis *ax, const piece_foun
     return IC_OK;
 }
 
-/* The size of what was found, as the search takes it for the marching's
- * lengths and the fit (ic_trace_found_scale): the diagonal of the box
- * around the circles and points, when between 1e-3 L and L; else L. */
+/* The size of what was found (ic_exact_found_scale): the box around the
+ * circles and points. */
 static double found_scale(double L, const axis *ax, const piece_found *found, int nf)
 {
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (int i = 0; i < nf; i++)
-        for (int k = 0; k < 3; k++) {
-            const double x = ax->o[k] + found[i].z * ax->e[k];
-            const double ext = found[i].rho * sqrt(fmax(0.0, 1.0 - ax->e[k] * ax->e[k]));
-            lo[k] = fmin(lo[k], x - ext), hi[k] = fmax(hi[k], x + ext);
-        }
-    double d2 = 0;
-    for (int k = 0; k < 3; k++)
-        d2 += hi[k] > lo[k] ? (hi[k] - lo[k]) * (hi[k] - lo[k]) : 0.0;
-    const double F = sqrt(d2);
-    return isfinite(F) && F > 1e-3 * L && F < L ? F : L;
-}
-
-/* The report of a closed form: nothing searched, nothing left open. */
-static void closed_form_report(ic_trace_report *rep)
-{
-    rep->complete = 1;
-    rep->proven = 1;
-    rep->method = ic_trace_method_revolution;
+    for (int i = 0; i < nf; i++) {
+        double centre[3], ext[3];
+        circle_extent(ax, found[i].rho, found[i].z, centre, ext);
+        ic_exact_extent_add(lo, hi, centre, ext);
+    }
+    return ic_exact_found_scale(L, lo, hi);
 }
 
 ic_status ic_trace_exact_revolution(ic_trace_result *r, ic_pair *pair,
@@ -376,6 +343,6 @@ ic_status ic_trace_exact_revolution(ic_trace_result *r, ic_pair *pair,
             return IC_OK; /* the general path reports the budget */
     *done = 1;
     r->scale = F;
-    closed_form_report(&r->report);
+    ic_exact_report(&r->report, ic_trace_method_revolution);
     return add_pieces(r, &ax, found, nf, &opt, err);
 }

@@ -50,7 +50,10 @@ static void section(ic_exact_ellipse *e, const ic_quadric *A, const ic_quadric *
     memcpy(e->u, u, sizeof e->u);
     memcpy(e->v, v, sizeof e->v);
     e->a = r, e->b = h;
-    e->branch_ends = 1;
+    /* the reflection in the plane of the axes (m to -m: theta to pi -
+     * theta) and the point reflection through c (theta to theta + pi) map each
+     * cylinder to itself */
+    e->branch_ends = e->symmetric = 1;
     ic_quadric_gradient_along(A, e, e->grad[0]);
     ic_quadric_gradient_along(B, e, e->grad[1]);
 }

@@ -10,12 +10,15 @@
  * surface's gradient along it is affine in the cosine and sine (both
  * surfaces are planes or quadrics): grad[s][0] + cos(theta) grad[s][1] +
  * sin(theta) grad[s][2]. branch_ends: the points at theta = 0 and pi are
- * branch points, where the normals are parallel (their angle written 0). */
+ * branch points, where the normals are parallel (their angle written 0).
+ * symmetric: the angle between the normals is the same at theta, -theta
+ * and pi - theta (the pair is symmetric under reflections mapping the
+ * ellipse to itself so): it is computed on the first quadrant only. */
 typedef struct {
     double c[3], u[3], v[3];
     double a, b;
     double grad[2][3][3];
-    int branch_ends;
+    int branch_ends, symmetric;
 } ic_exact_ellipse;
 
 /* How an ellipse is written: n arcs of equal angle (a multiple of 8), the

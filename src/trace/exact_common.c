@@ -3,8 +3,8 @@
 
 #include <math.h>
 
-int ic_exact_box_side(const ic_trace_options *opt, const double centre[3],
-                      const double extent[3], double L)
+int ic_exact_box_side(const ic_trace_options *opt, const double centre[3], const double extent[3],
+                      double L)
 {
     const double m = IC_EXACT_BOX_MARGIN * L;
     int inside = 1;
@@ -29,8 +29,7 @@ double ic_exact_circle_step(const ic_trace_options *opt, double rho)
     return fmin(h, sqrt(8 * opt->chord * rho));
 }
 
-void ic_exact_extent_add(double lo[3], double hi[3], const double centre[3],
-                         const double extent[3])
+void ic_exact_extent_add(double lo[3], double hi[3], const double centre[3], const double extent[3])
 {
     for (int k = 0; k < 3; k++) {
         lo[k] = fmin(lo[k], centre[k] - extent[k]);

@@ -17,8 +17,8 @@
 /* Where a closed curve lies against the box widened and narrowed by the
  * margin, from its centre and its half-extent along each coordinate axis
  * (0 for a point): 1 inside, 0 outside, -1 across a face or near one. */
-int ic_exact_box_side(const ic_trace_options *opt, const double centre[3],
-                      const double extent[3], double L);
+int ic_exact_box_side(const ic_trace_options *opt, const double centre[3], const double extent[3],
+                      double L);
 
 /* The step of the general tracer's rules (options absolute) on a circle of
  * radius rho: the truncation terms of orders K-1 and K with |c^(k)| =

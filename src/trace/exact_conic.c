@@ -46,8 +46,7 @@ static int plane_and_quadric(const ic_primitive *plane, const ic_quadric *q, int
 
 /* The conics of the two primitives: 0 with them in *f, -1 where the general
  * path must decide. */
-static int conic_pieces(const ic_primitive *pa, const ic_primitive *pb, double L,
-                        ic_conic_found *f)
+static int conic_pieces(const ic_primitive *pa, const ic_primitive *pb, double L, ic_conic_found *f)
 {
     memset(f, 0, sizeof *f);
     ic_quadric q[2];
@@ -98,9 +97,8 @@ static double found_scale(double L, const ic_conic_found *f)
 
 /* The ellipses, then the branch points (exact: located in closed form, of
  * two branches each, as the search classifies them). */
-static ic_status add_found(ic_trace_result *r, const ic_conic_found *f,
-                           const ic_ellipse_plan *plan, const ic_trace_options *opt,
-                           ic_error *err)
+static ic_status add_found(ic_trace_result *r, const ic_conic_found *f, const ic_ellipse_plan *plan,
+                           const ic_trace_options *opt, ic_error *err)
 {
     for (int i = 0; i < f->nellipses; i++) {
         const ic_status st = ic_exact_add_ellipse(r, &f->ellipse[i], &plan[i], opt, err);
@@ -116,9 +114,8 @@ static ic_status add_found(ic_trace_result *r, const ic_conic_found *f,
 }
 
 ic_status ic_trace_exact_conic_primitives(ic_trace_result *r, const ic_primitive *pa,
-                                          const ic_primitive *pb,
-                                          const ic_trace_options *user_opt, int *done,
-                                          ic_error *err)
+                                          const ic_primitive *pb, const ic_trace_options *user_opt,
+                                          int *done, ic_error *err)
 {
     *done = 0;
     const double L = r->scale;
@@ -144,8 +141,8 @@ ic_status ic_trace_exact_conic_primitives(ic_trace_result *r, const ic_primitive
     return add_found(r, &f, plan, &opt, err);
 }
 
-ic_status ic_trace_exact_conic(ic_trace_result *r, ic_pair *pair,
-                               const ic_trace_options *user_opt, int *done, ic_error *err)
+ic_status ic_trace_exact_conic(ic_trace_result *r, ic_pair *pair, const ic_trace_options *user_opt,
+                               int *done, ic_error *err)
 {
     *done = 0;
     if (!user_opt->exact_paths || !user_opt->has_box || ic_pair_is_self(pair))

@@ -42,8 +42,8 @@ static int axes_meet(const ic_quadric *A, const ic_quadric *B, double L, double 
 
 /* The ellipse c + r cos(theta) u + h sin(theta) v on A, traced from the
  * branch point c + r u, with both cylinders' gradients along it. */
-static void section(ic_exact_ellipse *e, const ic_quadric *A, const ic_quadric *B,
-                    const double *c, const double *u, const double *v, double r, double h)
+static void section(ic_exact_ellipse *e, const ic_quadric *A, const ic_quadric *B, const double *c,
+                    const double *u, const double *v, double r, double h)
 {
     memset(e, 0, sizeof *e);
     memcpy(e->c, c, sizeof e->c);

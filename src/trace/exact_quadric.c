@@ -78,8 +78,7 @@ typedef struct {
  * W^T D w. det A2 by Cauchy-Binet: the 2x2 minors of W are the components
  * of u1 x u2 = n in the frame, so det = d1 d2 nu3^2 + d1 d3 nu2^2 + d2 d3
  * nu1^2, free of the cancellation of A11 A22 - A12^2 where all d_i agree. */
-static void restrict_to_plane(const ic_quadric *q, const double (*pf)[3], double delta,
-                              conic2 *cn)
+static void restrict_to_plane(const ic_quadric *q, const double (*pf)[3], double delta, conic2 *cn)
 {
     double W[3][2], nu[3], w[3];
     for (int i = 0; i < 3; i++) {
@@ -98,8 +97,8 @@ static void restrict_to_plane(const ic_quadric *q, const double (*pf)[3], double
         }
     }
     const double *d = q->d;
-    cn->det = d[0] * d[1] * nu[2] * nu[2] + d[0] * d[2] * nu[1] * nu[1] +
-              d[1] * d[2] * nu[0] * nu[0];
+    cn->det =
+        d[0] * d[1] * nu[2] * nu[2] + d[0] * d[2] * nu[1] * nu[1] + d[1] * d[2] * nu[0] * nu[0];
     ic_axpy3(cn->o, q->c, -delta, pf[2]);
 }
 

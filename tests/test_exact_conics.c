@@ -680,12 +680,30 @@ static void fall_back_cases(void)
     const double near_apex[3] = {0, 0, 3e-4};
     check_fall_back("cone and a plane by its apex", &cone,
                     (ic_primitive[]){primitive(IC_PRIM_PLANE, near_apex, mild)}, 1.5);
-    /* an ellipsoid nearly touched: a gap of 1e-7 L */
+    /* an ellipsoid nearly touched: planes 5e-7 L (within IC_EXACT_NEAR, the
+     * normals 1.8e-3 rad apart) and 1e-7 L (8e-4 rad) below its top */
     ic_primitive ell = primitive(IC_PRIM_ELLIPSOID, o, z);
     ell.axes[0] = 1, ell.axes[1] = 0.8, ell.axes[2] = 0.6;
-    const double top[3] = {0, 0, 0.6 - 1e-7 * 3 * sqrt(3)};
-    check_fall_back("ellipsoid nearly touched by a plane", &ell,
-                    (ic_primitive[]){primitive(IC_PRIM_PLANE, top, z)}, 1.5);
+    for (int i = 0; i < 2; i++) {
+        const double top[3] = {0, 0, 0.6 - (i ? 1e-7 : 5e-7) * 3 * sqrt(3)};
+        check_fall_back(i ? "ellipsoid nearly touched by a plane, 8e-4 rad"
+                          : "ellipsoid nearly touched by a plane, 5e-7 L",
+                        &ell, (ic_primitive[]){primitive(IC_PRIM_PLANE, top, z)}, 1.5);
+    }
+    /* a flat ellipsoid (radius of curvature 30 at its top) cut 1e-5 below
+     * its top: the gap 2e-6 L is clear of IC_EXACT_NEAR, the normals only
+     * 8e-4 rad apart */
+    ell.axes[0] = ell.axes[1] = 3, ell.axes[2] = 0.3;
+    const double flat_top[3] = {0, 0, 0.3 - 1e-5};
+    check_fall_back("flat ellipsoid cut by a plane at 8e-4 rad", &ell,
+                    (ic_primitive[]){primitive(IC_PRIM_PLANE, flat_top, z)}, 1.5);
+    /* a sphere crossed 1e-6 below its pole: the revolution path leaves it
+     * to the general path (a nearly tangent profile), and so must this one */
+    ic_primitive sphere = primitive(IC_PRIM_SPHERE, o, z);
+    sphere.radius = 1;
+    const double pole[3] = {0, 0, 1 - 1e-6};
+    check_fall_back("sphere and a plane 1e-6 below its pole", &sphere,
+                    (ic_primitive[]){primitive(IC_PRIM_PLANE, pole, z)}, 2);
     /* two cylinders of radius 1 about z and y: radii 1e-9 apart, axes that
      * miss by 1e-9; about z and 1e-2 rad from it, nearly parallel (an
      * ellipse 200 times longer than wide; the general path takes 150 s

@@ -5,6 +5,8 @@
 
 #include "trace_internal.h"
 
+#include <math.h>
+
 /* p(theta) = c + a cos(theta) u + b sin(theta) v, u and v orthonormal, a
  * and b positive in either order, traced from theta = 0 towards v. Each
  * surface's gradient along it is affine in the cosine and sine (both
@@ -21,11 +23,21 @@ typedef struct {
     int branch_ends, symmetric;
 } ic_exact_ellipse;
 
-/* How an ellipse is written: n arcs of equal angle (a multiple of 8), the
- * arc length of each by Gauss-Legendre on `split` equal parts. */
+/* How an ellipse is written (exact_ellipse_plan.c): n arcs (a multiple of
+ * 8) of equal angle phi, tan(theta) = r tan(phi); the arc length of each
+ * by Gauss-Legendre on `split` equal parts. */
 typedef struct {
     int n, split;
+    double r;
 } ic_ellipse_plan;
+
+/* The cosine and sine of theta from those of phi. */
+static inline void ic_ellipse_theta(const ic_ellipse_plan *plan, double cphi, double sphi,
+                                    double *ctheta, double *stheta)
+{
+    const double rs = plan->r * sphi, inv = 1 / sqrt(cphi * cphi + rs * rs);
+    *ctheta = cphi * inv, *stheta = rs * inv;
+}
 
 /* The half-extent of the ellipse along each coordinate axis:
  * sqrt((a u_k)^2 + (b v_k)^2). */
@@ -36,6 +48,12 @@ void ic_exact_ellipse_extent(const ic_exact_ellipse *e, double extent[3]);
  * its arc length cannot be bounded to rounding. */
 int ic_exact_ellipse_plan(const ic_trace_options *opt, const ic_exact_ellipse *e,
                           ic_ellipse_plan *plan);
+
+/* The arc length S[j] from phi = 0 to phi_j = 2 pi j / n, j = 0..n/4, from
+ * the cosines and sines phi[j] of those angles; summed with Kahan's
+ * compensation. */
+void ic_exact_quarter_lengths(const ic_exact_ellipse *e, const ic_ellipse_plan *plan,
+                              const double (*phi)[2], double *S);
 
 /* Adds it to r as a closed transversal curve, its shape that of the shape
  * test. IC_ERR_NOMEM out of memory. */

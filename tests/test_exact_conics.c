@@ -43,6 +43,17 @@ static const char CLOSED_FORM[] = "closed form: plane sections of quadrics";
 #define EXACT_ARC 1e-13
 #define EXACT_S_ROUNDING (4 * DBL_EPSILON)
 #define EXACT_LENGTH (16 * DBL_EPSILON)
+/* relative: how far a step may exceed the marching's rules at its start
+ * point: the spacing keeps them at every point's own radius of curvature,
+ * which changes along the step (measured 9.4e-4) */
+#define SPACING_SLACK 1e-2
+/* ratio: the most arcs an ellipse may take for the fewest the rules allow
+ * (spacing equal in one angle cannot follow them everywhere): up to an
+ * aspect of 4, and beyond (exact_ellipse_plan.c: 1.1 at 4, 4.6 at 100;
+ * measured 5.8 on the needle of aspect 120; equal spacing in theta takes
+ * 2.9 at 4, 48 at 100) */
+#define SPACING_EXCESS_LOW 1.25
+#define SPACING_EXCESS_HIGH 8
 /* relative: the general path's lengths against the exact ones (its
  * truncation error per step is 1e-11 L at most, of either sign along a
  * closed curve: measured 3.5e-13 at worst on these cases; the exact
@@ -230,34 +241,38 @@ static void plane_cylinder(harness_rng *g, conic_case *c)
  * about z0 = h' N / |N|^2 of radius sqrt(1 - h'^2 / |N|^2), N = S R n, h' =
  * h - n.c0; its image is the ellipse, conjugate semi-diameters the images
  * of two orthogonal radii. */
-static void plane_ellipsoid(harness_rng *g, conic_case *c)
+static void ellipsoid_section(conic_case *c, const double *c0, const double (*e)[3],
+                              const double *S, const double *n, double frac, const double *x)
 {
-    double e[3][3], n[3], N[3], f0[3], f1[3], c0[3], S[3];
-    random_unit(g, e[2]), normal_to(g, e[2], e[0]), cross(e[1], e[2], e[0]);
-    random_unit(g, n);
-    for (int k = 0; k < 3; k++)
-        c0[k] = harness_uniform(g, -0.3, 0.3), S[k] = harness_uniform(g, 0.5, 1.5);
+    double N[3], f0[3], f1[3];
     for (int i = 0; i < 3; i++)
         N[i] = S[i] * dot(e[i], n);
-    const double lenN = norm(N), hp = harness_uniform(g, -0.7, 0.7) * lenN;
-    const double rho = sqrt(1 - (hp / lenN) * (hp / lenN));
-    normal_to(g, N, f0), cross(f1, N, f0), unit(f1);
-    double C[3];
+    const double lenN = norm(N), hp = frac * lenN, rho = sqrt(1 - frac * frac);
+    cross(f0, N, x), unit(f0), cross(f1, N, f0), unit(f1);
     ellipse *el = &c->ell[0];
     for (int k = 0; k < 3; k++) {
-        C[k] = c0[k], el->P[k] = el->Q[k] = 0;
+        el->C[k] = c0[k], el->P[k] = el->Q[k] = 0;
         for (int i = 0; i < 3; i++) {
-            C[k] += e[i][k] * S[i] * hp * N[i] / (lenN * lenN);
+            el->C[k] += e[i][k] * S[i] * hp * N[i] / (lenN * lenN);
             el->P[k] += e[i][k] * S[i] * rho * f0[i];
             el->Q[k] += e[i][k] * S[i] * rho * f1[i];
         }
-        el->C[k] = C[k];
     }
     c->prim[0] = primitive(IC_PRIM_ELLIPSOID, c0, e[2]);
     memcpy(c->prim[0].ref_direction, e[0], sizeof e[0]);
-    memcpy(c->prim[0].axes, S, sizeof S);
-    c->prim[1] = primitive(IC_PRIM_PLANE, C, n);
+    memcpy(c->prim[0].axes, S, sizeof c->prim[0].axes);
+    c->prim[1] = primitive(IC_PRIM_PLANE, el->C, n);
     c->nellipses = 1;
+}
+
+static void plane_ellipsoid(harness_rng *g, conic_case *c)
+{
+    double e[3][3], n[3], x[3], c0[3], S[3];
+    random_unit(g, e[2]), normal_to(g, e[2], e[0]), cross(e[1], e[2], e[0]);
+    random_unit(g, n), random_unit(g, x);
+    for (int k = 0; k < 3; k++)
+        c0[k] = harness_uniform(g, -0.3, 0.3), S[k] = harness_uniform(g, 0.5, 1.5);
+    ellipsoid_section(c, c0, (const double(*)[3])e, S, n, harness_uniform(g, -0.7, 0.7), x);
 }
 
 /* y^T M y for M = I - (1 + t^2) a a^T, the cone's form about its apex. */
@@ -441,6 +456,63 @@ static void check_points(const conic_case *c, const traced_pair *t, const ic_tra
           angle_err);
 }
 
+/* The marching's step rules on a circle of radius rho (docs/tracing.md, "A
+ * step"; "Exact paths"), lengths absolute at the size F: the truncation
+ * terms of orders K-1 and K with |c^(k)| = rho^(1-k), the chord height
+ * h^2 / (8 rho), the longest step. */
+static double rule_step(const ic_trace_options *o, double F, double rho)
+{
+    double h = o->max_step * F, fact = 1;
+    for (int k = 1; k <= o->order; k++) {
+        fact *= k;
+        if (k >= o->order - 1)
+            h = fmin(h, pow(o->tol * F * fact * pow(rho, k - 1), 1.0 / k));
+    }
+    return fmin(h, sqrt(8 * o->chord * F * rho));
+}
+
+/* The size the exact path takes for its lengths, as the search would: the
+ * diagonal of the box around the ellipses (C +- sqrt(P_k^2 + Q_k^2) along
+ * each axis) when between 1e-3 L and L (docs/tracing.md, "Scale"). */
+static double found_size(const conic_case *c, double L)
+{
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY},
+           d2 = 0;
+    for (int i = 0; i < c->nellipses; i++)
+        for (int k = 0; k < 3; k++) {
+            const ellipse *e = &c->ell[i];
+            const double ext = hypot(e->P[k], e->Q[k]);
+            lo[k] = fmin(lo[k], e->C[k] - ext), hi[k] = fmax(hi[k], e->C[k] + ext);
+        }
+    for (int k = 0; k < 3; k++)
+        d2 += (hi[k] - lo[k]) * (hi[k] - lo[k]);
+    return sqrt(d2) > 1e-3 * L && sqrt(d2) < L ? sqrt(d2) : L;
+}
+
+/* Every step of an exact curve within the marching's rules at the radius
+ * of curvature where it starts (as the marching takes them), but for
+ * SPACING_SLACK; and no more points than SPACING_EXCESS times the fewest
+ * those rules allow (the sum of ds / h). */
+static void check_spacing(const conic_case *c, const traced_pair *t, const ic_trace_curve *cv,
+                          int i)
+{
+    ic_trace_options o;
+    ic_trace_defaults(&o);
+    const double F = found_size(c, t->L);
+    double worst = 0, fewest = 0, a, b;
+    for (int k = 0; k + 1 < cv->npoints; k++) {
+        const double ds = cv->points[k + 1].s - cv->points[k].s;
+        const double h = rule_step(&o, F, 1 / cv->points[k].kappa);
+        worst = fmax(worst, ds / h), fewest += ds / h;
+    }
+    semi_axes(&c->ell[i], &a, &b);
+    const double excess = a <= 4 * b ? SPACING_EXCESS_LOW : SPACING_EXCESS_HIGH;
+    CHECK(worst <= 1 + SPACING_SLACK && cv->npoints - 1 <= excess * fewest,
+          "%s: ellipse %d: steps within %.4f of the rules' at their start, %d arcs where the "
+          "rules allow %.0f",
+          c->name, i, worst, cv->npoints - 1, fewest);
+}
+
 /* The exact path's result against the derived ellipses and points. */
 static void check_exact(const conic_case *c, const traced_pair *t)
 {
@@ -467,6 +539,7 @@ static void check_exact(const conic_case *c, const traced_pair *t)
         CHECK(fabs(cv->length - length) <= EXACT_LENGTH * length,
               "%s: ellipse %d: length %.17g, 4 a E(m) = %.17g", c->name, i, cv->length, length);
         check_points(c, t, cv, i);
+        check_spacing(c, t, cv, i);
     }
     for (int k = 0; k < ns; k++) {
         const ic_trace_special *sp = ic_trace_result_special(r, k);
@@ -585,6 +658,31 @@ static void steinmetz(void)
               x[0], x[1], x[2]);
     }
     release_pair(&t);
+}
+
+/* Eccentric ellipses. A needle: the ellipsoid of semi-axes 1.2, 0.01, 0.01
+ * cut through its centre by a plane along its long axis, an ellipse 120
+ * times longer than wide. */
+static void eccentric(void)
+{
+    conic_case c;
+    memset(&c, 0, sizeof c);
+    snprintf(c.name, sizeof c.name, "a needle ellipsoid's ellipse of aspect 120");
+    const double o[3] = {0, 0, 0}, e[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const double S[3] = {1.2, 0.01, 0.01}, n[3] = {0, 1, 0.2}, x[3] = {0, 0, 1};
+    ellipsoid_section(&c, o, e, S, n, 0, x);
+    c.half = 1.5;
+    run_case(&c);
+    /* two cylinders of radius 0.01 crossing at 0.02 rad: one ellipse 100
+     * times longer than wide, its minor axis first (theta = 0 at a branch
+     * point): the longest step binds at the flat ends, and the spacing's
+     * tightest place is inside a quadrant */
+    memset(&c, 0, sizeof c);
+    snprintf(c.name, sizeof c.name, "thin cylinders crossing at 0.02 rad");
+    const double z[3] = {0, 0, 1}, tilted[3] = {0, sin(0.02), cos(0.02)};
+    equal_cylinders(&c, o, z, tilted, 0.01);
+    c.half = 1.5;
+    run_case(&c);
 }
 
 enum { PLANE_CYLINDER, PLANE_ELLIPSOID, PLANE_CONE, EQUAL_CYLINDERS, NFAMILIES };
@@ -726,6 +824,7 @@ int main(void)
     agm_against_mpmath();
     steinmetz();
     random_cases(3 * harness_multiplier());
+    eccentric();
     plane_misses();
     coaxial_stays();
     fall_back_cases();

@@ -52,27 +52,20 @@ static double phi_step_at(const ic_trace_options *opt, const ic_exact_ellipse *e
     return ic_exact_circle_step(opt, rho) / v * r / (r * r + (1 - r * r) * u);
 }
 
-/* The smallest of phi_step_at over the ellipse. Each rule is a power of
- * rho, h = C rho^x (the longest step x = 0, the chord height 1/2, the
- * truncation terms (k-1)/k for k = K-1, K), so its phi step is C' (alpha +
- * beta u)^p / (gamma + delta u) with p = (3x - 1) / 2, alpha = b^2, beta =
- * a^2 - b^2, gamma = r^2, delta = 1 - r^2: on [0, 1] smallest at an end or
- * where its logarithm's derivative p beta / (alpha + beta u) - delta /
- * (gamma + delta u) vanishes, u* = (delta alpha - p beta gamma) / (beta
- * delta (p - 1)). The smallest of all rules is at one of those places. */
+/* The smallest of phi_step_at over the ellipse: at the end of an axis, u =
+ * 0 or 1. Each rule is a power of rho, h = C rho^x (the longest step x =
+ * 0, the chord height 1/2, a truncation term of order k (k-1)/k), so its
+ * phi step is C' (alpha + beta u)^p / (gamma + delta u) with p = (3x - 1)
+ * / 2, alpha = b^2, beta = a^2 - b^2, gamma = r^2, delta = 1 - r^2. Where
+ * the logarithm's derivative p beta / (alpha + beta u) - delta / (gamma +
+ * delta u) vanishes, its second derivative is (p^2 - p) (beta / (alpha +
+ * beta u))^2: negative for the chord and the truncation terms (0 < p < 1),
+ * a maximum. The longest step (p = -1/2) has both factors of the same
+ * monotony in u (beta and delta have the sign of a - b). The smallest of
+ * all rules over [0, 1] is the smallest of their smallest: at an end. */
 static double phi_step(const ic_trace_options *opt, const ic_exact_ellipse *e, double r)
 {
-    const double alpha = e->b * e->b, beta = e->a * e->a - alpha, gamma = r * r;
-    const double delta = 1 - gamma, K = opt->order;
-    const double x[4] = {0, 0.5, (K - 2) / (K - 1), (K - 1) / K};
-    double h = fmin(phi_step_at(opt, e, r, 0), phi_step_at(opt, e, r, 1));
-    for (int i = 0; i < 4 && beta != 0 && delta != 0; i++) {
-        const double p = 0.5 * (3 * x[i] - 1);
-        const double u = (delta * alpha - p * beta * gamma) / (beta * delta * (p - 1));
-        if (u > 0 && u < 1)
-            h = fmin(h, phi_step_at(opt, e, r, u));
-    }
-    return h;
+    return fmin(phi_step_at(opt, e, r, 0), phi_step_at(opt, e, r, 1));
 }
 
 /* A bound on the error of 8-node Gauss-Legendre over `parts` intervals of

@@ -685,6 +685,48 @@ static void eccentric(void)
     run_case(&c);
 }
 
+/* Coarse options (8 arcs for the whole ellipse, the fewest): the
+ * quadrature of each arc must be split for its bound, and the length still
+ * be 4 a E(m). A cylinder cut at acos(1/8) to its axis: an ellipse 8 times
+ * longer than wide. */
+static void coarse_steps(void)
+{
+    const double o[3] = {0, 0, 0}, z[3] = {0, 0, 1};
+    const double n[3] = {sqrt(63) / 8, 0, 1.0 / 8}, y[3] = {0, 1, 0},
+                 d[3] = {1.0 / 8, 0, -sqrt(63) / 8};
+    conic_case c;
+    memset(&c, 0, sizeof c);
+    c.prim[0] = primitive(IC_PRIM_CYLINDER, o, z), c.prim[0].radius = 0.1;
+    c.prim[1] = primitive(IC_PRIM_PLANE, o, n);
+    for (int k = 0; k < 3; k++)
+        c.ell[0].P[k] = 0.1 * y[k], c.ell[0].Q[k] = 0.8 * d[k];
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    opt.tol = 1e-2, opt.chord = 0.5, opt.max_step = 1, opt.has_box = 1;
+    for (int k = 0; k < 3; k++)
+        opt.box[k][0] = -1, opt.box[k][1] = 1;
+    ic_surface *S[2] = {NULL, NULL};
+    ic_pair *pair = NULL;
+    ic_trace_result *r = NULL;
+    ic_error err;
+    if (REQUIRE(ic_surface_new_primitive(&S[0], &c.prim[0], IC_IMPLICIT, &err) == IC_OK &&
+                    ic_surface_new_primitive(&S[1], &c.prim[1], IC_IMPLICIT, &err) == IC_OK &&
+                    ic_pair_new(&pair, S[0], S[1], &err) == IC_OK &&
+                    ic_trace(&r, pair, &opt, &err) == IC_OK,
+                "coarse steps: traced: %s", err.message) &&
+        REQUIRE(ic_trace_result_num_curves(r) == 1, "coarse steps: one ellipse")) {
+        const ic_trace_curve *cv = ic_trace_result_curve(r, 0);
+        const double length = ellipse_length(&c.ell[0]);
+        CHECK(cv->npoints == 9 && fabs(cv->length - length) <= EXACT_LENGTH * length,
+              "coarse steps: %d points, length %.17g, 4 a E(m) = %.17g", cv->npoints, cv->length,
+              length);
+    }
+    ic_trace_result_free(r);
+    ic_pair_free(pair);
+    ic_surface_free(S[0]);
+    ic_surface_free(S[1]);
+}
+
 enum { PLANE_CYLINDER, PLANE_ELLIPSOID, PLANE_CONE, EQUAL_CYLINDERS, NFAMILIES };
 static const char *const FAMILY[NFAMILIES] = {"plane/cylinder", "plane/ellipsoid", "plane/cone",
                                               "equal cylinders"};
@@ -825,6 +867,7 @@ int main(void)
     steinmetz();
     random_cases(3 * harness_multiplier());
     eccentric();
+    coarse_steps();
     plane_misses();
     coaxial_stays();
     fall_back_cases();

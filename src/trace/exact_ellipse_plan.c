@@ -29,7 +29,9 @@ static const double SPACING_EXPONENT[3] = {0.45, 0.55, 0.7};
 #define IC_EXACT_ARC_REL DBL_EPSILON
 /* count: the most equal parts an arc is split into for its quadrature;
  * where even that cannot bound the error the general path traces the
- * curve (never at the aspects the conic paths accept: 2 parts at 1e3) */
+ * curve. With the default options an ellipse of aspect 1e3 (the most the
+ * conic paths accept) needs 4; only coarse steps on long ellipses need
+ * more (8 arcs at aspect 100: 64) */
 #define IC_EXACT_MAX_SPLIT 64
 
 /* Gauss-Legendre, 8 nodes on [-1, 1] (Abramowitz and Stegun (1964), table

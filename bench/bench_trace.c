@@ -2,8 +2,8 @@
  * tolerances 1e-6, 1e-10, 1e-12, with the largest distance of an output
  * point to either surface: first single curves from a given start point,
  * then the whole intersection of the bundled examples, then the exact paths
- * of three coaxial pairs of primitives against the search (usage:
- * bench_trace [EXAMPLES_DIR]). */
+ * of three coaxial pairs of primitives and two conic ones against the
+ * search (usage: bench_trace [EXAMPLES_DIR]). */
 #include <math.h>
 #include <stdio.h>
 
@@ -135,8 +135,9 @@ static double best_of_three(whole_job *j)
     return best;
 }
 
-/* The issue's three coaxial pairs of implicit primitives, traced whole with
- * the exact path and with the search (exact_paths = 0). */
+/* The issue's three coaxial pairs of implicit primitives and two conic
+ * ones (Steinmetz's cylinders, a cylinder cut at 60 degrees to its axis),
+ * traced whole with the exact path and with the search (exact_paths = 0). */
 static int exact_cases(void)
 {
     const ic_primitive Z = {.kind = IC_PRIM_SPHERE};
@@ -144,18 +145,24 @@ static int exact_cases(void)
         const char *name;
         ic_primitive A, B;
         double half;
-    } cases[3] = {{"sphere r 1, plane z = 1/2", Z, Z, 2},
+    } cases[5] = {{"sphere r 1, plane z = 1/2", Z, Z, 2},
                   {"torus 2, 1/2 on sphere r 5/2", Z, Z, 3},
-                  {"sphere on plane z = 0 (point)", Z, Z, 2}};
+                  {"sphere on plane z = 0 (point)", Z, Z, 2},
+                  {"cylinders z, y r 1 (Steinmetz)", Z, Z, 1.5},
+                  {"cylinder r 1, plane at 60 deg", Z, Z, 2.5}};
     cases[0].A.radius = 1;
     cases[0].B = (ic_primitive){.kind = IC_PRIM_PLANE, .center = {0, 0, 0.5}, .normal = {0, 0, 1}};
     cases[1].A = (ic_primitive){.kind = IC_PRIM_TORUS, .major_radius = 2, .radius = 0.5};
     cases[1].B.radius = 2.5;
     cases[2].A = (ic_primitive){.kind = IC_PRIM_SPHERE, .center = {0, 0, 1}, .radius = 1};
     cases[2].B = (ic_primitive){.kind = IC_PRIM_PLANE, .normal = {0, 0, 1}};
-    printf("\n%-30s %6s %6s %14s %14s\n", "coaxial primitives (box)", "curves", "special",
+    cases[3].A = (ic_primitive){.kind = IC_PRIM_CYLINDER, .radius = 1};
+    cases[3].B = (ic_primitive){.kind = IC_PRIM_CYLINDER, .radius = 1, .axis = {0, 1, 0}};
+    cases[4].A = cases[3].A;
+    cases[4].B = (ic_primitive){.kind = IC_PRIM_PLANE, .normal = {0.8660254037844386, 0, 0.5}};
+    printf("\n%-30s %6s %6s %14s %14s\n", "exact primitives (box)", "curves", "special",
            "exact (us)", "search (ms)");
-    for (int c = 0; c < 3; c++) {
+    for (int c = 0; c < 5; c++) {
         ic_surface *A = NULL, *B = NULL;
         whole_job j = {0};
         if (ic_surface_new_primitive(&A, &cases[c].A, IC_IMPLICIT, NULL) ||

@@ -8,9 +8,9 @@
  * apex on the other surface, a circle the box cuts) must give exactly what
  * the general path gives. */
 #include <math.h>
-#include <stdint.h>
 #include <string.h>
 
+#include "exact_pair.h"
 #include "harness.h"
 #include "intercurve.h"
 
@@ -33,29 +33,17 @@
 
 static const char CLOSED_FORM[] = "closed form: coaxial surfaces of revolution";
 
-/* xorshift64*: the same cases on every machine. */
-typedef struct {
-    uint64_t s;
-} rng;
-
-static double uniform(rng *g, double lo, double hi)
-{
-    g->s ^= g->s >> 12, g->s ^= g->s << 25, g->s ^= g->s >> 27;
-    const uint64_t x = g->s * 2685821657736338717ULL;
-    return lo + (hi - lo) * (double)(x >> 11) / 9007199254740992.0;
-}
-
 /* The common axis: through o along the unit e, u normal to it. */
 typedef struct {
     double o[3], e[3], u[3];
 } axis;
 
-static void random_axis(rng *g, axis *ax)
+static void random_axis(harness_rng *g, axis *ax)
 {
     double n = 0;
     for (int k = 0; k < 3; k++) {
-        ax->o[k] = uniform(g, -0.3, 0.3);
-        ax->e[k] = uniform(g, -1, 1);
+        ax->o[k] = harness_uniform(g, -0.3, 0.3);
+        ax->e[k] = harness_uniform(g, -1, 1);
         n += ax->e[k] * ax->e[k];
     }
     n = sqrt(n);
@@ -114,46 +102,11 @@ static void add_circle(exact_case *c, double rho, double z, int tangential)
     c->tangential[c->ncircles++] = tangential;
 }
 
-/* ---- traces ---- */
-
-typedef struct {
-    ic_surface *S[2];
-    ic_pair *pair;
-    ic_trace_result *res[2]; /* general path, exact path */
-    double L;
-} traced_pair;
-
-static ic_status trace_with(traced_pair *t, const exact_case *c, int exact, ic_error *err)
-{
-    ic_trace_options opt;
-    ic_trace_defaults(&opt);
-    opt.exact_paths = exact;
-    opt.has_box = 1;
-    for (int k = 0; k < 3; k++)
-        opt.box[k][0] = -c->half, opt.box[k][1] = c->half;
-    t->L = 2 * c->half * sqrt(3.0);
-    return ic_trace(&t->res[exact], t->pair, &opt, err);
-}
+/* ---- traces (exact_pair.h) ---- */
 
 static int trace_both(traced_pair *t, const exact_case *c)
 {
-    ic_error err;
-    memset(t, 0, sizeof *t);
-    return REQUIRE(ic_surface_new_primitive(&t->S[0], &c->prim[0], IC_IMPLICIT, &err) == IC_OK &&
-                       ic_surface_new_primitive(&t->S[1], &c->prim[1], IC_IMPLICIT, &err) ==
-                           IC_OK &&
-                       ic_pair_new(&t->pair, t->S[0], t->S[1], &err) == IC_OK &&
-                       trace_with(t, c, 1, &err) == IC_OK && trace_with(t, c, 0, &err) == IC_OK,
-                   "%s: traced: %s", c->name, err.message);
-}
-
-static void release(traced_pair *t)
-{
-    for (int i = 0; i < 2; i++) {
-        ic_trace_result_free(t->res[i]);
-        ic_surface_free(t->S[i]);
-    }
-    ic_pair_free(t->pair);
+    return trace_pair_both(t, &c->prim[0], &c->prim[1], c->half, c->name);
 }
 
 /* ---- geometry about the axis ---- */
@@ -336,7 +289,7 @@ static void run_case(const exact_case *c)
         check_exact(&t, c);
         check_against_general(&t, c);
     }
-    release(&t);
+    release_pair(&t);
 }
 
 /* ---- the three exact cases of the issue ---- */
@@ -389,39 +342,39 @@ static const char *const FAMILY[NFAMILIES] = {
     "torus/plane", "torus/cylinder", "sphere/sphere", "torus/sphere touching"};
 
 /* A random case of the family, with its closed forms. */
-static void random_case(rng *g, int family, int index, exact_case *c)
+static void random_case(harness_rng *g, int family, int index, exact_case *c)
 {
     memset(c, 0, sizeof *c);
     snprintf(c->name, sizeof c->name, "%s %d", FAMILY[family], index);
     random_axis(g, &c->ax);
     c->half = 4;
     const axis *ax = &c->ax;
-    const double t = uniform(g, -0.5, 0.5);
+    const double t = harness_uniform(g, -0.5, 0.5);
     switch (family) {
     case SPHERE_PLANE: { /* z = h, rho^2 + (h - t)^2 = R^2 */
-        const double R = uniform(g, 0.6, 1.5), h = t + R * uniform(g, -0.8, 0.8);
+        const double R = harness_uniform(g, 0.6, 1.5), h = t + R * harness_uniform(g, -0.8, 0.8);
         c->prim[0] = about(IC_PRIM_SPHERE, ax, t), c->prim[0].radius = R;
         c->prim[1] = about(IC_PRIM_PLANE, ax, h);
         add_circle(c, sqrt(R * R - (h - t) * (h - t)), h, 0);
         break;
     }
     case SPHERE_CYLINDER: { /* rho = r, z = t +- sqrt(R^2 - r^2) */
-        const double R = uniform(g, 0.6, 1.5), r = R * uniform(g, 0.2, 0.9);
+        const double R = harness_uniform(g, 0.6, 1.5), r = R * harness_uniform(g, 0.2, 0.9);
         c->prim[0] = about(IC_PRIM_SPHERE, ax, t), c->prim[0].radius = R;
-        c->prim[1] = about(IC_PRIM_CYLINDER, ax, uniform(g, -1, 1)), c->prim[1].radius = r;
+        c->prim[1] = about(IC_PRIM_CYLINDER, ax, harness_uniform(g, -1, 1)), c->prim[1].radius = r;
         add_circle(c, r, t - sqrt(R * R - r * r), 0);
         add_circle(c, r, t + sqrt(R * R - r * r), 0);
         break;
     }
     case CYLINDER_PLANE: {
-        const double r = uniform(g, 0.3, 2), h = uniform(g, -1.5, 1.5);
+        const double r = harness_uniform(g, 0.3, 2), h = harness_uniform(g, -1.5, 1.5);
         c->prim[0] = about(IC_PRIM_CYLINDER, ax, t), c->prim[0].radius = r;
         c->prim[1] = about(IC_PRIM_PLANE, ax, h);
         add_circle(c, r, h, 0);
         break;
     }
     case CONE_PLANE: { /* rho = |h - a| tan(alpha) */
-        const double alpha = uniform(g, 0.3, 1.0), d = uniform(g, 0.3, 1.2);
+        const double alpha = harness_uniform(g, 0.3, 1.0), d = harness_uniform(g, 0.3, 1.2);
         const double h = t + (index % 2 ? d : -d);
         c->prim[0] = about(IC_PRIM_CONE, ax, t), c->prim[0].half_angle = alpha;
         c->prim[1] = about(IC_PRIM_PLANE, ax, h);
@@ -429,7 +382,7 @@ static void random_case(rng *g, int family, int index, exact_case *c)
         break;
     }
     case TORUS_PLANE: { /* z = h, (rho - R)^2 + (h - t)^2 = r^2 */
-        const double R = uniform(g, 1, 1.5), r = uniform(g, 0.2, 0.5), h = t + r * uniform(g, -0.8, 0.8);
+        const double R = harness_uniform(g, 1, 1.5), r = harness_uniform(g, 0.2, 0.5), h = t + r * harness_uniform(g, -0.8, 0.8);
         const double w = sqrt(r * r - (h - t) * (h - t));
         c->prim[0] = about(IC_PRIM_TORUS, ax, t), c->prim[0].major_radius = R,
         c->prim[0].radius = r;
@@ -439,18 +392,18 @@ static void random_case(rng *g, int family, int index, exact_case *c)
         break;
     }
     case TORUS_CYLINDER: { /* rho = rc, (rc - R)^2 + (z - t)^2 = r^2 */
-        const double R = uniform(g, 1, 1.5), r = uniform(g, 0.2, 0.5), rc = R + r * uniform(g, -0.8, 0.8);
+        const double R = harness_uniform(g, 1, 1.5), r = harness_uniform(g, 0.2, 0.5), rc = R + r * harness_uniform(g, -0.8, 0.8);
         const double w = sqrt(r * r - (rc - R) * (rc - R));
         c->prim[0] = about(IC_PRIM_TORUS, ax, t), c->prim[0].major_radius = R,
         c->prim[0].radius = r;
-        c->prim[1] = about(IC_PRIM_CYLINDER, ax, uniform(g, -1, 1)), c->prim[1].radius = rc;
+        c->prim[1] = about(IC_PRIM_CYLINDER, ax, harness_uniform(g, -1, 1)), c->prim[1].radius = rc;
         add_circle(c, rc, t - w, 0);
         add_circle(c, rc, t + w, 0);
         break;
     }
     case SPHERE_SPHERE: { /* the radical plane z - t = (d^2 + R1^2 - R2^2) / (2 d) */
-        const double R1 = uniform(g, 0.6, 1.5), R2 = uniform(g, 0.6, 1.5);
-        const double lo = fabs(R1 - R2), hi = R1 + R2, d = lo + (hi - lo) * uniform(g, 0.15, 0.85);
+        const double R1 = harness_uniform(g, 0.6, 1.5), R2 = harness_uniform(g, 0.6, 1.5);
+        const double lo = fabs(R1 - R2), hi = R1 + R2, d = lo + (hi - lo) * harness_uniform(g, 0.15, 0.85);
         const double a = (d * d + R1 * R1 - R2 * R2) / (2 * d);
         c->prim[0] = about(IC_PRIM_SPHERE, ax, t), c->prim[0].radius = R1;
         c->prim[1] = about(IC_PRIM_SPHERE, ax, t + d), c->prim[1].radius = R2;
@@ -458,7 +411,7 @@ static void random_case(rng *g, int family, int index, exact_case *c)
         break;
     }
     case TORUS_SPHERE_TOUCHING: { /* the sphere R + r about the torus' centre: its equator */
-        const double R = uniform(g, 1, 1.5), r = uniform(g, 0.2, 0.5);
+        const double R = harness_uniform(g, 1, 1.5), r = harness_uniform(g, 0.2, 0.5);
         c->prim[0] = about(IC_PRIM_TORUS, ax, t), c->prim[0].major_radius = R,
         c->prim[0].radius = r;
         c->prim[1] = about(IC_PRIM_SPHERE, ax, t), c->prim[1].radius = R + r;
@@ -470,7 +423,7 @@ static void random_case(rng *g, int family, int index, exact_case *c)
 
 static void random_cases(int per_family)
 {
-    rng g = {0x9E3779B97F4A7C15ULL};
+    harness_rng g = {0x9E3779B97F4A7C15ULL};
     for (int f = 0; f < NFAMILIES; f++)
         for (int i = 0; i < per_family; i++) {
             exact_case c;
@@ -485,40 +438,9 @@ static void random_cases(int per_family)
 
 /* ---- the cases left to the general path ---- */
 
-/* Both traces the same, point for point, and both the search. */
-static int same_results(const ic_trace_result *a, const ic_trace_result *b)
-{
-    const ic_trace_report *ra = ic_trace_result_report(a), *rb = ic_trace_result_report(b);
-    if (strcmp(ra->method, "search") != 0 || strcmp(rb->method, "search") != 0 ||
-        ra->complete != rb->complete || ra->cells != rb->cells || ra->nfailures != rb->nfailures ||
-        ic_trace_result_num_curves(a) != ic_trace_result_num_curves(b) ||
-        ic_trace_result_num_specials(a) != ic_trace_result_num_specials(b))
-        return 0;
-    for (int k = 0; k < ic_trace_result_num_curves(a); k++) {
-        const ic_trace_curve *ca = ic_trace_result_curve(a, k), *cb = ic_trace_result_curve(b, k);
-        if (ca->npoints != cb->npoints || ca->length != cb->length ||
-            ca->tangential != cb->tangential ||
-            memcmp(ca->points, cb->points, (size_t)ca->npoints * sizeof *ca->points) != 0)
-            return 0;
-    }
-    for (int k = 0; k < ic_trace_result_num_specials(a); k++)
-        if (memcmp(ic_trace_result_special(a, k), ic_trace_result_special(b, k),
-                   sizeof(ic_trace_special)) != 0)
-            return 0;
-    return 1;
-}
-
 static void fall_back(const char *name, ic_primitive A, ic_primitive B, double half)
 {
-    exact_case c;
-    memset(&c, 0, sizeof c);
-    snprintf(c.name, sizeof c.name, "%s", name);
-    c.prim[0] = A, c.prim[1] = B, c.half = half;
-    traced_pair t;
-    if (trace_both(&t, &c))
-        CHECK(same_results(t.res[0], t.res[1]),
-              "%s: left to the general path, exactly what it gives", name);
-    release(&t);
+    check_fall_back(name, &A, &B, half);
 }
 
 static void fall_back_cases(void)
@@ -561,7 +483,7 @@ static void option_off(void)
         CHECK(strcmp(rep->method, "search") == 0 && rep->cells > 0,
               "exact_paths 0: the search (%s, %d cells)", rep->method, rep->cells);
     }
-    release(&t);
+    release_pair(&t);
 }
 
 int main(void)

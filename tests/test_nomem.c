@@ -410,17 +410,20 @@ static ic_status trace_self(ic_error *err, char *summary)
     return trace(&ENNEPER, NULL, 5, err, summary);
 }
 
-/* coaxial primitives in closed form (docs/tracing.md, "Exact paths"): a
- * torus cut by a plane in two circles, then a sphere on a plane at a point */
+/* primitives in closed form (docs/tracing.md, "Exact paths"): a torus cut
+ * by a plane in two circles, a sphere on a plane at a point, and two equal
+ * cylinders (two ellipses, two branch points) */
 static ic_status trace_exact(ic_error *err, char *summary)
 {
-    const ic_primitive prims[2][2] = {
+    const ic_primitive prims[3][2] = {
         {{.kind = IC_PRIM_TORUS, .major_radius = 1.5, .radius = 0.5},
          {.kind = IC_PRIM_PLANE, .center = {0, 0, 0.2}, .normal = {0, 0, 1}}},
         {{.kind = IC_PRIM_SPHERE, .center = {0, 0, 1}, .radius = 1},
-         {.kind = IC_PRIM_PLANE, .normal = {0, 0, 1}}}};
+         {.kind = IC_PRIM_PLANE, .normal = {0, 0, 1}}},
+        {{.kind = IC_PRIM_CYLINDER, .radius = 1},
+         {.kind = IC_PRIM_CYLINDER, .radius = 1, .axis = {0, 1, 0}}}};
     ic_status st = IC_OK;
-    for (int c = 0; c < 2 && st == IC_OK; c++) {
+    for (int c = 0; c < 3 && st == IC_OK; c++) {
         made_pair m;
         memset(&m, 0, sizeof m);
         st = ic_surface_new_primitive(&m.A, &prims[c][0], IC_IMPLICIT, err);

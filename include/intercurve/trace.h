@@ -56,7 +56,8 @@ typedef struct {
     void *progress_user;
     ic_local_options local;
     /** 1: pairs with a closed form are solved in it (coaxial surfaces of
-     *  revolution, implicit primitives or NURBS patches recognised as them:
+     *  revolution, implicit primitives or NURBS patches recognised as them;
+     *  a plane's ellipse on a quadric; two equal cylinders whose axes meet:
      *  docs/tracing.md, "Exact paths"); 0: always the search and the
      *  marching, the reference (default 1) */
     int exact_paths;
@@ -206,10 +207,10 @@ typedef struct {
     double fit_error;
     /** how the intersection was found, a static string: "search" (the
      *  subdivision search and the marching), "closed form: coaxial surfaces
-     *  of revolution" (two implicit primitives) or "closed form: NURBS nets
-     *  recognised as coaxial surfaces of revolution" (docs/tracing.md,
-     *  "Exact paths": nothing was searched, the cell counts are 0, complete
-     *  is 1) */
+     *  of revolution" (two implicit primitives), "closed form: NURBS nets
+     *  recognised as coaxial surfaces of revolution" or "closed form: plane
+     *  sections of quadrics" (docs/tracing.md, "Exact paths": nothing was
+     *  searched, the cell counts are 0, complete is 1) */
     const char *method;
 } ic_trace_report;
 

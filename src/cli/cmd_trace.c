@@ -79,7 +79,9 @@ static const ic_cli_option TRACE_OPTIONS[NOPTIONS] = {
     [OPT_NO_EXACT] = {.name = "--no-exact",
                       .kind = IC_OPT_FLAG,
                       .help = "always search and march, even where a closed form applies\n"
-                              "(coaxial surfaces of revolution: docs/tracing.md, \"Exact paths\")"},
+                              "(coaxial surfaces of revolution, a plane's ellipse on a\n"
+                              "quadric, two equal cylinders whose axes meet: docs/tracing.md,\n"
+                              "\"Exact paths\")"},
 };
 
 static const ic_cli_command TRACE = {

@@ -14,6 +14,7 @@
  * (ic_trace_options.exact_paths = 0 always takes it).
  */
 #include "exact_circle.h"
+#include "exact_common.h"
 #include "exact_profile.h"
 #include "exact_source.h"
 #include "trace_internal.h"
@@ -31,12 +32,6 @@ const char ic_trace_method_revolution[] = "closed form: coaxial surfaces of revo
 const char ic_trace_method_revolution_nets[] =
     "closed form: NURBS nets recognised as coaxial surfaces of revolution";
 
-/* relative length: a circle or contact point this near a face of the box
- * (inside or out) falls back: the general path decides what the box cuts */
-#define IC_EXACT_BOX_MARGIN 1e-6
-/* count: the fewest arcs a circle is traced in (the shape test and the
- * B-spline fit want a few points whatever the step rules allow) */
-#define IC_EXACT_MIN_ARCS 8
 
 /* The common axis: through o along the unit e, with (u, v, e) right-handed
  * orthonormal (u is where the circles' points start). */
@@ -171,22 +166,23 @@ static void profile_of(const ic_exact_source *s, const axis *ax, ic_profile *pr)
     }
 }
 
+/* The centre of the circle of the axis of radius rho at height z, and its
+ * half-extent along each coordinate axis. */
+static void circle_extent(const axis *ax, double rho, double z, double centre[3], double ext[3])
+{
+    for (int k = 0; k < 3; k++) {
+        centre[k] = ax->o[k] + z * ax->e[k];
+        ext[k] = rho * sqrt(fmax(0.0, 1.0 - ax->e[k] * ax->e[k]));
+    }
+}
+
 /* Where a circle of the axis (a point when rho = 0) lies against the box
- * widened and narrowed by the margin: 1 inside, 0 outside, -1 across a
- * face or near one. */
+ * (ic_exact_box_side). */
 static int box_side(const ic_trace_options *opt, const axis *ax, double rho, double z, double L)
 {
-    const double m = IC_EXACT_BOX_MARGIN * L;
-    int inside = 1;
-    for (int k = 0; k < 3; k++) {
-        const double x = ax->o[k] + z * ax->e[k];
-        const double ext = rho * sqrt(fmax(0.0, 1.0 - ax->e[k] * ax->e[k]));
-        if (x + ext < opt->box[k][0] - m || x - ext > opt->box[k][1] + m)
-            return 0;
-        if (x - ext < opt->box[k][0] + m || x + ext > opt->box[k][1] - m)
-            inside = -1;
-    }
-    return inside;
+    double centre[3], ext[3];
+    circle_extent(ax, rho, z, centre, ext);
+    return ic_exact_box_side(opt, centre, ext, L);
 }
 
 /* Where the circle (the point when rho = 0) at height z lies against the
@@ -241,25 +237,11 @@ static int intersection_pieces(const ic_profile *pa, const ic_profile *pb, const
     return nf;
 }
 
-/* The step of the general tracer's rules on a circle of radius rho: the
- * truncation terms of orders K-1 and K (|c^(k)| = rho^(1-k)), the chord
- * height rho (1 - cos(h / (2 rho))) ~ h^2 / (8 rho), the longest step. */
-static double circle_step(const ic_trace_options *opt, double rho)
-{
-    double h = opt->max_step, fact = 1.0;
-    for (int k = 1; k <= opt->order; k++) {
-        fact *= k;
-        if (k >= opt->order - 1)
-            h = fmin(h, pow(opt->tol * fact * pow(rho, k - 1), 1.0 / k));
-    }
-    return fmin(h, sqrt(8 * opt->chord * rho));
-}
-
 /* The arcs a circle is traced in, a multiple of 8 (exact_circle.c); 0 when
  * the point budget is too small. */
 static int circle_arcs(const ic_trace_options *opt, double rho)
 {
-    double n = ceil(2 * IC_PI * rho / circle_step(opt, rho) / 8) * 8;
+    double n = ceil(2 * IC_PI * rho / ic_exact_circle_step(opt, rho) / 8) * 8;
     n = n < IC_EXACT_MIN_ARCS ? IC_EXACT_MIN_ARCS : n;
     return n + 1 <= opt->max_points ? (int)n : 0;
 }
@@ -333,31 +315,17 @@ static ic_status add_pieces(ic_trace_result *r, const axis *ax, const piece_foun
     return st;
 }
 
-/* The size of what was found, as the search takes it for the marching's
- * lengths and the fit (ic_trace_found_scale): the diagonal of the box
- * around the circles and points, when between 1e-3 L and L; else L. */
+/* The size of what was found (ic_exact_found_scale): the box around the
+ * circles and points. */
 static double found_scale(double L, const axis *ax, const piece_found *found, int nf)
 {
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (int i = 0; i < nf; i++)
-        for (int k = 0; k < 3; k++) {
-            const double x = ax->o[k] + found[i].z * ax->e[k];
-            const double ext = found[i].rho * sqrt(fmax(0.0, 1.0 - ax->e[k] * ax->e[k]));
-            lo[k] = fmin(lo[k], x - ext), hi[k] = fmax(hi[k], x + ext);
-        }
-    double d2 = 0;
-    for (int k = 0; k < 3; k++)
-        d2 += hi[k] > lo[k] ? (hi[k] - lo[k]) * (hi[k] - lo[k]) : 0.0;
-    const double F = sqrt(d2);
-    return isfinite(F) && F > 1e-3 * L && F < L ? F : L;
-}
-
-/* The report of a closed form: nothing searched, nothing left open. */
-static void closed_form_report(ic_trace_report *rep, int nets)
-{
-    rep->complete = 1;
-    rep->proven = 1;
-    rep->method = nets ? ic_trace_method_revolution_nets : ic_trace_method_revolution;
+    for (int i = 0; i < nf; i++) {
+        double centre[3], ext[3];
+        circle_extent(ax, found[i].rho, found[i].z, centre, ext);
+        ic_exact_extent_add(lo, hi, centre, ext);
+    }
+    return ic_exact_found_scale(L, lo, hi);
 }
 
 /* The profiles about the common axis and where they meet: the count of
@@ -411,6 +379,6 @@ ic_status ic_trace_exact_revolution(ic_trace_result *r, ic_pair *pair,
         return IC_OK;
     *done = 1;
     r->scale = F;
-    closed_form_report(&r->report, nets);
+    ic_exact_report(&r->report, nets ? ic_trace_method_revolution_nets : ic_trace_method_revolution);
     return add_pieces(r, &ax, found, nf, pts, np, &opt, err);
 }

@@ -875,6 +875,8 @@ static ic_status trace(ic_trace_result **out, ic_pair *pair, const ic_trace_opti
     r->report.method = ic_trace_method_search;
     int exact = 0;
     ic_status st = ic_trace_exact_revolution(r, pair, user_opt, &exact, err);
+    if (st == IC_OK && !exact)
+        st = ic_trace_exact_conic(r, pair, user_opt, &exact, err);
     if (st != IC_OK || exact) {
         if (st != IC_OK)
             ic_trace_result_free(r);

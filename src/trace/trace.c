@@ -7,6 +7,7 @@
 #include "common/args.h"
 #include "trace_constants.h"
 #include "trace_internal.h"
+#include "workers.h"
 #include "common/vec3.h"
 #include "local/local_internal.h"
 
@@ -844,6 +845,9 @@ static ic_status check_options(const ic_trace_options *o, ic_error *err)
             return ic_error_set(err, IC_ERR_INVALID, 0,
                                 "trace: tol, chord, max_step and min_step must be positive and "
                                 "finite");
+    if (o->threads < 0 || o->threads > IC_TRACE_MAX_THREADS)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "trace: threads %d is not in 0..%d",
+                            o->threads, IC_TRACE_MAX_THREADS);
     if (!(o->time_limit >= 0) || !(o->shape_tol > 0))
         return ic_error_set(err, IC_ERR_INVALID, 0,
                             "trace: time_limit must be 0 or positive, shape_tol positive");
@@ -888,8 +892,10 @@ static ic_status trace(ic_trace_result **out, ic_pair *pair, const ic_trace_opti
     ic_unresolved *unres = NULL;
     int nc = 0, nu = 0;
     ic_tracer *tr = NULL;
-    st = ic_trace_candidates(pair, opt, NULL, &cand, &nc, &unres, &nu, &r->report,
-                                       &r->budget, err);
+    st = ic_trace_workers_new(&r->workers, pair, ic_trace_thread_count(opt->threads), err);
+    if (st == IC_OK)
+        st = ic_trace_candidates(pair, opt, NULL, r->workers, NULL, &cand, &nc, &unres, &nu,
+                                 &r->report, &r->budget, err);
     r->first_cell_size = r->report.cell_size;
     /* the scale of the rest: where the first search left the intersection
      * (a parametric surface may reach far beyond it) */
@@ -943,6 +949,8 @@ static ic_status trace(ic_trace_result **out, ic_pair *pair, const ic_trace_opti
     }
     set_complete(r);
     ic_tracer_free(tr);
+    ic_trace_workers_free(r->workers);
+    r->workers = NULL;
     free(cand);
     free(unres);
     if (st != IC_OK) {
@@ -971,6 +979,7 @@ void ic_trace_result_free(ic_trace_result *r)
     for (int i = 0; r->fits && i < r->ncurves; i++)
         ic_curve_fit_free(r->fits[i]);
     free(r->fits);
+    ic_trace_workers_free(r->workers);
     free(r);
 }
 

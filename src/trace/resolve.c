@@ -145,6 +145,10 @@ static ic_status refine(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
             st = ic_trace_tangential_in_cell(r, tr, pair, &sub[i], opt);
     if (st == IC_OK && push(work, sub, ns) != 0)
         st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
+    /* their finer searches done ahead, if any (matched to their cells when
+     * taken: a part for another cell is never used) */
+    for (int i = 0; st == IC_OK && work->ahead && i < ns; i++)
+        work->ahead[work->n - ns + i] = ic_search_part_take_child(ahead, i);
     free(cand);
     free(sub);
     return st;
@@ -157,6 +161,15 @@ static int can_refine(const ic_trace_result *r, const ic_unresolved *u, ic_trace
     return !u->overflow && !(u->radius > 0 && ic_trace_in_coincident(r, u->xyz)) &&
            r->report.proven && u->level < IC_TRACE_MAX_REFINE_LEVELS && !b->stopped &&
            !ic_trace_out_of_time(b);
+}
+
+/* ic_search_wanted: an open cell found ahead that will be refined, if
+ * nothing is traced meanwhile. */
+static int wanted(const void *ctx, const ic_unresolved *u)
+{
+    const ic_trace_result *r = ctx;
+    ic_trace_budget b = r->budget;
+    return !decided(r, u) && can_refine(r, u, &b);
 }
 
 /* Cells refined ahead in one batch, per thread: enough to share the work,
@@ -180,7 +193,8 @@ static void refine_ahead(const ic_trace_result *r, ic_pair *pair, const ic_trace
                         can_refine(r, &work->u[i], &b)))
             cells[n] = &work->u[i], slot[n++] = i;
     ic_search_part *parts[MOST];
-    ic_search_ahead_cells(r->workers, pair, opt, r->report.proven, cells, n, &r->budget, parts);
+    ic_search_ahead_cells(r->workers, pair, opt, r->report.proven, cells, n, wanted, r, &r->budget,
+                          parts);
     for (int k = 0; k < n; k++)
         work->ahead[slot[k]] = parts[k];
 }

@@ -52,8 +52,28 @@ static int push_unresolved(ic_search_part *l, const ic_unresolved *u)
     return 0;
 }
 
+void ic_search_part_free(ic_search_part *p)
+{
+    if (!p)
+        return;
+    ic_search_part_clear(p);
+    free(p);
+}
+
+ic_search_part *ic_search_part_take_child(ic_search_part *p, int i)
+{
+    if (!p || !p->children || i < 0 || i >= p->nunres)
+        return NULL;
+    ic_search_part *c = p->children[i];
+    p->children[i] = NULL;
+    return c;
+}
+
 void ic_search_part_clear(ic_search_part *p)
 {
+    for (int i = 0; p->children && i < p->nunres; i++)
+        ic_search_part_free(p->children[i]);
+    free(p->children);
     free(p->cand);
     free(p->unres);
     memset(p, 0, sizeof *p);

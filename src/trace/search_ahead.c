@@ -16,22 +16,62 @@
  * are excluded at once), and many small ones keep every thread busy. */
 #define SUBTREES_PER_THREAD 16
 
+/* Finer searches one job of a batch of open cells does at most: its cell's
+ * and, while the job lasts, those of the open cells found in it, and so on
+ * down (the refinement goes down one cell's tree before the next). */
+#define PARTS_PER_JOB 256
+
 /* What a batch of parts shares: how each is walked. */
 typedef struct {
     const ic_trace_options *opt;
-    int proven, depth, level_base; /* a part's level: level_base (+ its cell's level) */
+    int proven, depth;
     const ic_unresolved *const *cells; /* the open cells refined (NULL: the first search) */
-    ic_trace_budget budget;            /* as the batch began */
+    ic_search_wanted *wanted;          /* whether an open cell found will be refined */
+    const void *wanted_ctx;
+    ic_trace_budget budget; /* as the batch began */
     ic_search_share *share;
     ic_search_part **parts;
 } batch;
 
-void ic_search_part_free(ic_search_part *p)
+/* Walks part p (its root set) at refinement level `level`; an incomplete
+ * part is left empty (the serial order walks its cell). */
+static void walk_one(const batch *b, const ic_search_ctx *x, ic_search_part *p, int level)
 {
-    if (!p)
+    ic_trace_budget own = b->budget;
+    ic_search_walk w = {.x = x, .depth = b->depth, .level = level, .budget = &own,
+                        .share = b->share, .ahead = 1};
+    if (ic_search_walk_run(&w, p) != 0 || !p->complete) {
+        const ic_search_cell root = p->root;
+        ic_search_part_clear(p);
+        p->root = root;
+    }
+}
+
+/* The finer search of an open cell, as ic_trace_candidates walks it. */
+static ic_search_part *cell_part(const ic_unresolved *u)
+{
+    ic_search_part *p = calloc(1, sizeof *p);
+    if (p) {
+        memcpy(p->root.lo, u->lo, sizeof u->lo);
+        memcpy(p->root.hi, u->hi, sizeof u->hi);
+    }
+    return p;
+}
+
+/* A refinement tree done ahead: p's finer search, then those of its open
+ * cells that will be refined, in the serial order, while *left lasts. */
+static void walk_tree(const batch *b, const ic_search_ctx *x, ic_search_part *p, int level,
+                      int *left)
+{
+    walk_one(b, x, p, level);
+    if (!p->complete || !b->wanted || p->nunres == 0 || *left <= 0 ||
+        !(p->children = calloc((size_t)p->nunres, sizeof *p->children)))
         return;
-    ic_search_part_clear(p);
-    free(p);
+    for (int j = p->nunres - 1; j >= 0 && *left > 0; j--) /* popped last first */
+        if (b->wanted(b->wanted_ctx, &p->unres[j]) && (p->children[j] = cell_part(&p->unres[j]))) {
+            (*left)--;
+            walk_tree(b, x, p->children[j], p->unres[j].level + 1, left);
+        }
 }
 
 static void walk_part(void *ctx, int i, ic_pair *pair)
@@ -41,16 +81,11 @@ static void walk_part(void *ctx, int i, ic_pair *pair)
     ic_search_ctx x;
     if (!p || ic_search_ctx_init(&x, pair, b->opt, b->proven, NULL) != IC_OK)
         return; /* p->complete stays 0: the serial order walks the cell */
-    ic_trace_budget own = b->budget;
-    ic_search_walk w = {.x = &x, .depth = b->depth, .level = b->level_base, .budget = &own,
-                        .share = b->share, .ahead = 1};
+    int left = PARTS_PER_JOB - 1;
     if (b->cells)
-        w.level += b->cells[i]->level + 1;
-    if (ic_search_walk_run(&w, p) != 0) {
-        const ic_search_cell root = p->root;
-        ic_search_part_clear(p);
-        p->root = root;
-    }
+        walk_tree(b, &x, p, b->cells[i]->level + 1, &left);
+    else
+        walk_one(b, &x, p, 0);
 }
 
 /* The cells at depth `split` of the first search in its serial order
@@ -132,16 +167,12 @@ void ic_search_ahead_first(ic_trace_workers *workers, ic_pair *pair, const ic_se
 
 void ic_search_ahead_cells(ic_trace_workers *workers, ic_pair *pair, const ic_trace_options *opt,
                            int proven, const ic_unresolved *const *u, int n,
+                           ic_search_wanted *wanted, const void *wanted_ctx,
                            const ic_trace_budget *budget, ic_search_part **parts)
 {
-    for (int i = 0; i < n; i++) {
-        parts[i] = calloc(1, sizeof *parts[i]);
-        if (!parts[i])
-            continue;
-        memcpy(parts[i]->root.lo, u[i]->lo, sizeof u[i]->lo);
-        memcpy(parts[i]->root.hi, u[i]->hi, sizeof u[i]->hi);
-    }
-    batch b = {.opt = opt, .proven = proven, .depth = 1, .cells = u, .budget = *budget,
-               .parts = parts};
+    for (int i = 0; i < n; i++)
+        parts[i] = cell_part(u[i]);
+    batch b = {.opt = opt, .proven = proven, .depth = 1, .cells = u, .wanted = wanted,
+               .wanted_ctx = wanted_ctx, .budget = *budget, .parts = parts};
     ic_trace_workers_run(workers, pair, walk_part, &b, n);
 }

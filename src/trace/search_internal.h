@@ -44,6 +44,9 @@ struct ic_search_part {
     ic_search_counts counts;
     long used;    /* cells taken from the budget */
     int complete; /* 0: stopped by the budget or out of memory (unusable) */
+    /* the finer searches of the unresolved cells done ahead too (per
+     * unres entry, NULL: none), or NULL */
+    ic_search_part **children;
 };
 
 /* The cells the searches done ahead may take in all: they stop once past

@@ -76,13 +76,21 @@ ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt,
                               ic_search_part *ahead, ic_candidate **out, int *n,
                               ic_unresolved **unres, int *nunres, ic_trace_report *rep,
                               ic_trace_budget *budget, ic_error *err);
+/* Whether an open cell found will be refined as things stand (called by
+ * the workers while the trace waits for them: it only reads). */
+typedef int ic_search_wanted(const void *ctx, const ic_unresolved *u);
 /* search_ahead.c: the finer searches of the cells u[0..n-1] (as
  * ic_trace_candidates with within = u[i]) done by the workers into
  * parts[i] (NULL out of memory), with the trace's budget as it is now;
- * proven as in the report. */
+ * proven as in the report; and down their trees, those of the open cells
+ * found that `wanted` says will be refined (ic_search_part_take_child). */
 void ic_search_ahead_cells(ic_trace_workers *workers, ic_pair *pair, const ic_trace_options *opt,
                            int proven, const ic_unresolved *const *u, int n,
+                           ic_search_wanted *wanted, const void *wanted_ctx,
                            const ic_trace_budget *budget, ic_search_part **parts);
+/* The finer search done ahead for p's i-th unresolved cell (the caller's
+ * from now on), or NULL. */
+ic_search_part *ic_search_part_take_child(ic_search_part *p, int i);
 void ic_search_part_free(ic_search_part *p);
 
 /* Traces a curve from every start candidate that no curve traced so far

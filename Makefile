@@ -105,6 +105,7 @@ bench: configure
 	./$(BUILD)/bench/bench_surface
 	./$(BUILD)/bench/bench_local
 	./$(BUILD)/bench/bench_trace examples
+	./$(BUILD)/bench/bench_threads .
 	./$(BUILD)/bench/bench_torture .
 	./$(BUILD)/bench/bench_json examples
 	./$(BUILD)/bench/bench_memory examples

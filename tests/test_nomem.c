@@ -622,7 +622,7 @@ static ic_status bindings(ic_error *err, char *summary)
     size_t len = 0;
     ic_status st = ic_problem_parse(&p, json, strlen(json), err);
     if (st == IC_OK)
-        st = ic_problem_trace(&res, &pair, p, 1e-11, 3, 0, 1e-9, err);
+        st = ic_problem_trace(&res, &pair, p, 1e-11, 3, 0, 1, 1e-9, err);
     if (st == IC_OK)
         st = ic_trace_json_alloc(&doc, &len, res, pair, err);
     if (st == IC_OK)

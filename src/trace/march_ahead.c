@@ -57,7 +57,6 @@ ic_status ic_trace_march_both(ic_tracer *tr, const ic_local_point *pt, ic_trace_
     const int hard = m->st[0] != IC_OK && (m->e[0] != IC_TRACE_FAILED || m->st[0] == IC_ERR_NOMEM);
     if (st != IC_OK || hard || m->e[0] == IC_TRACE_CLOSED)
         return st;
-    m->backward = 1;
     return march_one(tr, pt, -1, m, 1, err);
 }
 

@@ -19,7 +19,6 @@ typedef struct {
     ic_error err[2]; /* what the tracer said */
     ic_trace_point *pts[2];
     int n[2];
-    int backward; /* the backward march was made */
 } ic_trace_marches;
 
 /* The marches from pt with the tracer: IC_OK, or IC_ERR_NOMEM (err set)

@@ -1,5 +1,6 @@
 /* Benchmark of a trace's threads (make bench; docs/tracing.md, "Threads"):
- * whole traces where the search is most of the work, in 1 thread, 2 and all
+ * whole traces where the search is most of the work (and one where the
+ * marching of many curves is), in 1 thread, 2 and all
  * the machine's online cores: the best of three wall times, the CPU time of
  * the process (all its threads) in that run, and the speed-up of the wall
  * time over 1 thread; "same" says the trace document equals the 1-thread one.
@@ -114,6 +115,8 @@ int main(int argc, char **argv)
         {"examples/torus-plane-tangential.json", 7, 1},
         {"tests/data/nurbs/problem-torus-sphere-tangential.json", 7, 1},
         {"tests/data/nurbs/problem-freeform-bicubic.json", 8, 1},
+        /* 98 closed curves: the marching of start candidates is most of it */
+        {"tests/torture/eggcrate-k10.json", 6, 1},
     };
     const long cores = sysconf(_SC_NPROCESSORS_ONLN);
     int counts[3] = {1, 2, (int)(cores > 0 ? cores : 1)}, ncounts = counts[2] > 2 ? 3 : 2;

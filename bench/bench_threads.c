@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include <math.h>
+#include <pthread.h>
 
 #include "intercurve.h"
 
@@ -63,6 +64,36 @@ static int time_trace(ic_pair *pair, ic_trace_options opt, int threads, timed *t
         ic_trace_result_free(r);
     }
     return 0;
+}
+
+/* Additions of the calibration: about 0.2 s of one core. */
+#define SPIN_STEPS 60000000L
+
+static void *spin(void *arg)
+{
+    volatile double x = 0;
+    for (long i = 0; i < SPIN_STEPS; i++)
+        x += 1e-9;
+    return arg;
+}
+
+/* How many cores the machine gives this process now: the time of one
+ * thread of plain arithmetic over that of n such threads at once, times n
+ * (n on an idle machine of n cores, less on a shared one). */
+static double cores_given(int n)
+{
+    const double t0 = seconds(CLOCK_MONOTONIC);
+    spin(NULL);
+    const double one = seconds(CLOCK_MONOTONIC) - t0;
+    pthread_t th[64];
+    int started = 0;
+    const double t1 = seconds(CLOCK_MONOTONIC);
+    while (started < n - 1 && started < 64 && pthread_create(&th[started], NULL, spin, NULL) == 0)
+        started++;
+    spin(NULL);
+    for (int k = 0; k < started; k++)
+        pthread_join(th[k], NULL);
+    return (started + 1) * one / (seconds(CLOCK_MONOTONIC) - t1);
 }
 
 /* One problem's row per thread count. */
@@ -126,7 +157,8 @@ int main(int argc, char **argv)
         if (bench_one(src, &CASES[c], counts, ncounts) != 0)
             return 1;
     printf("(%ld online cores; cpu: all the process's threads; on a shared machine the wall\n"
-           " times depend on the other work, the cpu times on the threads' own)\n",
-           cores);
+           " times depend on the other work, the cpu times on the threads' own: two threads\n"
+           " of plain arithmetic ran at %.2f times one's speed just now, 2.00 on 2 free cores)\n",
+           cores, cores_given(2));
     return 0;
 }

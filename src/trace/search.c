@@ -245,8 +245,8 @@ static int same_cell(const ic_search_cell *a, const ic_search_cell *b, int dim)
     return 1;
 }
 
-/* Whether the serial order, at cell c with budget b, gets what the part
- * done ahead found: the part is whole, the budget holds the cells it took,
+/* Whether the serial order, with budget b, gets what the part done ahead
+ * found: the part is whole, the budget holds the cells it took,
  * and no look at the clock among them would have found the time up. */
 static int part_usable(const ic_search_part *p, const ic_trace_budget *b)
 {
@@ -311,8 +311,7 @@ static int visit(ic_search_walk *w, const ic_search_cell *c, ic_search_cell *sta
     if (leaf)
         return process_leaf(x, c, w->level, out);
     for (int m = 0; m < (1 << x->dim); m++) { /* 2^dim children */
-        ic_search_cell ch = {.depth = 0};
-        ch.depth = c->depth + 1;
+        ic_search_cell ch = {.depth = c->depth + 1};
         for (int k = 0; k < x->dim; k++) {
             const double mid = 0.5 * (c->lo[k] + c->hi[k]);
             ch.lo[k] = (m >> k) & 1 ? mid : c->lo[k];

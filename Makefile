@@ -12,6 +12,7 @@
 #   make install  install both libraries, headers, pkg-config file, CMake package and
 #                 command (PREFIX)
 #   make fuzz     build the libFuzzer targets with clang and run each (FUZZ_SECONDS)
+#   make tsan     build with ThreadSanitizer (build-tsan/) and run the tests of threads
 
 BUILD ?= build
 PREFIX ?= /usr/local
@@ -35,7 +36,7 @@ PEERS_TIMEOUT ?= 60
 # seconds apt-get waits for a dpkg lock another install holds
 APT_LOCK_WAIT ?= 600
 
-.PHONY: all deps configure test demo gallery bench bench-page bench-peers install fuzz sanitize clean
+.PHONY: all deps configure test demo gallery bench bench-page bench-peers install fuzz sanitize tsan clean
 
 all: configure
 	cmake --build $(BUILD) -j2
@@ -81,6 +82,17 @@ sanitize:
 	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp \
 	  $(MAKE) test BUILD=build-asan CMAKE_FLAGS="-DIC_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug"
 
+# the library's threads under ThreadSanitizer (docs/testing.md, "Threads"): a
+# report of a race fails the run
+TSAN_BUILD ?= build-tsan
+tsan:
+	cmake -S . -B $(TSAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DIC_WERROR=ON \
+	  -DCMAKE_C_FLAGS="-fsanitize=thread -fno-omit-frame-pointer" \
+	  -DCMAKE_EXE_LINKER_FLAGS=-fsanitize=thread -DCMAKE_SHARED_LINKER_FLAGS=-fsanitize=thread >/dev/null
+	cmake --build $(TSAN_BUILD) -j2 --target test_threads test_trace_threads
+	TSAN_OPTIONS=halt_on_error=1 ./$(TSAN_BUILD)/tests/test_trace_threads .
+	TSAN_OPTIONS=halt_on_error=1 ./$(TSAN_BUILD)/tests/test_threads .
+
 demo: all
 	./$(BUILD)/intercurve point examples/viviani.json --at 1.5,0.8660254037844386,1 --order 4 --format text
 	./$(BUILD)/intercurve point examples/viviani.json --at 2,0,0 --order 3 --format text
@@ -105,6 +117,7 @@ bench: configure
 	./$(BUILD)/bench/bench_surface
 	./$(BUILD)/bench/bench_local
 	./$(BUILD)/bench/bench_trace examples
+	./$(BUILD)/bench/bench_threads .
 	./$(BUILD)/bench/bench_torture .
 	./$(BUILD)/bench/bench_json examples
 	./$(BUILD)/bench/bench_memory examples

@@ -73,6 +73,7 @@ static int whole_example(const char *dir, const char *file, double tol)
     ic_trace_options opt;
     ic_trace_defaults(&opt);
     opt.tol = tol;
+    opt.threads = 1; /* the threads have their own bench (bench_threads) */
     int rc = 1;
     if (ic_problem_load(&p, path, &err) != IC_OK) {
         fprintf(stderr, "%s: %s\n", path, err.message);
@@ -170,6 +171,7 @@ static int exact_cases(void)
             ic_pair_new(&j.pair, A, B, NULL))
             return 1;
         ic_trace_defaults(&j.opt);
+        j.opt.threads = 1;
         j.opt.has_box = 1;
         for (int k = 0; k < 3; k++)
             j.opt.box[k][0] = -cases[c].half, j.opt.box[k][1] = cases[c].half;

@@ -10,13 +10,16 @@
 #define IC_TEST_NOMEM_WRAP_H
 
 #include <execinfo.h>
+#include <stdatomic.h>
 #include <stddef.h>
 
 enum { NOMEM_STACK = 16 };
 
+/* count and armed are atomic: a trace's threads allocate too (the
+ * scenario "trace, threads") */
 static struct {
-    int armed;    /* count (and fail) only while a scenario runs */
-    long count;   /* allocations since nomem_arm */
+    atomic_int armed;  /* count (and fail) only while a scenario runs */
+    atomic_long count; /* allocations since nomem_arm */
     long fail_at; /* the allocation that fails; 0: none */
     long failed;  /* allocations failed since nomem_arm */
     /* the calls that led to the failed allocation, innermost first */
@@ -47,7 +50,7 @@ static void nomem_disarm(void) { nomem.armed = 0; }
 /* 1 when this allocation is the one to fail; its calls are kept. */
 static int nomem_fails(void)
 {
-    if (!nomem.armed || ++nomem.count != nomem.fail_at)
+    if (!nomem.armed || atomic_fetch_add(&nomem.count, 1) + 1 != nomem.fail_at)
         return 0;
     nomem.failed++;
     nomem.armed = 0; /* backtrace may allocate on its first call */

@@ -541,9 +541,9 @@ static void binding_and_plot_args(fixture *fx)
     size_t len;
     const double values[3] = {1.5, 0, 1};
     const ic_problem *pb = fx->problem;
-    BAD(ic_problem_trace, "res", ic_problem_trace(NULL, &pair, pb, 1e-9, 4, 0, 0, &err));
-    BAD(ic_problem_trace, "pair", ic_problem_trace(&res, NULL, pb, 1e-9, 4, 0, 0, &err));
-    BAD(ic_problem_trace, "problem", ic_problem_trace(&res, &pair, NULL, 1e-9, 4, 0, 0, &err));
+    BAD(ic_problem_trace, "res", ic_problem_trace(NULL, &pair, pb, 1e-9, 4, 0, 0, 0, &err));
+    BAD(ic_problem_trace, "pair", ic_problem_trace(&res, NULL, pb, 1e-9, 4, 0, 0, 0, &err));
+    BAD(ic_problem_trace, "problem", ic_problem_trace(&res, &pair, NULL, 1e-9, 4, 0, 0, 0, &err));
     CHECK(res == NULL && pair == NULL, "problem_trace outputs NULL on failure");
     BAD(ic_trace_json_alloc, "json", ic_trace_json_alloc(NULL, &len, fx->res, fx->pair, &err));
     BAD(ic_trace_json_alloc, "res", ic_trace_json_alloc(&json, &len, NULL, fx->pair, &err));

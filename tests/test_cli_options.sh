@@ -105,6 +105,10 @@ refused "an unknown option" "unknown option '--bogus'" trace "$ex/viviani.json" 
 refused "an unknown option with a value" "unknown option '--bogus'" trace "$ex/viviani.json" --bogus=1
 refused "a missing value" "--depth needs a value D" trace "$ex/viviani.json" --depth
 refused "a flag with a value" "--no-chart takes no value" plot "$ex/viviani.json" -o x.png --no-chart=1
+refused "a count with a tail" "--threads expects a whole number from 0 to 256, got '0x'" \
+    trace "$ex/viviani.json" --threads 0x
+refused "a negative count" "--threads expects a whole number from 0 to 256, got '-2'" \
+    plot "$ex/viviani.json" -o x.png --threads -2
 refused "two problem files" "unexpected argument 'other.json'" trace "$ex/viviani.json" other.json
 refused "no problem file" "needs PROBLEM.json" trace
 refused "a missing required option" "needs PROBLEM.json and -o FIGURE (missing: -o)" plot "$ex/viviani.json"
@@ -195,10 +199,10 @@ for cmd in eval point trace plot; do
     done <"$tmp/help.$cmd"
 done
 # eval --order; point --order, --method, --format, --point-tol; trace
-# --format, --tol, --depth, --time-limit, --fit-tol; plot --frames, --size,
-# --mesh, --tol, --depth
-[ "$ranges" -eq 15 ]
-check "15 ranges found in the help texts (found $ranges)" $?
+# --format, --tol, --depth, --time-limit, --fit-tol, --threads; plot --frames,
+# --size, --mesh, --tol, --depth, --threads
+[ "$ranges" -eq 17 ]
+check "17 ranges found in the help texts (found $ranges)" $?
 
 echo "test_cli_options: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

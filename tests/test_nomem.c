@@ -357,15 +357,17 @@ static void say_trace(char *summary, const ic_trace_result *res)
 }
 
 /* A trace at search depth `depth` (the box [-2.5, 2.5]^3 for two implicit
- * surfaces). */
-static ic_status trace(const surface_def *a, const surface_def *b, int depth, ic_error *err,
-                       char *summary)
+ * surfaces) in `threads` threads (1: the allocations come in the same order
+ * in every run, so the k-th is the same one). */
+static ic_status trace_in(const surface_def *a, const surface_def *b, int depth, int threads,
+                          ic_error *err, char *summary)
 {
     made_pair m;
     ic_status st = make_pair(&m, a, b, err);
     ic_trace_options opt;
     ic_trace_defaults(&opt);
     opt.depth = depth;
+    opt.threads = threads;
     opt.has_box = !a->xyz[1] && b && !b->xyz[1];
     for (int k = 0; k < 3; k++)
         opt.box[k][0] = -2.5, opt.box[k][1] = 2.5;
@@ -377,6 +379,12 @@ static ic_status trace(const surface_def *a, const surface_def *b, int depth, ic
     ic_trace_result_free(res);
     free_pair(&m);
     return st;
+}
+
+static ic_status trace(const surface_def *a, const surface_def *b, int depth, ic_error *err,
+                       char *summary)
+{
+    return trace_in(a, b, depth, 1, err, summary);
 }
 
 /* two implicit surfaces: Viviani's figure-eight and its branch point */
@@ -401,6 +409,15 @@ static ic_status trace_parametric(ic_error *err, char *summary)
 static ic_status trace_incomplete(ic_error *err, char *summary)
 {
     return trace(&CYLINDER_P, &SPHERE_P, 3, err, summary);
+}
+
+/* the same in three threads (docs/tracing.md, "Threads"): an allocation
+ * that fails in a thread costs only the part of the search done ahead
+ * there, which the trace then does itself, with the same result; the k-th
+ * allocation is any thread's */
+static ic_status trace_threads(ic_error *err, char *summary)
+{
+    return trace_in(&CYLINDER_P, &SPHERE_P, 3, 3, err, summary);
 }
 
 /* a self-intersection: the double curves of Enneper's surface (at depth 5:
@@ -433,6 +450,7 @@ static ic_status trace_exact(ic_error *err, char *summary)
             st = ic_pair_new(&m.pair, m.A, m.B, err);
         ic_trace_options opt;
         ic_trace_defaults(&opt);
+        opt.threads = 1;
         opt.has_box = 1;
         for (int k = 0; k < 3; k++)
             opt.box[k][0] = -2.5, opt.box[k][1] = 2.5;
@@ -598,6 +616,7 @@ static ic_status writers(ic_error *err, char *summary)
     ic_trace_options opt;
     ic_trace_defaults(&opt);
     opt.depth = 3;
+    opt.threads = 1;
     opt.has_box = 1;
     for (int k = 0; k < 3; k++)
         opt.box[k][0] = -2.5, opt.box[k][1] = 2.5;
@@ -658,7 +677,7 @@ static ic_status bindings(ic_error *err, char *summary)
     size_t len = 0;
     ic_status st = ic_problem_parse(&p, json, strlen(json), err);
     if (st == IC_OK)
-        st = ic_problem_trace(&res, &pair, p, 1e-11, 3, 0, 1e-9, err);
+        st = ic_problem_trace(&res, &pair, p, 1e-11, 3, 0, 1, 1e-9, err);
     if (st == IC_OK)
         st = ic_trace_json_alloc(&doc, &len, res, pair, err);
     if (st == IC_OK)
@@ -800,6 +819,7 @@ int main(int argc, char **argv)
         {"trace, mixed", trace_mixed},
         {"trace, parametric", trace_parametric},
         {"trace, incomplete", trace_incomplete},
+        {"trace, threads", trace_threads},
         {"trace, self", trace_self},
         {"trace, tangential", trace_tangential},
         {"trace, exact", trace_exact},

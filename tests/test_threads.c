@@ -1,5 +1,6 @@
 /* The library is thread-safe for separate problems (bindings.h, "Threads";
- * docs/python.md): the bundled examples traced and fitted in pthreads all at
+ * docs/python.md): the bundled examples traced (each in threads of its own,
+ * threads 0: docs/tracing.md, "Threads") and fitted in pthreads all at
  * once, two copies of each loaded separately, three rounds, give trace documents
  * identical, byte for byte, to the ones traced one after the other in one
  * thread; and points analysed at once equal the single-threaded ones. */
@@ -41,7 +42,7 @@ static void *run_job(void *arg)
     ic_pair *pair = NULL;
     ic_status st = ic_problem_load(&p, j->path, &err);
     if (st == IC_OK)
-        st = ic_problem_trace(&res, &pair, p, TRACE_TOL, DEPTH, 0, FIT_TOL, &err);
+        st = ic_problem_trace(&res, &pair, p, TRACE_TOL, DEPTH, 0, 0, FIT_TOL, &err);
     if (st == IC_OK)
         st = ic_trace_json_alloc(&j->trace_doc, NULL, res, pair, &err);
     if (st == IC_OK && strstr(j->path, "viviani")) {

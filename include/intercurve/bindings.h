@@ -33,8 +33,9 @@ IC_API void ic_free(void *mem);
  * Traces a problem as `intercurve trace` does: a pair of its surfaces (its
  * one surface with itself for a self-intersection), the problem's box,
  * ic_trace with ic_trace_defaults except tol (relative, as --tol: in
- * (0, 1e-2]), depth (1..IC_TRACE_MAX_DEPTH) and time_limit (seconds, 0:
- * none); then, when fit_tol > 0, ic_trace_fit at fit_tol (relative, as
+ * (0, 1e-2]), depth (1..IC_TRACE_MAX_DEPTH), time_limit (seconds, 0:
+ * none) and threads (as --threads: 0..IC_TRACE_MAX_THREADS, 0 all the
+ * cores; the same result whatever the number); then, when fit_tol > 0, ic_trace_fit at fit_tol (relative, as
  * --fit-tol: at most 1e-2; 0: no B-splines). *res and *pair belong to the
  * caller (free res before pair); both are NULL on failure. IC_ERR_INVALID
  * for a value out of range or a pair the problem cannot make; ic_trace's
@@ -42,7 +43,8 @@ IC_API void ic_free(void *mem);
  */
 IC_API IC_NODISCARD ic_status ic_problem_trace(ic_trace_result **res, ic_pair **pair,
                                                const ic_problem *problem, double tol, int depth,
-                                               double time_limit, double fit_tol, ic_error *err);
+                                               double time_limit, int threads, double fit_tol,
+                                               ic_error *err);
 
 /** The trace document of res, a trace of `pair` (ic_trace_write_json), as
  *  a NUL-terminated text in *json, *len bytes long without the NUL; the

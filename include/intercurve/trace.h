@@ -29,6 +29,8 @@ extern "C" {
 
 /** The deepest start-point search ic_trace accepts: 2^9 cells per axis. */
 #define IC_TRACE_MAX_DEPTH 9
+/** The most threads ic_trace uses (ic_trace_options.threads). */
+#define IC_TRACE_MAX_THREADS 256
 
 typedef struct {
     /* The four lengths below are fractions of the problem's size L: the
@@ -61,6 +63,11 @@ typedef struct {
      *  docs/tracing.md, "Exact paths"); 0: always the search and the
      *  marching, the reference (default 1) */
     int exact_paths;
+    /** threads searching at once: 1 one (the calling thread), 0 all the
+     *  machine's online cores (default), at most IC_TRACE_MAX_THREADS. The
+     *  result is the same, byte for byte, whatever the number (docs/tracing.md,
+     *  "Threads"); callback surfaces are always traced in one thread */
+    int threads;
 } ic_trace_options;
 
 IC_API void ic_trace_defaults(ic_trace_options *opt);

@@ -100,7 +100,7 @@ def _declare(lib):
         "ic_problem_surface_name": (c.c_char_p, [vp, c.c_int]),
         "ic_problem_is_self": (c.c_int, [vp]),
         "ic_problem_trace": (status, [pvp, pvp, vp, c.c_double, c.c_int, c.c_double,
-                                      c.c_double, err]),
+                                      c.c_int, c.c_double, err]),
         "ic_trace_result_free": (None, [vp]),
         "ic_pair_free": (None, [vp]),
         "ic_trace_json_alloc": (status, [pcp, psz, vp, vp, err]),

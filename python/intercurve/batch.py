@@ -23,7 +23,7 @@ def _trace_one(item, options):
 
 
 def batch(problems, workers=None, client=None, tol=DEFAULT_TOL, depth=DEFAULT_DEPTH,
-          fit_tol=DEFAULT_FIT_TOL, time_limit=0.0):
+          fit_tol=DEFAULT_FIT_TOL, time_limit=0.0, threads=1):
     """Traces many problems (Problem objects, problem files' paths or dicts)
     and returns their TraceResults in the same order, the same as
     [p.trace(...) for p in problems] would give, number for number.
@@ -32,9 +32,12 @@ def batch(problems, workers=None, client=None, tol=DEFAULT_TOL, depth=DEFAULT_DE
     process). client: a dask.distributed Client instead: the problems go to
     its cluster (a LocalCluster, or one of dask-jobqueue on Slurm), whose
     workers must be able to import intercurve and load the library. The
-    first problem that fails raises its InputError or ComputationError."""
+    first problem that fails raises its InputError or ComputationError.
+    threads: each trace's own (Problem.trace; default 1: the workers have
+    the cores already)."""
     items = list(problems)
-    options = dict(tol=tol, depth=depth, fit_tol=fit_tol, time_limit=time_limit)
+    options = dict(tol=tol, depth=depth, fit_tol=fit_tol, time_limit=time_limit,
+                   threads=threads)
     if client is not None:
         futures = client.map(_trace_one, items, options=options, pure=False)
         return client.gather(futures)

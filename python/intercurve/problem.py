@@ -108,11 +108,13 @@ class Problem:
         return bool(_lib.library().ic_problem_is_self(self._handle))
 
     def trace(self, tol=DEFAULT_TOL, depth=DEFAULT_DEPTH, fit_tol=DEFAULT_FIT_TOL,
-              time_limit=0.0):
+              time_limit=0.0, threads=0):
         """Traces the whole intersection, as `intercurve trace`: tol is the
         truncation error per step and fit_tol the B-splines' tolerance, both
         fractions of the problem's size (fit_tol 0: no B-splines); depth the
-        start-point search (1..9); time_limit seconds (0: none). Returns a
+        start-point search (1..9); time_limit seconds (0: none); threads
+        that search at once (0..256, 0: all the cores; the same result
+        whatever the number). Returns a
         TraceResult; InputError for values out of range, ComputationError
         when the trace fails."""
         lib = _lib.library()
@@ -120,7 +122,7 @@ class Problem:
         with self._lock:
             st = lib.ic_problem_trace(ctypes.byref(res), ctypes.byref(pair), self._handle,
                                       float(tol), int(depth), float(time_limit),
-                                      float(fit_tol), ctypes.byref(err))
+                                      int(threads), float(fit_tol), ctypes.byref(err))
             _lib.check(st, err)
             try:
                 buf, length = ctypes.c_void_p(), ctypes.c_size_t()
@@ -131,7 +133,8 @@ class Problem:
             except BaseException:
                 _free_trace(res, pair)
                 raise
-        options = dict(tol=tol, depth=depth, fit_tol=fit_tol, time_limit=time_limit)
+        options = dict(tol=tol, depth=depth, fit_tol=fit_tol, time_limit=time_limit,
+                       threads=threads)
         return TraceResult(document, self, options, (res, pair))
 
     def point(self, at=None, params=None, order=DEFAULT_ORDER, method="auto",

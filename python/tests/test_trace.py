@@ -133,6 +133,18 @@ def test_trace_options_out_of_range_are_input_errors():
         p.trace(tol=-1)
     with pytest.raises(ic.InputError, match="fit_tol"):
         p.trace(fit_tol=0.5)
+    for threads in (-1, 257):
+        with pytest.raises(ic.InputError, match="threads"):
+            p.trace(threads=threads)
+
+
+def test_trace_is_the_same_in_any_number_of_threads():
+    # docs/tracing.md, "Threads": the documents equal, number for number
+    p = ic.Problem.load(example("torus-sphere.json"))
+    one = p.trace(depth=5, threads=1)
+    for threads in (0, 2, 3):
+        assert p.trace(depth=5, threads=threads) == one
+    assert one.options["threads"] == 1
 
 
 def test_implicit_pair_without_box_is_an_input_error():

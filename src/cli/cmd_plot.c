@@ -11,6 +11,7 @@ enum {
     OPT_TOL,
     OPT_DEPTH,
     OPT_NO_EXACT,
+    OPT_THREADS,
     NOPTIONS
 };
 
@@ -67,6 +68,13 @@ static const ic_cli_option PLOT_OPTIONS[NOPTIONS] = {
                    .fallback = "6",
                    .help = "as for 'intercurve trace'"},
     [OPT_NO_EXACT] = {.name = "--no-exact", .kind = IC_OPT_FLAG, .help = "as for 'intercurve trace'"},
+    [OPT_THREADS] = {.name = "--threads",
+                     .metavar = "N",
+                     .kind = IC_OPT_INT,
+                     .lo = 0,
+                     .hi = IC_TRACE_MAX_THREADS,
+                     .fallback = "0",
+                     .help = "as for 'intercurve trace'"},
 };
 
 static const ic_cli_command PLOT = {
@@ -103,6 +111,7 @@ int ic_cmd_plot(int argc, char **argv)
     to.tol = v[OPT_TOL].real;
     to.depth = (int)v[OPT_DEPTH].integer;
     to.exact_paths = !v[OPT_NO_EXACT].given;
+    to.threads = (int)v[OPT_THREADS].integer;
     ic_cli_traced t;
     if ((rc = ic_cli_trace_file(file, &to, &t)) != 0)
         return rc;

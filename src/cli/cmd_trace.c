@@ -11,6 +11,7 @@ enum {
     OPT_TIME_LIMIT,
     OPT_FIT_TOL,
     OPT_NO_EXACT,
+    OPT_THREADS,
     NOPTIONS
 };
 
@@ -82,6 +83,14 @@ static const ic_cli_option TRACE_OPTIONS[NOPTIONS] = {
                               "(coaxial surfaces of revolution, a plane's ellipse on a\n"
                               "quadric, two equal cylinders whose axes meet: docs/tracing.md,\n"
                               "\"Exact paths\")"},
+    [OPT_THREADS] = {.name = "--threads",
+                     .metavar = "N",
+                     .kind = IC_OPT_INT,
+                     .lo = 0,
+                     .hi = IC_TRACE_MAX_THREADS,
+                     .fallback = "0",
+                     .help = "threads that search at once, 0 for all the machine's cores;\n"
+                             "the output is the same whatever N (docs/tracing.md, \"Threads\")"},
 };
 
 static const ic_cli_command TRACE = {
@@ -174,6 +183,7 @@ int ic_cmd_trace(int argc, char **argv)
     opt.tol = v[OPT_TOL].real;
     opt.depth = (int)v[OPT_DEPTH].integer;
     opt.exact_paths = !v[OPT_NO_EXACT].given;
+    opt.threads = (int)v[OPT_THREADS].integer;
     if (v[OPT_TIME_LIMIT].given)
         opt.time_limit = v[OPT_TIME_LIMIT].real;
     ic_cli_traced t;

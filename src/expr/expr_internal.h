@@ -37,6 +37,10 @@ struct ic_expr {
     int hash_cap;
 };
 
+/* A deep copy of a compiled expression (its own tape): what a worker
+ * thread of a trace evaluates (trace/workers.c). IC_ERR_NOMEM. */
+ic_status ic_expr_copy(ic_expr **out, const ic_expr *e, ic_error *err);
+
 /* Builder: appends an instruction (or returns an identical earlier one),
  * folding constants. Returns the register index, or -1 with err filled. */
 int ic_tape_emit(ic_expr *e, ic_opcode op, int a, int b, long n, double c, int column,

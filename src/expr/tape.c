@@ -272,6 +272,36 @@ void ic_expr_free(ic_expr *e)
     free(e);
 }
 
+/* A copy of n elements of `size` bytes (NULL for none or out of memory). */
+static void *copy_array(const void *a, size_t n, size_t size)
+{
+    if (!a || n == 0)
+        return NULL;
+    void *c = malloc(n * size);
+    if (c)
+        memcpy(c, a, n * size);
+    return c;
+}
+
+ic_status ic_expr_copy(ic_expr **out, const ic_expr *e, ic_error *err)
+{
+    *out = NULL;
+    ic_expr *c = calloc(1, sizeof *c);
+    if (!c)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory copying formulas");
+    *c = *e;
+    c->cap = e->len; /* the tape is complete: no room to grow */
+    c->code = copy_array(e->code, (size_t)e->len, sizeof *e->code);
+    c->outputs = copy_array(e->outputs, (size_t)e->noutputs, sizeof *e->outputs);
+    c->hash = copy_array(e->hash, (size_t)e->hash_cap, sizeof *e->hash);
+    if ((e->code && !c->code) || (e->outputs && !c->outputs) || (e->hash && !c->hash)) {
+        ic_expr_free(c);
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory copying formulas");
+    }
+    *out = c;
+    return IC_OK;
+}
+
 int ic_expr_num_outputs(const ic_expr *e) { return e ? e->noutputs : 0; }
 int ic_expr_num_vars(const ic_expr *e) { return e ? e->nvars : 0; }
 int ic_expr_tape_len(const ic_expr *e) { return e ? e->len : 0; }

@@ -29,8 +29,8 @@ static ic_status problem_pair(ic_pair **pair, const ic_problem *problem, ic_erro
 }
 
 ic_status ic_problem_trace(ic_trace_result **res, ic_pair **pair, const ic_problem *problem,
-                           double tol, int depth, double time_limit, double fit_tol,
-                           ic_error *err)
+                           double tol, int depth, double time_limit, int threads,
+                           double fit_tol, ic_error *err)
 {
     IC_ARG_NOT_NULL(res, "res");
     IC_ARG_NOT_NULL(pair, "pair");
@@ -47,6 +47,7 @@ ic_status ic_problem_trace(ic_trace_result **res, ic_pair **pair, const ic_probl
     opt.tol = tol;
     opt.depth = depth;
     opt.time_limit = time_limit;
+    opt.threads = threads; /* ic_trace refuses it out of range */
     opt.has_box = ic_problem_box(problem, opt.box);
     ic_status st = problem_pair(pair, problem, err);
     if (st == IC_OK)

@@ -185,6 +185,36 @@ ic_status ic_nurbs_patch_new(ic_nurbs_patch **out, const ic_nurbs *d, ic_error *
     return IC_OK;
 }
 
+/* A copy of n doubles, or NULL out of memory. */
+static double *copy_doubles(const double *a, size_t n)
+{
+    double *c = malloc(n * sizeof *c);
+    if (c)
+        memcpy(c, a, n * sizeof *c);
+    return c;
+}
+
+ic_status ic_nurbs_patch_copy(ic_nurbs_patch **out, const ic_nurbs_patch *pt, ic_error *err)
+{
+    *out = NULL;
+    ic_nurbs_patch *c = calloc(1, sizeof *c);
+    if (!c)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory copying a NURBS patch");
+    *c = *pt;
+    const size_t cells = (size_t)pt->n[0] * (size_t)pt->n[1];
+    c->hom = copy_doubles(pt->hom, 4 * cells);
+    for (int k = 0; k < 2; k++) {
+        c->knots[k] = copy_doubles(pt->knots[k], (size_t)(pt->n[k] + pt->p[k] + 1));
+        c->hodo[k] = copy_doubles(pt->hodo[k], 4 * cells);
+    }
+    if (!c->hom || !c->knots[0] || !c->knots[1] || !c->hodo[0] || !c->hodo[1]) {
+        ic_nurbs_patch_free(c);
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory copying a NURBS patch");
+    }
+    *out = c;
+    return IC_OK;
+}
+
 void ic_nurbs_patch_free(ic_nurbs_patch *pt)
 {
     if (!pt)

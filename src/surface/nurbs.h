@@ -27,6 +27,8 @@ typedef enum { IC_NURBS_RIGHT = 0, IC_NURBS_LEFT = 1 } ic_nurbs_side;
 /* Validates and copies a description; errors name the field in err->path. */
 ic_status ic_nurbs_patch_new(ic_nurbs_patch **out, const ic_nurbs *desc, ic_error *err);
 void ic_nurbs_patch_free(ic_nurbs_patch *patch);
+/* A deep copy (a worker thread's own: trace/workers.c). IC_ERR_NOMEM. */
+ic_status ic_nurbs_patch_copy(ic_nurbs_patch **out, const ic_nurbs_patch *patch, ic_error *err);
 
 /* Doubles of workspace ic_nurbs_taylor needs for jets of n coefficients. */
 size_t ic_nurbs_taylor_work_len(int n);

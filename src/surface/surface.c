@@ -29,8 +29,7 @@ static ic_surface *surface_alloc(ic_surface_kind kind, ic_backend backend)
  * out of memory there from a point where the surface is undefined. */
 #define RESERVED_ORDER 4
 
-/* Makes what those evaluations use; IC_ERR_NOMEM, and s freed, if it cannot. */
-static ic_status reserve(ic_surface *s, ic_error *err)
+ic_status ic_surface_reserve(ic_surface *s, ic_error *err)
 {
     for (int k = 0; k <= RESERVED_ORDER; k++)
         if (!ic_surface_space(s, k, err)) {
@@ -76,7 +75,7 @@ ic_status ic_surface_new_parametric(ic_surface **out, const char *const xyz[3],
         ic_surface_free(s);
         return st;
     }
-    st = reserve(s, err);
+    st = ic_surface_reserve(s, err);
     if (st == IC_OK)
         *out = s;
     return st;
@@ -99,7 +98,7 @@ ic_status ic_surface_new_implicit(ic_surface **out, const char *f, const ic_cons
         ic_surface_free(s);
         return st;
     }
-    st = reserve(s, err);
+    st = ic_surface_reserve(s, err);
     if (st == IC_OK)
         *out = s;
     return st;
@@ -118,7 +117,7 @@ ic_status ic_surface_new_callback(ic_surface **out, ic_surface_kind kind, ic_sur
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory creating a surface");
     s->fn = fn;
     s->user = user;
-    const ic_status st = reserve(s, err);
+    const ic_status st = ic_surface_reserve(s, err);
     if (st == IC_OK)
         *out = s;
     return st;
@@ -143,7 +142,7 @@ ic_status ic_surface_new_primitive(ic_surface **out, const ic_primitive *prim, i
     }
     if (form == IC_PARAMETRIC)
         ic_primitive_default_domain(s);
-    st = reserve(s, err);
+    st = ic_surface_reserve(s, err);
     if (st == IC_OK)
         *out = s;
     return st;
@@ -159,7 +158,7 @@ ic_status ic_surface_new_nurbs(ic_surface **out, const ic_nurbs *nurbs, ic_error
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory creating a surface");
     ic_status st = ic_nurbs_patch_new(&s->nurbs, nurbs, err);
     if (st == IC_OK)
-        st = reserve(s, err); /* frees s on failure */
+        st = ic_surface_reserve(s, err); /* frees s on failure */
     else
         ic_surface_free(s);
     if (st != IC_OK)

@@ -38,6 +38,11 @@ struct ic_surface {
  * Taylor polynomial and its scratch in slot 1. */
 enum { IC_WORK_EVAL = 0, IC_WORK_COMPOSE = 1 };
 
+/* Makes the spaces and workspaces of the evaluations up to order 4 (a
+ * failed allocation there could not be told from a point where the surface
+ * is undefined); IC_ERR_NOMEM, and s freed, if it cannot. */
+ic_status ic_surface_reserve(ic_surface *s, ic_error *err);
+
 /* Workspace slot of at least len doubles (grows, keeps nothing). NULL on OOM. */
 double *ic_surface_work(ic_surface *s, int slot, size_t len);
 /* ic_surface_space, ic_surface_taylor_toward */

@@ -57,6 +57,7 @@ void ic_trace_defaults(ic_trace_options *opt)
     opt->depth = 6;
     opt->shape_tol = 1e-6;
     opt->exact_paths = 1;
+    opt->threads = 0; /* all the cores */
     ic_local_defaults(&opt->local);
 }
 

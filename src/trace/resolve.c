@@ -16,6 +16,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "trace_constants.h"
 #include "trace_internal.h"
+#include "workers.h"
 #include "common/vec3.h"
 
 #include <math.h>
@@ -92,8 +93,11 @@ static int decided(const ic_trace_result *r, const ic_unresolved *u)
     return explained(r, u);
 }
 
+/* The open cells, and beside each the finer search done ahead for it by
+ * the trace's threads (NULL: none yet; only with threads). */
 typedef struct {
     ic_unresolved *u;
+    ic_search_part **ahead;
     int n, cap;
 } cell_stack;
 
@@ -107,6 +111,12 @@ static int push(cell_stack *s, const ic_unresolved *u, int n)
         if (!p)
             return -1;
         s->u = p;
+        ic_search_part **a = s->ahead ? realloc(s->ahead, (size_t)cap * sizeof *a) : NULL;
+        if (s->ahead && !a)
+            return -1;
+        s->ahead = a;
+        for (int i = s->cap; a && i < cap; i++)
+            a[i] = NULL;
         s->cap = cap;
     }
     memcpy(s->u + s->n, u, (size_t)n * sizeof *u);
@@ -118,15 +128,15 @@ static int push(cell_stack *s, const ic_unresolved *u, int n)
  * nothing passes near searched for an isolated contact, its open children
  * pushed on the stack. */
 static ic_status refine(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
-                        const ic_trace_options *opt, const ic_unresolved *u, cell_stack *work,
-                        ic_error *err)
+                        const ic_trace_options *opt, const ic_unresolved *u,
+                        ic_search_part *ahead, cell_stack *work, ic_error *err)
 {
     ic_candidate *cand = NULL;
     ic_unresolved *sub = NULL;
     int nc = 0, ns = 0;
     r->report.refined_cells++;
-    ic_status st = ic_trace_candidates(pair, opt, u, &cand, &nc, &sub, &ns, &r->report,
-                                       &r->budget, err);
+    ic_status st = ic_trace_candidates(pair, opt, u, NULL, ahead, &cand, &nc, &sub, &ns,
+                                       &r->report, &r->budget, err);
     if (st == IC_OK)
         st = ic_trace_from_candidates(r, tr, pair, cand, nc, opt, err);
     for (int i = 0; st == IC_OK && i < ns; i++)
@@ -135,35 +145,94 @@ static ic_status refine(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
             st = ic_trace_tangential_in_cell(r, tr, pair, &sub[i], opt);
     if (st == IC_OK && push(work, sub, ns) != 0)
         st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
+    /* their finer searches done ahead, if any (matched to their cells when
+     * taken: a part for another cell is never used) */
+    for (int i = 0; st == IC_OK && work->ahead && i < ns; i++)
+        work->ahead[work->n - ns + i] = ic_search_part_take_child(ahead, i);
     free(cand);
     free(sub);
     return st;
+}
+
+/* Whether an undecided cell is refined (not listed as it is); b: the
+ * trace's budget, or a copy of it to ask without stopping the trace. */
+static int can_refine(const ic_trace_result *r, const ic_unresolved *u, ic_trace_budget *b)
+{
+    return !u->overflow && !(u->radius > 0 && ic_trace_in_coincident(r, u->xyz)) &&
+           r->report.proven && u->level < IC_TRACE_MAX_REFINE_LEVELS && !b->stopped &&
+           !ic_trace_out_of_time(b);
+}
+
+/* ic_search_wanted: an open cell found ahead that will be refined, if
+ * nothing is traced meanwhile. */
+static int wanted(const void *ctx, const ic_unresolved *u)
+{
+    const ic_trace_result *r = ctx;
+    ic_trace_budget b = r->budget;
+    return !decided(r, u) && can_refine(r, u, &b);
+}
+
+/* Cells refined ahead in one batch, per thread: enough to share the work,
+ * few enough that little is lost when a curve traced meanwhile decides
+ * some of them. */
+#define AHEAD_PER_THREAD 8
+
+/* The finer searches of the top cells of the stack that are to be refined
+ * now, done ahead by the threads: the cell just popped from slot `at`
+ * first, then the ones below it. */
+static void refine_ahead(const ic_trace_result *r, ic_pair *pair, const ic_trace_options *opt,
+                         cell_stack *work, int at)
+{
+    enum { MOST = AHEAD_PER_THREAD * IC_TRACE_MAX_THREADS };
+    const int want = AHEAD_PER_THREAD * ic_trace_workers_count(r->workers);
+    const ic_unresolved *cells[MOST];
+    int slot[MOST], n = 0;
+    ic_trace_budget b = r->budget;
+    for (int i = at; i >= 0 && n < want; i--)
+        if (i == at || (!work->ahead[i] && !decided(r, &work->u[i]) &&
+                        can_refine(r, &work->u[i], &b)))
+            cells[n] = &work->u[i], slot[n++] = i;
+    ic_search_part *parts[MOST];
+    ic_search_ahead_cells(r->workers, pair, opt, r->report.proven, cells, n, wanted, r, &r->budget,
+                          parts);
+    for (int k = 0; k < n; k++)
+        work->ahead[slot[k]] = parts[k];
 }
 
 ic_status ic_trace_resolve_cells(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
                                  const ic_trace_options *opt, ic_unresolved **cells, int *n,
                                  ic_error *err)
 {
-    cell_stack work = {*cells, *n, *n}, open = {0};
+    cell_stack work = {*cells, NULL, *n, *n}, open = {0};
     *cells = NULL;
     *n = 0;
     ic_status st = IC_OK;
+    if (r->workers && work.cap > 0 && !(work.ahead = calloc((size_t)work.cap, sizeof *work.ahead)))
+        st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
     long done = 0;
     while (st == IC_OK && work.n > 0) {
         ic_trace_progress(r, opt, "refining open cells", done, done + work.n);
         done++;
         const ic_unresolved u = work.u[--work.n];
-        if (decided(r, &u))
-            continue;
-        const int can_refine = !u.overflow &&
-                               !(u.radius > 0 && ic_trace_in_coincident(r, u.xyz)) &&
-                               r->report.proven && u.level < IC_TRACE_MAX_REFINE_LEVELS &&
-                               !r->budget.stopped && !ic_trace_out_of_time(&r->budget);
-        if (can_refine)
-            st = refine(r, tr, pair, opt, &u, &work, err);
-        else if (push(&open, &u, 1) != 0)
+        /* the slot's part is taken now: refine's children reuse the slot */
+        ic_search_part *ahead = work.ahead ? work.ahead[work.n] : NULL;
+        if (work.ahead)
+            work.ahead[work.n] = NULL;
+        const int open_cell = !decided(r, &u);
+        if (open_cell && can_refine(r, &u, &r->budget)) {
+            if (work.ahead && !ahead) {
+                refine_ahead(r, pair, opt, &work, work.n);
+                ahead = work.ahead[work.n];
+                work.ahead[work.n] = NULL;
+            }
+            st = refine(r, tr, pair, opt, &u, ahead, &work, err);
+        } else if (open_cell && push(&open, &u, 1) != 0)
             st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
+        ic_search_part_free(ahead);
     }
+    for (int i = 0; work.ahead && i < work.n; i++)
+        ic_search_part_free(work.ahead[i]);
+    free(work.ahead);
     free(work.u);
     if (st != IC_OK) {
         free(open.u);

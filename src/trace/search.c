@@ -9,7 +9,13 @@
  * With `within`, one leaf is searched again a few levels finer. Surfaces
  * without interval evaluation (callbacks) cannot exclude anything: then the
  * leaves of a coarser grid are sampled and the report says so.
+ *
+ * With threads, subtrees of the first search and the finer searches of
+ * open cells are done ahead (search_ahead.c) and taken in the serial order
+ * in place of the cells they cover, where the budget allows what they took:
+ * the result is the serial one whatever the number of threads.
  */
+#include "search_internal.h"
 #include "trace_internal.h"
 #include "common/vec3.h"
 #include "local/local_internal.h"
@@ -18,64 +24,85 @@
 #include <stdlib.h>
 #include <string.h>
 
-typedef struct {
-    double lo[4], hi[4];
-    int depth;
-} cell;
-
-typedef struct {
-    ic_candidate *c;
-    int n, cap;
-} cand_list;
-
-static int push_candidate(cand_list *l, const ic_candidate *c)
+static int push_candidate(ic_search_part *l, const ic_candidate *c)
 {
-    if (l->n == l->cap) {
-        const int cap = l->cap ? 2 * l->cap : 64;
-        ic_candidate *p = realloc(l->c, (size_t)cap * sizeof *p);
+    if (l->ncand == l->capc) {
+        const int cap = l->capc ? 2 * l->capc : 64;
+        ic_candidate *p = realloc(l->cand, (size_t)cap * sizeof *p);
         if (!p)
             return -1;
-        l->c = p;
-        l->cap = cap;
+        l->cand = p;
+        l->capc = cap;
     }
-    l->c[l->n++] = *c;
+    l->cand[l->ncand++] = *c;
     return 0;
+}
+
+static int push_unresolved(ic_search_part *l, const ic_unresolved *u)
+{
+    if (l->nunres == l->capu) {
+        const int cap = l->capu ? 2 * l->capu : 64;
+        ic_unresolved *p = realloc(l->unres, (size_t)cap * sizeof *p);
+        if (!p)
+            return -1;
+        l->unres = p;
+        l->capu = cap;
+    }
+    l->unres[l->nunres++] = *u;
+    return 0;
+}
+
+void ic_search_part_free(ic_search_part *p)
+{
+    if (!p)
+        return;
+    ic_search_part_clear(p);
+    free(p);
+}
+
+ic_search_part *ic_search_part_take_child(ic_search_part *p, int i)
+{
+    if (!p || !p->children || i < 0 || i >= p->nunres)
+        return NULL;
+    ic_search_part *c = p->children[i];
+    p->children[i] = NULL;
+    return c;
+}
+
+void ic_search_part_clear(ic_search_part *p)
+{
+    for (int i = 0; p->children && i < p->nunres; i++)
+        ic_search_part_free(p->children[i]);
+    free(p->children);
+    free(p->cand);
+    free(p->unres);
+    memset(p, 0, sizeof *p);
 }
 
 /* A Newton point is accepted when its distance to each surface is below
  * this fraction of (L + |x|): rounding leaves about 1e-15 of it. */
 #define NEWTON_ACCEPT 1e-10
 
-/* What one search needs: the pairing, the region, and the band around a
- * self-intersection's diagonal. */
-typedef struct {
-    const ic_pairing *pg;
-    const ic_pairing_kind *kind;
-    ic_surface *const *S;
-    int dim;
-    double lo[4], hi[4]; /* the whole search region */
-    int periodic[4];     /* coordinates whose domain is a period */
-    double band[2];      /* two leaf widths in (u, v) at the first search's depth */
-    int proven;
-    double L; /* the problem's size */
-} search_ctx;
+int ic_search_full_depth(const ic_search_ctx *x, const ic_trace_options *opt)
+{
+    /* four parameters: one level less (16 children a split) */
+    return x->dim == 4 ? opt->depth - 1 : opt->depth;
+}
 
-static ic_status ctx_init(search_ctx *x, ic_pair *pair, const ic_trace_options *opt,
-                          ic_error *err)
+ic_status ic_search_ctx_init(ic_search_ctx *x, ic_pair *pair, const ic_trace_options *opt,
+                             int proven, ic_error *err)
 {
     memset(x, 0, sizeof *x);
     x->pg = ic_pair_pairing(pair);
     x->kind = x->pg->kind;
-    x->S = x->pg->S;
     x->dim = x->kind->dim;
     x->L = opt->local.scale > 0 ? opt->local.scale : 1.0;
     ic_status st = x->kind->region(x->pg, opt->box, opt->has_box, x->lo, x->hi, x->periodic, err);
     if (st != IC_OK)
         return st;
     /* can the surfaces be enclosed? (formula surfaces and primitives) */
-    x->proven = x->kind->enclosable(x->pg, x->lo, x->hi);
-    /* four parameters: one level less (16 children a split) */
-    const int full = x->dim == 4 ? opt->depth - 1 : opt->depth;
+    x->proven = proven >= 0 ? proven : x->kind->enclosable(x->pg, x->lo, x->hi);
+    const int full = ic_search_full_depth(x, opt);
     for (int k = 0; k < 2; k++)
         x->band[k] = 2 * (x->hi[k] - x->lo[k]) / (1 << full);
     return IC_OK;
@@ -84,7 +111,8 @@ static ic_status ctx_init(search_ctx *x, ic_pair *pair, const ic_trace_options *
 /* Newton from the cell's centre: 1 with *cand set when it converged near
  * the cell (within a cell width, inside the region); *converged says
  * whether it converged at all. */
-static int leaf_newton(const search_ctx *x, const cell *c, ic_candidate *cand, int *converged)
+static int leaf_newton(const ic_search_ctx *x, const ic_search_cell *c, ic_candidate *cand,
+                       int *converged)
 {
     memset(cand, 0, sizeof *cand);
     double z[4], xyz[3] = {0, 0, 0};
@@ -105,7 +133,7 @@ static int leaf_newton(const search_ctx *x, const cell *c, ic_candidate *cand, i
 
 /* The place of a cell in space: its centre's point and a radius covering
  * the cell (0 where it cannot be placed: never counted as covered). */
-static void describe_cell(const search_ctx *x, const cell *c, ic_unresolved *u)
+static void describe_cell(const ic_search_ctx *x, const ic_search_cell *c, ic_unresolved *u)
 {
     memcpy(u->lo, c->lo, sizeof u->lo);
     memcpy(u->hi, c->hi, sizeof u->hi);
@@ -117,7 +145,7 @@ static void describe_cell(const search_ctx *x, const cell *c, ic_unresolved *u)
  * lies inside the enlarged one. The enlargement stops at the region's
  * edges, where no curve is sought, except across a period (the curve goes
  * on there). */
-static int leaf_loop_free(const search_ctx *x, const cell *c)
+static int leaf_loop_free(const ic_search_ctx *x, const ic_search_cell *c)
 {
     if (!x->proven)
         return 0;
@@ -131,30 +159,11 @@ static int leaf_loop_free(const search_ctx *x, const cell *c)
     return x->kind->loop_free(x->pg, elo, ehi);
 }
 
-typedef struct {
-    ic_unresolved *u;
-    int n, cap;
-} unres_list;
-
-static int push_unresolved(unres_list *l, const ic_unresolved *u)
-{
-    if (l->n == l->cap) {
-        const int cap = l->cap ? 2 * l->cap : 64;
-        ic_unresolved *p = realloc(l->u, (size_t)cap * sizeof *p);
-        if (!p)
-            return -1;
-        l->u = p;
-        l->cap = cap;
-    }
-    l->u[l->n++] = *u;
-    return 0;
-}
-
 /* A leaf: Newton, centred forms, the loop test; a start point is kept, a
  * leaf that holds none, or that fails the loop test, is returned as
  * unresolved. -1: out of memory. */
-static int process_leaf(const search_ctx *x, const cell *c, int level, cand_list *list,
-                        unres_list *unres, ic_trace_report *rep)
+static int process_leaf(const ic_search_ctx *x, const ic_search_cell *c, int level,
+                        ic_search_part *out)
 {
     ic_candidate cand;
     int converged;
@@ -162,18 +171,18 @@ static int process_leaf(const search_ctx *x, const cell *c, int level, cand_list
     /* nothing found: centred forms may still prove the leaf empty (they
      * separate two surfaces closer than a cell) */
     if (!ok && x->proven && x->kind->excluded_centred(x->pg, c->lo, c->hi)) {
-        rep->cells_excluded++;
-        rep->cells_excluded_centred++;
+        out->counts.excluded++;
+        out->counts.excluded_centred++;
         return 0;
     }
     const int loop = !leaf_loop_free(x, c);
     if (x->proven) {
         if (loop)
-            rep->loop_cells++;
+            out->counts.loop_cells++;
         else
-            rep->loop_free_cells++;
+            out->counts.loop_free_cells++;
     }
-    if (ok && push_candidate(list, &cand) != 0)
+    if (ok && push_candidate(out, &cand) != 0)
         return -1;
     if (ok && !loop)
         return 0;
@@ -186,12 +195,13 @@ static int process_leaf(const search_ctx *x, const cell *c, int level, cand_list
     u.overflow = x->proven && x->kind->overflows(x->pg, c->lo, c->hi);
     u.degenerate = loop && x->kind->may_degenerate(x->pg, c->lo, c->hi);
     describe_cell(x, c, &u);
-    return push_unresolved(unres, &u);
+    return push_unresolved(out, &u);
 }
 
 /* A cell the budget left unexamined: returned as unresolved, unplaced
  * (radius 0), so that it is never counted as covered. */
-static int push_unexamined(const search_ctx *x, const cell *c, int level, unres_list *unres)
+static int push_unexamined(const ic_search_ctx *x, const ic_search_cell *c, int level,
+                           ic_search_part *out)
 {
     ic_unresolved u;
     memset(&u, 0, sizeof u);
@@ -199,10 +209,15 @@ static int push_unexamined(const search_ctx *x, const cell *c, int level, unres_
     u.level = level;
     describe_cell(x, c, &u);
     u.radius = 0.0;
-    return push_unresolved(unres, &u);
+    return push_unresolved(out, &u);
 }
 
-static int out_of_budget(ic_trace_budget *b)
+/* Cells taken between two looks at the clock (and, ahead, at the cells
+ * all the threads took): a cell costs microseconds. */
+#define CLOCK_EVERY 256
+
+/* Takes a cell from the budget: 1 when none is left (b->stopped set). */
+static int out_of_budget(ic_trace_budget *b, ic_search_share *share)
 {
     if (b->stopped)
         return 1;
@@ -211,88 +226,170 @@ static int out_of_budget(ic_trace_budget *b)
         return 1;
     }
     b->cells_left--;
-    /* the clock is read every 256 cells: a cell costs microseconds */
-    return (b->cells_left & 255) == 0 && ic_trace_out_of_time(b);
+    if ((b->cells_left & (CLOCK_EVERY - 1)) != 0)
+        return 0;
+    if (share && atomic_fetch_add(&share->used, CLOCK_EVERY) + CLOCK_EVERY > share->available) {
+        b->stopped = IC_TRACE_STOP_CELLS;
+        return 1;
+    }
+    return ic_trace_out_of_time(b);
+}
+
+static int same_cell(const ic_search_cell *a, const ic_search_cell *b, int dim)
+{
+    if (a->depth != b->depth)
+        return 0;
+    for (int k = 0; k < dim; k++)
+        if (a->lo[k] != b->lo[k] || a->hi[k] != b->hi[k])
+            return 0;
+    return 1;
+}
+
+/* Whether the serial order, with budget b, gets what the part done ahead
+ * found: the part is whole, the budget holds the cells it took,
+ * and no look at the clock among them would have found the time up. */
+static int part_usable(const ic_search_part *p, const ic_trace_budget *b)
+{
+    if (!p->complete || b->stopped || b->cells_left < p->used)
+        return 0;
+    /* the looks fall where cells_left, once taken, is a multiple of CLOCK_EVERY */
+    const long first = b->cells_left - p->used, last = b->cells_left - 1;
+    const int looks = p->used > 0 &&
+                      (first % CLOCK_EVERY == 0 || first / CLOCK_EVERY != last / CLOCK_EVERY);
+    return !(looks && b->deadline > 0 && ic_trace_now() > b->deadline);
+}
+
+/* Appends a part done ahead to out as if its cells had been walked. */
+static int take_part(ic_search_part *out, const ic_search_part *p, ic_trace_budget *b)
+{
+    for (int i = 0; i < p->ncand; i++)
+        if (push_candidate(out, &p->cand[i]) != 0)
+            return -1;
+    for (int i = 0; i < p->nunres; i++)
+        if (push_unresolved(out, &p->unres[i]) != 0)
+            return -1;
+    out->counts.cells += p->counts.cells;
+    out->counts.excluded += p->counts.excluded;
+    out->counts.excluded_centred += p->counts.excluded_centred;
+    out->counts.loop_cells += p->counts.loop_cells;
+    out->counts.loop_free_cells += p->counts.loop_free_cells;
+    b->cells_left -= p->used;
+    out->used += p->used;
+    return 0;
+}
+
+/* The part done ahead for cell c, when the serial order can take it. */
+static const ic_search_part *part_for(ic_search_walk *w, const ic_search_cell *c)
+{
+    if (w->next >= w->nparts || !same_cell(&w->parts[w->next]->root, c, w->x->dim))
+        return NULL;
+    const ic_search_part *p = w->parts[w->next++];
+    return part_usable(p, w->budget) ? p : NULL;
+}
+
+/* One cell popped from the walk's stack: pushes its children, or adds
+ * what it holds to out. -1 out of memory. */
+static int visit(ic_search_walk *w, const ic_search_cell *c, ic_search_cell *stack, int *top,
+                 ic_search_part *out)
+{
+    const ic_search_ctx *x = w->x;
+    const int leaf = c->depth == w->depth;
+    if (x->kind->skip && x->kind->skip(x->pg, c->lo, c->hi, leaf, x->band))
+        return 0;
+    const long before = w->budget->cells_left;
+    if (out_of_budget(w->budget, w->share)) {
+        if (w->ahead)
+            return 0;
+        return push_unexamined(x, c, w->level + c->depth - w->depth, out);
+    }
+    out->used += before - w->budget->cells_left;
+    out->counts.cells++;
+    if (x->proven && x->kind->excluded(x->pg, c->lo, c->hi)) {
+        out->counts.excluded++;
+        return 0;
+    }
+    if (leaf)
+        return process_leaf(x, c, w->level, out);
+    for (int m = 0; m < (1 << x->dim); m++) { /* 2^dim children */
+        ic_search_cell ch = {.depth = c->depth + 1};
+        for (int k = 0; k < x->dim; k++) {
+            const double mid = 0.5 * (c->lo[k] + c->hi[k]);
+            ch.lo[k] = (m >> k) & 1 ? mid : c->lo[k];
+            ch.hi[k] = (m >> k) & 1 ? c->hi[k] : mid;
+        }
+        stack[(*top)++] = ch;
+    }
+    return 0;
+}
+
+int ic_search_walk_run(ic_search_walk *w, ic_search_part *out)
+{
+    ic_search_cell *stack = malloc(((size_t)16 * w->depth + 16) * sizeof *stack);
+    if (!stack)
+        return -1;
+    int top = 1, rc = 0;
+    stack[0] = out->root;
+    while (rc == 0 && top > 0 && !(w->ahead && w->budget->stopped)) {
+        const ic_search_cell c = stack[--top];
+        const ic_search_part *p = w->nparts > 0 ? part_for(w, &c) : NULL;
+        rc = p ? take_part(out, p, w->budget) : visit(w, &c, stack, &top, out);
+    }
+    free(stack);
+    out->complete = rc == 0 && !(w->ahead && w->budget->stopped);
+    return rc;
 }
 
 ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt,
-                              const ic_unresolved *within, ic_candidate **out, int *nout,
+                              const ic_unresolved *within, ic_trace_workers *workers,
+                              ic_search_part *ahead, ic_candidate **out, int *nout,
                               ic_unresolved **unres, int *nunres, ic_trace_report *rep,
                               ic_trace_budget *budget, ic_error *err)
 {
     *out = NULL, *nout = 0, *unres = NULL, *nunres = 0;
-    search_ctx x;
-    ic_status st = ctx_init(&x, pair, opt, err);
+    ic_search_ctx x;
+    ic_status st = ic_search_ctx_init(&x, pair, opt, within ? rep->proven : -1, err);
     if (st != IC_OK)
         return st;
     if (!within)
         rep->proven = x.proven;
-    x.proven = rep->proven; /* a finer search keeps the whole search's answer */
-    /* four parameters: one level less (16 children a split); without
-     * enclosures nothing is excluded: a coarser grid is sampled */
-    const int full = x.dim == 4 ? opt->depth - 1 : opt->depth;
-    int depth = x.proven ? full : (full < 4 ? full : 4), level = 0;
-    double lo[4], hi[4];
-    memcpy(lo, x.lo, sizeof lo), memcpy(hi, x.hi, sizeof hi);
+    /* without enclosures nothing is excluded: a coarser grid is sampled */
+    const int full = ic_search_full_depth(&x, opt);
+    ic_search_walk w = {.x = &x, .depth = x.proven ? full : (full < 4 ? full : 4),
+                        .budget = budget};
+    ic_search_part part;
+    memset(&part, 0, sizeof part);
+    memcpy(part.root.lo, x.lo, sizeof x.lo), memcpy(part.root.hi, x.hi, sizeof x.hi);
     if (within) { /* a finer search of one cell: its 2^dim children */
-        memcpy(lo, within->lo, sizeof lo), memcpy(hi, within->hi, sizeof hi);
-        depth = 1;
-        level = within->level + 1;
+        memcpy(part.root.lo, within->lo, sizeof x.lo), memcpy(part.root.hi, within->hi, sizeof x.hi);
+        w.depth = 1;
+        w.level = within->level + 1;
     }
     double size = 0.0;
     for (int k = 0; k < x.dim; k++)
-        size = fmax(size, (hi[k] - lo[k]) / (1 << depth));
+        size = fmax(size, (part.root.hi[k] - part.root.lo[k]) / (1 << w.depth));
     rep->cell_size = within ? fmin(rep->cell_size, size) : size;
-    cand_list list = {0};
-    unres_list ul = {0};
-    cell *stack = malloc(((size_t)16 * depth + 16) * sizeof *stack);
-    if (!stack)
-        st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory searching start points");
-    int top = 0;
-    if (st == IC_OK) {
-        memcpy(stack[0].lo, lo, sizeof lo), memcpy(stack[0].hi, hi, sizeof hi);
-        stack[0].depth = 0;
-        top = 1;
+    if (within && ahead) {
+        w.parts = &ahead;
+        w.nparts = 1;
+    } else if (!within)
+        ic_search_ahead_first(workers, pair, &x, opt, w.depth, budget, &w.parts, &w.nparts);
+    const int rc = ic_search_walk_run(&w, &part);
+    if (!within) {
+        for (int i = 0; i < w.nparts; i++)
+            ic_search_part_free(w.parts[i]);
+        free(w.parts);
     }
-    while (st == IC_OK && top > 0) {
-        const cell c = stack[--top];
-        const int leaf = c.depth == depth;
-        if (x.kind->skip && x.kind->skip(x.pg, c.lo, c.hi, leaf, x.band))
-            continue;
-        if (out_of_budget(budget)) {
-            if (push_unexamined(&x, &c, level + c.depth - depth, &ul) != 0)
-                st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
-            continue;
-        }
-        rep->cells++;
-        if (x.proven && x.kind->excluded(x.pg, c.lo, c.hi)) {
-            rep->cells_excluded++;
-            continue;
-        }
-        if (!leaf) { /* split into 2^dim children */
-            for (int m = 0; m < (1 << x.dim); m++) {
-                cell ch;
-                ch.depth = c.depth + 1;
-                for (int k = 0; k < x.dim; k++) {
-                    const double mid = 0.5 * (c.lo[k] + c.hi[k]);
-                    ch.lo[k] = (m >> k) & 1 ? mid : c.lo[k];
-                    ch.hi[k] = (m >> k) & 1 ? c.hi[k] : mid;
-                }
-                stack[top++] = ch;
-            }
-            continue;
-        }
-        if (process_leaf(&x, &c, level, &list, &ul, rep) != 0)
-            st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory searching start points");
+    if (rc != 0) {
+        ic_search_part_clear(&part);
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory searching start points");
     }
-    free(stack);
-    if (st != IC_OK) {
-        free(list.c);
-        free(ul.u);
-        return st;
-    }
-    rep->candidates += list.n;
-    *out = list.c, *nout = list.n;
-    *unres = ul.u, *nunres = ul.n;
+    rep->cells += part.counts.cells;
+    rep->cells_excluded += part.counts.excluded;
+    rep->cells_excluded_centred += part.counts.excluded_centred;
+    rep->loop_cells += part.counts.loop_cells;
+    rep->loop_free_cells += part.counts.loop_free_cells;
+    rep->candidates += part.ncand;
+    *out = part.cand, *nout = part.ncand;
+    *unres = part.unres, *nunres = part.nunres;
     return IC_OK;
 }

@@ -7,6 +7,8 @@
 #include "common/args.h"
 #include "trace_constants.h"
 #include "trace_internal.h"
+#include "march_ahead.h"
+#include "workers.h"
 #include "common/vec3.h"
 #include "local/local_internal.h"
 
@@ -507,28 +509,28 @@ static void report_budget(ic_trace_result *r, const ic_trace_options *opt,
                          pt->xyz[0], pt->xyz[1], pt->xyz[2], way, opt->max_points);
 }
 
-/* Traces the curve through pt: forward, and backward unless it closed. */
-ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
-                             const ic_local_point *pt, const ic_trace_options *opt,
+/* The curve of the marches m from pt (ic_trace_march_both) into a new
+ * curve of r: its ends located and recorded, the failures listed; the
+ * points are taken from m. */
+static ic_status add_marches(ic_trace_result *r, ic_pair *pair, const ic_local_point *pt,
+                             const ic_trace_options *opt, ic_trace_marches *m,
                              ic_trace_point **pts_out, int *n_out, ic_error *err)
 {
-    ic_trace_event e1 = IC_TRACE_FAILED, e0 = IC_TRACE_FAILED;
-    ic_status st = ic_tracer_start(tr, pt, 1, err);
-    if (st == IC_OK)
-        st = ic_tracer_run(tr, &e1, err);
+    const ic_trace_event e1 = m->e[0], e0 = m->e[1];
     /* out of memory ends the trace, never just this curve */
-    if (st != IC_OK && (e1 != IC_TRACE_FAILED || st == IC_ERR_NOMEM))
-        return st;
-    if (st != IC_OK)
+    if (m->st[0] != IC_OK && (e1 != IC_TRACE_FAILED || m->st[0] == IC_ERR_NOMEM)) {
+        if (err)
+            *err = m->err[0];
+        return m->st[0];
+    }
+    if (m->st[0] != IC_OK)
         ic_trace_failure(&r->report, "curve from (%g, %g, %g): %s", pt->xyz[0], pt->xyz[1],
-                         pt->xyz[2], err ? err->message : "failed");
+                         pt->xyz[2], err ? m->err[0].message : "failed");
     if (e1 == IC_TRACE_BUDGET)
         report_budget(r, opt, pt, "");
-    int n1 = ic_tracer_num_points(tr);
-    ic_trace_point *fwd = malloc((size_t)(n1 + 1) * sizeof *fwd);
-    if (!fwd)
-        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
-    memcpy(fwd, ic_tracer_point(tr, 0), (size_t)n1 * sizeof *fwd);
+    int n1 = m->n[0];
+    ic_trace_point *fwd = m->pts[0];
+    m->pts[0] = NULL;
     int at1 = -1, at0 = -1;
     if (e1 == IC_TRACE_TANGENTIAL)
         at1 = finish_end(r, pair, opt, fwd, &n1);
@@ -537,25 +539,20 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
         *n_out = n1;
         return add_curve(r, fwd, n1, 1, e1, e1, opt->shape_tol, -1, -1, err);
     }
-    st = ic_tracer_start(tr, pt, -1, err);
-    if (st == IC_OK)
-        st = ic_tracer_run(tr, &e0, err);
-    if (st == IC_ERR_NOMEM) {
+    if (m->st[1] == IC_ERR_NOMEM) {
         free(fwd);
-        return st;
+        if (err)
+            *err = m->err[1];
+        return IC_ERR_NOMEM;
     }
-    if (st != IC_OK)
+    if (m->st[1] != IC_OK)
         ic_trace_failure(&r->report, "curve from (%g, %g, %g), backwards: %s", pt->xyz[0],
-                         pt->xyz[1], pt->xyz[2], err ? err->message : "failed");
+                         pt->xyz[1], pt->xyz[2], err ? m->err[1].message : "failed");
     if (e0 == IC_TRACE_BUDGET)
         report_budget(r, opt, pt, ", backwards");
-    int n0 = ic_tracer_num_points(tr);
-    ic_trace_point *back = malloc((size_t)(n0 + 1) * sizeof *back);
-    if (!back) {
-        free(fwd);
-        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
-    }
-    memcpy(back, ic_tracer_point(tr, 0), (size_t)n0 * sizeof *back);
+    int n0 = m->n[1];
+    ic_trace_point *back = m->pts[1];
+    m->pts[1] = NULL;
     if (e0 == IC_TRACE_TANGENTIAL)
         at0 = finish_end(r, pair, opt, back, &n0);
     ic_trace_point *all = malloc((size_t)(n0 + n1 - 1) * sizeof *all);
@@ -586,6 +583,19 @@ ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
         return IC_OK;
     }
     return add_curve(r, all, n0 + n1 - 1, 0, e0, e1, opt->shape_tol, at0, at1, err);
+}
+
+/* Traces the curve through pt: forward, and backward unless it closed. */
+ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
+                             const ic_local_point *pt, const ic_trace_options *opt,
+                             ic_trace_point **pts_out, int *n_out, ic_error *err)
+{
+    ic_trace_marches m;
+    ic_status st = ic_trace_march_both(tr, pt, &m, err);
+    if (st == IC_OK)
+        st = add_marches(r, pair, pt, opt, &m, pts_out, n_out, err);
+    ic_trace_marches_free(&m);
+    return st;
 }
 
 /* Traces a curve from every start candidate that no curve traced so far
@@ -744,6 +754,66 @@ static int record_at_pole(ic_trace_result *r, ic_pair *pair, const ic_candidate 
     return 1;
 }
 
+/* A candidate the locator refused (a pole's many preimages, say):
+ * recorded at the pole, or deferred with the locator's reason. */
+static ic_status unlocated_candidate(ic_trace_result *r, ic_pair *pair, ic_candidate *cand,
+                                     int nc, int i, const ic_trace_options *opt, const char *why,
+                                     ic_error *err)
+{
+    /* the candidates at the same place would fail the same way: one is kept */
+    cover_point(cand, nc, cand[i].xyz, 1e-10 * (r->scale + ic_norm3(cand[i].xyz)));
+    cand[i].covered = 1;
+    ic_status st = IC_OK;
+    if (record_at_pole(r, pair, &cand[i], opt, &st)) {
+        cover_point(cand, nc, cand[i].xyz, fmax(2 * opt->chord, 2 * r->report.cell_size));
+        return st;
+    }
+    if (st == IC_OK && defer_failure(r, &cand[i], why) != 0)
+        st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
+    return st;
+}
+
+/* A tangential candidate: recorded (or its tangential curve traced), and
+ * covered around it; beside a singular point already located (a finer
+ * search's Newton lands there) it is that point. */
+static ic_status tangential_candidate(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
+                                      ic_candidate *cand, int nc, const ic_local_point *pt,
+                                      const ic_trace_options *opt, ic_error *err)
+{
+    const double radius = IC_TRACE_ON_CURVE * r->scale;
+    const double near_point = 2 * opt->chord; /* beside a singular point */
+    if (near_exact_special(r, pt->xyz, fmax(near_point, 2 * r->first_cell_size)) ||
+        ic_trace_in_coincident(r, pt->xyz))
+        return IC_OK;
+    /* surfaces that coincide around it: a region, not a point */
+    if (ic_trace_coincident_at(pair, pt, r->scale))
+        return ic_trace_add_coincident(r, pt->xyz) != 0
+                   ? ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory")
+                   : IC_OK;
+    int curve;
+    /* within about a first-search cell (in space) */
+    const double reach = 4 * r->scale / (1 << opt->depth) + 1e-7 * r->scale;
+    const ic_status st = ic_trace_record_tangential(r, tr, pair, pt, reach, 1, opt, &curve);
+    cover_point(cand, nc, pt->xyz, fmax(near_point, 2 * r->report.cell_size));
+    if (curve >= 0)
+        ic_trace_cover(cand, nc, r->curves[curve].points, r->curves[curve].npoints, radius);
+    return st;
+}
+
+/* The curve through candidate i marched ahead or, if it was not, here. */
+static ic_status trace_candidate(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
+                                 const ic_local_point *pt, ic_trace_ahead *ahead,
+                                 const ic_trace_options *opt, ic_trace_point **pts, int *n,
+                                 ic_error *err)
+{
+    if (!ahead || !ahead->valid)
+        return ic_trace_both_ways(r, tr, pair, pt, opt, pts, n, err);
+    const ic_status st = add_marches(r, pair, pt, opt, &ahead->m, pts, n, err);
+    ic_trace_marches_free(&ahead->m);
+    ahead->valid = 0;
+    return st;
+}
+
 ic_status ic_trace_from_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
                                    ic_candidate *cand, int nc, const ic_trace_options *opt,
                                    ic_error *err)
@@ -753,64 +823,45 @@ ic_status ic_trace_from_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *p
      * (ic_trace_polyline_distance) and this fraction of L. A wider radius
      * would take a second curve beside the first for the first. */
     const double radius = IC_TRACE_ON_CURVE * r->scale;
-    const double near_point = 2 * opt->chord; /* beside a singular point */
+    /* with threads, candidates marched ahead (none where this fails) */
+    ic_trace_ahead *ahead = r->workers && nc > 1 ? calloc((size_t)nc, sizeof *ahead) : NULL;
+    int used = 0, lost = 0;
     ic_status st = IC_OK;
     for (int i = 0; st == IC_OK && i < nc; i++) {
         if (cand[i].covered || ic_trace_point_near_found(r, cand[i].xyz, radius) ||
-            in_pole_gap(r, cand[i].xyz, 50 * opt->chord))
+            in_pole_gap(r, cand[i].xyz, 50 * opt->chord)) {
+            lost += ahead && ahead[i].valid;
             continue;
+        }
         if (ic_trace_out_of_time(&r->budget))
             break;
         ic_trace_progress(r, opt, "tracing start points", i, nc);
+        if (ahead && !ahead[i].done)
+            ic_trace_march_ahead(r, pair, opt, cand, nc, i, used, lost, ahead);
         ic_local_point pt;
         ic_local_options lo = opt->local;
         ic_error e2;
-        if (ic_local_locate_guess(pair, &pt, cand[i].xyz, cand[i].params, &lo, &e2) != IC_OK) {
-            /* the candidates at the same place (a pole's many preimages)
-             * would fail the same way: one is kept */
-            cover_point(cand, nc, cand[i].xyz, 1e-10 * (r->scale + ic_norm3(cand[i].xyz)));
-            cand[i].covered = 1;
-            if (record_at_pole(r, pair, &cand[i], opt, &st)) {
-                cover_point(cand, nc, cand[i].xyz, fmax(near_point, 2 * r->report.cell_size));
-                continue;
-            }
-            if (st == IC_OK && defer_failure(r, &cand[i], e2.message) != 0)
-                st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
-            continue;
-        }
         ic_local_result res;
-        if (ic_local_apparatus(pair, &res, &pt, 2, IC_METHOD_JET, &lo, &e2) != IC_OK ||
-            res.type != IC_POINT_TRANSVERSAL) {
-            /* a tangential candidate: recorded (or its tangential curve
-             * traced), and covered around it; beside a singular point
-             * already located (a finer search's Newton lands there) it is
-             * that point */
-            if (near_exact_special(r, pt.xyz, fmax(near_point, 2 * r->first_cell_size)) ||
-                ic_trace_in_coincident(r, pt.xyz))
-                continue;
-            /* surfaces that coincide around it: a region, not a point */
-            if (ic_trace_coincident_at(pair, &pt, r->scale)) {
-                if (ic_trace_add_coincident(r, pt.xyz) != 0)
-                    st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
-                continue;
-            }
-            int curve;
-            /* within about a first-search cell (in space) */
-            const double reach = 4 * r->scale / (1 << opt->depth) + 1e-7 * r->scale;
-            st = ic_trace_record_tangential(r, tr, pair, &pt, reach, 1,
-                                            opt, &curve);
-            cover_point(cand, nc, pt.xyz, fmax(near_point, 2 * r->report.cell_size));
-            if (curve >= 0)
-                ic_trace_cover(cand, nc, r->curves[curve].points, r->curves[curve].npoints, radius);
+        if (ahead && ahead[i].valid) /* located and transversal */
+            pt = ahead[i].pt, used++;
+        else if (ic_local_locate_guess(pair, &pt, cand[i].xyz, cand[i].params, &lo, &e2) != IC_OK) {
+            st = unlocated_candidate(r, pair, cand, nc, i, opt, e2.message, err);
+            continue;
+        } else if (ic_local_apparatus(pair, &res, &pt, 2, IC_METHOD_JET, &lo, &e2) != IC_OK ||
+                   res.type != IC_POINT_TRANSVERSAL) {
+            st = tangential_candidate(r, tr, pair, cand, nc, &pt, opt, err);
             continue;
         }
         ic_trace_point *pts = NULL;
         int np2 = 0;
-        st = ic_trace_both_ways(r, tr, pair, &pt, opt, &pts, &np2, err);
+        st = trace_candidate(r, tr, pair, &pt, ahead ? &ahead[i] : NULL, opt, &pts, &np2, err);
         if (st == IC_OK && np2 > 0)
             ic_trace_cover(cand, nc, pts, np2, radius);
         cand[i].covered = 1;
     }
+    for (int i = 0; ahead && i < nc; i++)
+        ic_trace_marches_free(&ahead[i].m);
+    free(ahead);
     return st;
 }
 
@@ -844,6 +895,9 @@ static ic_status check_options(const ic_trace_options *o, ic_error *err)
             return ic_error_set(err, IC_ERR_INVALID, 0,
                                 "trace: tol, chord, max_step and min_step must be positive and "
                                 "finite");
+    if (o->threads < 0 || o->threads > IC_TRACE_MAX_THREADS)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "trace: threads %d is not in 0..%d",
+                            o->threads, IC_TRACE_MAX_THREADS);
     if (!(o->time_limit >= 0) || !(o->shape_tol > 0))
         return ic_error_set(err, IC_ERR_INVALID, 0,
                             "trace: time_limit must be 0 or positive, shape_tol positive");
@@ -890,8 +944,10 @@ static ic_status trace(ic_trace_result **out, ic_pair *pair, const ic_trace_opti
     ic_unresolved *unres = NULL;
     int nc = 0, nu = 0;
     ic_tracer *tr = NULL;
-    st = ic_trace_candidates(pair, opt, NULL, &cand, &nc, &unres, &nu, &r->report,
-                                       &r->budget, err);
+    st = ic_trace_workers_new(&r->workers, pair, ic_trace_thread_count(opt->threads), err);
+    if (st == IC_OK)
+        st = ic_trace_candidates(pair, opt, NULL, r->workers, NULL, &cand, &nc, &unres, &nu,
+                                 &r->report, &r->budget, err);
     r->first_cell_size = r->report.cell_size;
     /* the scale of the rest: where the first search left the intersection
      * (a parametric surface may reach far beyond it) */
@@ -945,6 +1001,8 @@ static ic_status trace(ic_trace_result **out, ic_pair *pair, const ic_trace_opti
     }
     set_complete(r);
     ic_tracer_free(tr);
+    ic_trace_workers_free(r->workers);
+    r->workers = NULL;
     free(cand);
     free(unres);
     if (st != IC_OK) {
@@ -973,6 +1031,7 @@ void ic_trace_result_free(ic_trace_result *r)
     for (int i = 0; r->fits && i < r->ncurves; i++)
         ic_curve_fit_free(r->fits[i]);
     free(r->fits);
+    ic_trace_workers_free(r->workers);
     free(r);
 }
 

@@ -58,16 +58,40 @@ void ic_tracer_set_deadline(ic_tracer *tr, double deadline);
 /* 1 (and b->stopped set) when the deadline has passed. */
 int ic_trace_out_of_time(ic_trace_budget *b);
 
-/* Start candidates by subdivision (search.c) of the whole search region, or,
- * when `within` is not NULL, of that cell one level finer; adds to the
- * report's search part. *unres receives the leaves without a start point
- * and the loop leaves (has_candidate set where one was found). Cells left
- * when the budget runs out are returned as unresolved too. *out and *unres
- * are malloc'ed (free them). */
+/* The threads of a trace (workers.h) and a part of the search done ahead
+ * by them (search_internal.h). */
+typedef struct ic_trace_workers ic_trace_workers;
+typedef struct ic_search_part ic_search_part;
+
+/* Start candidates by subdivision (search.c) of the whole search region
+ * (its subtrees done ahead by the workers, NULL: none), or, when `within`
+ * is not NULL, of that cell one level finer (`ahead`: that search done
+ * ahead, or NULL); adds to the report's search part. *unres receives the
+ * leaves without a start point and the loop leaves (has_candidate set
+ * where one was found). Cells left when the budget runs out are returned as
+ * unresolved too. *out and *unres are malloc'ed (free them). The result is
+ * the same with and without workers or ahead. */
 ic_status ic_trace_candidates(ic_pair *pair, const ic_trace_options *opt,
-                              const ic_unresolved *within, ic_candidate **out, int *n,
+                              const ic_unresolved *within, ic_trace_workers *workers,
+                              ic_search_part *ahead, ic_candidate **out, int *n,
                               ic_unresolved **unres, int *nunres, ic_trace_report *rep,
                               ic_trace_budget *budget, ic_error *err);
+/* Whether an open cell found will be refined as things stand (called by
+ * the workers while the trace waits for them: it only reads). */
+typedef int ic_search_wanted(const void *ctx, const ic_unresolved *u);
+/* search_ahead.c: the finer searches of the cells u[0..n-1] (as
+ * ic_trace_candidates with within = u[i]) done by the workers into
+ * parts[i] (NULL out of memory), with the trace's budget as it is now;
+ * proven as in the report; and down their trees, those of the open cells
+ * found that `wanted` says will be refined (ic_search_part_take_child). */
+void ic_search_ahead_cells(ic_trace_workers *workers, ic_pair *pair, const ic_trace_options *opt,
+                           int proven, const ic_unresolved *const *u, int n,
+                           ic_search_wanted *wanted, const void *wanted_ctx,
+                           const ic_trace_budget *budget, ic_search_part **parts);
+/* The finer search done ahead for p's i-th unresolved cell (the caller's
+ * from now on), or NULL. */
+ic_search_part *ic_search_part_take_child(ic_search_part *p, int i);
+void ic_search_part_free(ic_search_part *p);
 
 /* Traces a curve from every start candidate that no curve traced so far
  * covers (trace.c). */
@@ -118,6 +142,7 @@ struct ic_trace_result {
     char (*deferred_why)[200];
     int ndeferred, capd;
     ic_curve_fit **fits; /* ncurves B-spline fits (ic_trace_fit), or NULL */
+    ic_trace_workers *workers; /* the trace's other threads (NULL: one thread) */
 };
 
 /* coincident.c: the problem's length scale L, and whether the surfaces

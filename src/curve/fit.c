@@ -481,7 +481,10 @@ static int curve_nodes(ic_pair *pair, const ic_trace_curve *c, const ic_jet_spac
                        ic_hermite_node *nodes, int *source, int *pinned)
 {
     const int n = space_nodes(pair, c, nodes, source, pinned);
-    for (int k = 0; k < n; k++)
+    /* on a tangential curve the side apparatus finds a tangential point,
+     * never a transversal one (side_curvature keeps the traced c'' then):
+     * a full tangential analysis per knot point, for nothing */
+    for (int k = 0; !c->tangential && k < n; k++)
         knot_node(pair, &c->points[source[k]], sp, &nodes[k]);
     junction_nodes(pair, c, nodes, source, n);
     return n;

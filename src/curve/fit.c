@@ -50,24 +50,29 @@ static int param_derivatives(ic_surface *S, const ic_jet_space *sp, const double
  * on its knot line (the tracer's snap, IC_TRACE_KNOT_SNAP_REL) */
 #define FIT_KNOT_SNAP_REL 1e-13
 
+/* Whether the parameters x of sheet s stand on one of its knot lines or
+ * periodic seams (never on an implicit surface). */
+static int sheet_on_line(ic_pair *pair, int s, const double x[2])
+{
+    ic_surface *S = ic_pair_surface(pair, s);
+    if (ic_surface_get_kind(S) != IC_PARAMETRIC)
+        return 0;
+    double dom[2][2], knot;
+    ic_surface_get_domain(S, dom, NULL);
+    for (int i = 0; i < 2; i++) {
+        const double snap = FIT_KNOT_SNAP_REL * (dom[i][1] - dom[i][0]);
+        if (ic_surface_knot_crossed(S, i, x[i] - snap, x[i] + snap, &knot) ||
+            (ic_surface_knot_seam(S, i) &&
+             (fabs(x[i] - dom[i][0]) <= snap || fabs(x[i] - dom[i][1]) <= snap)))
+            return 1;
+    }
+    return 0;
+}
+
 /* Whether p stands on a knot line or a periodic seam of a NURBS sheet. */
 static int stands_on_line(ic_pair *pair, const ic_trace_point *p)
 {
-    for (int s = 0; s < 2; s++) {
-        ic_surface *S = ic_pair_surface(pair, s);
-        if (ic_surface_get_kind(S) != IC_PARAMETRIC)
-            continue;
-        double dom[2][2], knot;
-        ic_surface_get_domain(S, dom, NULL);
-        for (int i = 0; i < 2; i++) {
-            const double x = p->params[s][i], snap = FIT_KNOT_SNAP_REL * (dom[i][1] - dom[i][0]);
-            if (ic_surface_knot_crossed(S, i, x - snap, x + snap, &knot) ||
-                (ic_surface_knot_seam(S, i) &&
-                 (fabs(x - dom[i][0]) <= snap || fabs(x - dom[i][1]) <= snap)))
-                return 1;
-        }
-    }
-    return 0;
+    return sheet_on_line(pair, 0, p->params[0]) || sheet_on_line(pair, 1, p->params[1]);
 }
 
 /* relative (of the curve's length): the shortest stretch between nodes. A
@@ -185,8 +190,9 @@ static void knot_ways(ic_pair *pair, const ic_trace_point *p, const ic_jet_space
     for (int s = 0; s < 2; s++) {
         double d1[2], d2[2];
         /* any point may stand on a knot line: a branch point the tracer
-         * ended a curve at, not only the points it landed there */
-        if (ic_surface_get_kind(ic_pair_surface(pair, s)) != IC_PARAMETRIC ||
+         * ended a curve at, not only the points it landed there; off every
+         * line the sides stay 0 without the sheet's derivatives (most points) */
+        if (!sheet_on_line(pair, s, p->params[s]) ||
             !param_derivatives(ic_pair_surface(pair, s), sp, p->params[s], h->d1, h->d2, d1, d2))
             continue;
         knot_sides(pair, s, p, d1, d2, -1, sides[0][s], on[s]);
@@ -221,8 +227,18 @@ static int param_node(ic_pair *pair, int s, const ic_trace_point *p, const ic_je
     knot_ways(pair, p, sp, space, sides, on);
     ic_surface_set_knot_side(S, sides[1][s]);
     int ok = param_derivatives(S, sp, on[s], space->d1, space->d2, h->d1, h->d2);
-    ic_surface_set_knot_side(S, sides[0][s]);
-    ok = ok && param_derivatives(S, sp, on[s], space->d1b, space->d2b, h->d1b, h->d2b);
+    /* the same piece and the same c', c'' on both sides (off knot lines and
+     * junctions): the side before is the side after, bit for bit */
+    const int same = memcmp(sides[0][s], sides[1][s], sizeof sides[0][s]) == 0 &&
+                     memcmp(space->d1, space->d1b, sizeof space->d1) == 0 &&
+                     memcmp(space->d2, space->d2b, sizeof space->d2) == 0;
+    if (same) {
+        memcpy(h->d1b, h->d1, sizeof h->d1);
+        memcpy(h->d2b, h->d2, sizeof h->d2);
+    } else {
+        ic_surface_set_knot_side(S, sides[0][s]);
+        ok = ok && param_derivatives(S, sp, on[s], space->d1b, space->d2b, h->d1b, h->d2b);
+    }
     ic_surface_set_knot_side(S, NULL);
     return ok;
 }

@@ -12,6 +12,7 @@
 
 #include "common/vec3.h"
 #include "curve/hermite.h"
+#include "surface/surface_internal.h"
 #include "intercurve/trace.h"
 
 /* (u', v') and (u'', v'') of a parametric sheet along the curve from c'
@@ -490,6 +491,25 @@ static ic_status check_fit(ic_pair *pair, ic_curve_fit *f, const ic_trace_curve 
     return IC_OK;
 }
 
+/* Whether the curve in space is smooth across every knot line of the pair:
+ * each parametric sheet a net recognised as a plane or a surface of
+ * revolution (ic_surface_net_shape). Such a net lies within 4 IC_NET_REL of
+ * its size on that smooth surface (docs/nurbs.md), the surface the exact
+ * paths trace on, so the curve's c'' is the same on both sides of a knot
+ * line up to that: the traced c'' serves both, the joint is C^2 like the
+ * others, and only the pcurves (whose pieces change there) keep two sides. */
+static int smooth_across_knots(ic_pair *pair)
+{
+    for (int s = 0; s < 2; s++) {
+        ic_surface *S = ic_pair_surface(pair, s);
+        const ic_net_shape *shape = NULL;
+        if (ic_surface_get_kind(S) == IC_PARAMETRIC &&
+            (ic_surface_net_shape(S, &shape) != 0 || !shape)) /* out of memory: the full way */
+            return 0;
+    }
+    return 1;
+}
+
 /* The nodes of the traced points of c: positions and derivatives, with
  * their sides on knot lines and at junctions; returns how many (source[k]:
  * node k's point; pinned[k]: it must stay). */
@@ -500,8 +520,9 @@ static int curve_nodes(ic_pair *pair, const ic_trace_curve *c, const ic_jet_spac
     /* on a tangential curve the side apparatus finds a tangential point,
      * never a transversal one (side_curvature keeps the traced c'' then):
      * a full tangential analysis per knot point, for nothing */
-    for (int k = 0; !c->tangential && k < n; k++)
-        knot_node(pair, &c->points[source[k]], sp, &nodes[k]);
+    if (!c->tangential && !smooth_across_knots(pair))
+        for (int k = 0; k < n; k++)
+            knot_node(pair, &c->points[source[k]], sp, &nodes[k]);
     junction_nodes(pair, c, nodes, source, n);
     return n;
 }

@@ -435,11 +435,37 @@ static void middle_params(ic_surface *S, const ic_trace_point *a, const ic_trace
     }
 }
 
+/* The jet spaces the fit evaluates in, made once for all its rounds: a
+ * sheet's derivatives (two variables to order 2), and the check's distances
+ * to a sheet and to an implicit surface (two and three variables to order
+ * 1, check_at). */
+typedef struct {
+    ic_jet_space *sheet, *sheet1, *point1;
+} fit_spaces;
+
+static void fit_spaces_free(fit_spaces *sp)
+{
+    ic_jet_space_free(sp->sheet);
+    ic_jet_space_free(sp->sheet1);
+    ic_jet_space_free(sp->point1);
+}
+
+static ic_status fit_spaces_new(fit_spaces *sp, ic_error *err)
+{
+    memset(sp, 0, sizeof *sp);
+    if (ic_jet_space_new(&sp->sheet, 2, 2, err) == IC_OK &&
+        ic_jet_space_new(&sp->sheet1, 2, 1, err) == IC_OK &&
+        ic_jet_space_new(&sp->point1, 3, 1, err) == IC_OK)
+        return IC_OK;
+    fit_spaces_free(sp);
+    return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory fitting a curve");
+}
+
 /* The fitted curve's point at s, the middle of the stretch from point a to
  * point b, against both surfaces: its distance to each (through a pcurve's
  * image where the sheet has one). -1 where it cannot be measured. */
 static double check_at(ic_pair *pair, const ic_curve_fit *f, const ic_trace_point *a,
-                       const ic_trace_point *b, double s, const ic_jet_space *sp[2])
+                       const ic_trace_point *b, double s, const fit_spaces *sp)
 {
     double X[3], worst = 0;
     if (ic_bspline_eval(&f->curve, s, 0, X, NULL) != IC_OK)
@@ -448,12 +474,12 @@ static double check_at(ic_pair *pair, const ic_curve_fit *f, const ic_trace_poin
         ic_surface *S = ic_pair_surface(pair, k);
         double uv[2], e;
         if (ic_surface_get_kind(S) == IC_IMPLICIT)
-            e = implicit_distance(S, sp[1], X);
+            e = implicit_distance(S, sp->point1, X);
         else if (f->pcurves[k].ncontrol)
             e = pcurve_off(pair, f, k, s, X, uv);
         else {
             middle_params(S, a, b, k, uv);
-            e = sheet_distance(S, sp[0], X, uv);
+            e = sheet_distance(S, sp->sheet1, X, uv);
         }
         if (e < 0)
             return -1;
@@ -463,22 +489,16 @@ static double check_at(ic_pair *pair, const ic_curve_fit *f, const ic_trace_poin
 }
 
 /* Checks the fit at the middle of every stretch between its nodes. */
-static ic_status check_fit(ic_pair *pair, ic_curve_fit *f, const ic_trace_curve *c,
-                           const ic_hermite_node *nodes, const int *source, int n, double tol,
-                           double *bad, int *nbad, ic_error *err)
+static void check_fit(ic_pair *pair, ic_curve_fit *f, const ic_trace_curve *c,
+                      const ic_hermite_node *nodes, const int *source, int n, double tol,
+                      const fit_spaces *sp, double *bad, int *nbad)
 {
     *nbad = 0;
     f->fit_error = 0;
     f->checks = 0;
-    ic_jet_space *sp[2] = {NULL, NULL};
-    if (ic_jet_space_new(&sp[0], 2, 1, err) != IC_OK || ic_jet_space_new(&sp[1], 3, 1, err) != IC_OK) {
-        ic_jet_space_free(sp[0]);
-        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory checking a curve's fit");
-    }
     for (int k = 0; k + 1 < n; k++) {
         const double e = check_at(pair, f, &c->points[source[k]], &c->points[source[k + 1]],
-                                  0.5 * (nodes[k].s + nodes[k + 1].s),
-                                  (const ic_jet_space **)sp);
+                                  0.5 * (nodes[k].s + nodes[k + 1].s), sp);
         if (e < 0) /* no corrected point there: unchecked, said by checks */
             continue;
         f->fit_error = fmax(f->fit_error, e);
@@ -486,9 +506,6 @@ static ic_status check_fit(ic_pair *pair, ic_curve_fit *f, const ic_trace_curve 
         if (e > tol) /* to be refined: a node at its middle */
             bad[(*nbad)++] = 0.5 * (nodes[k].s + nodes[k + 1].s);
     }
-    ic_jet_space_free(sp[0]);
-    ic_jet_space_free(sp[1]);
-    return IC_OK;
 }
 
 /* Whether the curve in space is smooth across every knot line of the pair:
@@ -542,15 +559,14 @@ static int curve_nodes(ic_pair *pair, const ic_trace_curve *c, const ic_jet_spac
  * merged where the error allows): a new array in *pts (owned by the
  * caller), or NULL where nothing is merged. */
 static ic_status merged_points(ic_pair *pair, const ic_trace_curve *c, double fit_tol,
-                               ic_trace_point **pts, int *npts, ic_error *err)
+                               const ic_jet_space *sp, ic_trace_point **pts, int *npts,
+                               ic_error *err)
 {
     *pts = NULL;
     ic_hermite_node *nodes = malloc(sizeof *nodes * (size_t)c->npoints);
     int *source = malloc(sizeof *source * (size_t)c->npoints * 3);
     int *pinned = source ? source + c->npoints : NULL, *keep = source ? pinned + c->npoints : NULL;
-    ic_jet_space *sp = NULL;
-    ic_status st = nodes && source ? ic_jet_space_new(&sp, 2, 2, err)
-                                   : ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
+    ic_status st = nodes && source ? IC_OK : ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
     const int n = st == IC_OK ? curve_nodes(pair, c, sp, nodes, source, pinned) : 0;
     const int m = n >= 2 ? ic_hermite_merge(nodes, pinned, n, 3, FIT_MERGE_POS * fit_tol,
                                             FIT_MERGE_DERIV, FIT_MERGE_TAU, keep)
@@ -563,7 +579,6 @@ static ic_status merged_points(ic_pair *pair, const ic_trace_curve *c, double fi
             (*pts)[k] = c->points[source[keep[k]]];
         *npts = m;
     }
-    ic_jet_space_free(sp);
     free(nodes);
     free(source);
     return st;
@@ -572,15 +587,16 @@ static ic_status merged_points(ic_pair *pair, const ic_trace_curve *c, double fi
 /* One fit of the points of c; bad (c->npoints doubles) receives the middles
  * of the stretches beyond tol. */
 static ic_status fit_once(ic_curve_fit **out, ic_pair *pair, const ic_trace_curve *c,
-                          double fit_tol, double *bad, int *nbad, ic_error *err)
+                          double fit_tol, const fit_spaces *spaces, double *bad, int *nbad,
+                          ic_error *err)
 {
     *out = NULL;
     *nbad = 0;
     ic_curve_fit *f = calloc(1, sizeof *f);
     ic_hermite_node *nodes = malloc(sizeof *nodes * (size_t)c->npoints * 2);
     int *source = malloc(sizeof *source * (size_t)c->npoints * 2), *pinned = source + c->npoints;
-    ic_jet_space *sp = NULL;
-    ic_status st = f && nodes && source ? ic_jet_space_new(&sp, 2, 2, err)
+    const ic_jet_space *sp = spaces->sheet;
+    ic_status st = f && nodes && source ? IC_OK
                                         : ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
     const int n = st == IC_OK ? curve_nodes(pair, c, sp, nodes, source, pinned) : 0;
     if (st == IC_OK && n < 2)
@@ -595,9 +611,8 @@ static ic_status fit_once(ic_curve_fit **out, ic_pair *pair, const ic_trace_curv
                                     c->closed && ic_hermite_closes(nodes + c->npoints, n, 2), err);
     if (st == IC_OK) {
         check_pcurves(pair, f, nodes, n, fit_tol);
-        st = check_fit(pair, f, c, nodes, source, n, fit_tol, bad, nbad, err);
+        check_fit(pair, f, c, nodes, source, n, fit_tol, spaces, bad, nbad);
     }
-    ic_jet_space_free(sp);
     free(nodes);
     free(source);
     if (st != IC_OK) {
@@ -688,7 +703,11 @@ ic_status ic_curve_fit_new(ic_curve_fit **out, ic_pair *pair, const ic_trace_cur
     ic_trace_curve cur = *c;
     ic_trace_point *owned = NULL;
     ic_curve_fit *f = NULL;
-    ic_status st = merged_points(pair, c, fit_tol, &owned, &cur.npoints, err);
+    fit_spaces spaces;
+    ic_status st = fit_spaces_new(&spaces, err);
+    if (st != IC_OK)
+        return st;
+    st = merged_points(pair, c, fit_tol, spaces.sheet, &owned, &cur.npoints, err);
     if (owned)
         cur.points = owned;
     for (int round = 0; st == IC_OK && round <= FIT_MAX_ROUNDS; round++) {
@@ -699,7 +718,7 @@ ic_status ic_curve_fit_new(ic_curve_fit **out, ic_pair *pair, const ic_trace_cur
             break;
         }
         ic_curve_fit_free(f);
-        st = fit_once(&f, pair, &cur, fit_tol, bad, &nbad, err);
+        st = fit_once(&f, pair, &cur, fit_tol, &spaces, bad, &nbad, err);
         ic_trace_point *next = NULL;
         int n = 0, more = 0;
         if (st == IC_OK && nbad > 0 && round < FIT_MAX_ROUNDS)
@@ -714,6 +733,7 @@ ic_status ic_curve_fit_new(ic_curve_fit **out, ic_pair *pair, const ic_trace_cur
         cur.points = owned;
         cur.npoints = n;
     }
+    fit_spaces_free(&spaces);
     free(owned);
     if (st != IC_OK) {
         ic_curve_fit_free(f);

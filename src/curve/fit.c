@@ -181,24 +181,31 @@ static int side_curvature(ic_pair *pair, const ic_trace_point *p, const double o
     return 1;
 }
 
-/* The knot sides of every sheet at a point on knot lines, for the stretch
- * before (sides[0]) and after (sides[1]) it. */
+/* The knot sides of sheet s at a point, for the stretch before
+ * (sides[0][s]) and after (sides[1][s]) it, and the parameters on[s] there. */
+static void sheet_ways(ic_pair *pair, int s, const ic_trace_point *p, const ic_jet_space *sp,
+                       const ic_hermite_node *h, int sides[2][2][2], double on[2][2])
+{
+    double d1[2], d2[2];
+    memset(sides[0][s], 0, sizeof sides[0][s]);
+    memset(sides[1][s], 0, sizeof sides[1][s]);
+    memcpy(on[s], p->params[s], sizeof on[s]);
+    /* any point may stand on a knot line: a branch point the tracer ended a
+     * curve at, not only the points it landed there; off every line the
+     * sides stay 0 without the sheet's derivatives (most points) */
+    if (!sheet_on_line(pair, s, p->params[s]) ||
+        !param_derivatives(ic_pair_surface(pair, s), sp, p->params[s], h->d1, h->d2, d1, d2))
+        return;
+    knot_sides(pair, s, p, d1, d2, -1, sides[0][s], on[s]);
+    knot_sides(pair, s, p, d1, d2, +1, sides[1][s], on[s]);
+}
+
+/* The knot sides of every sheet at a point on knot lines (sheet_ways). */
 static void knot_ways(ic_pair *pair, const ic_trace_point *p, const ic_jet_space *sp,
                       const ic_hermite_node *h, int sides[2][2][2], double on[2][2])
 {
-    memset(sides, 0, sizeof(int) * 8);
-    memcpy(on, p->params, sizeof(double) * 4);
-    for (int s = 0; s < 2; s++) {
-        double d1[2], d2[2];
-        /* any point may stand on a knot line: a branch point the tracer
-         * ended a curve at, not only the points it landed there; off every
-         * line the sides stay 0 without the sheet's derivatives (most points) */
-        if (!sheet_on_line(pair, s, p->params[s]) ||
-            !param_derivatives(ic_pair_surface(pair, s), sp, p->params[s], h->d1, h->d2, d1, d2))
-            continue;
-        knot_sides(pair, s, p, d1, d2, -1, sides[0][s], on[s]);
-        knot_sides(pair, s, p, d1, d2, +1, sides[1][s], on[s]);
-    }
+    for (int s = 0; s < 2; s++)
+        sheet_ways(pair, s, p, sp, h, sides, on);
 }
 
 /* Both sides' c'' at a point on knot lines (the trace gives one side's). */
@@ -225,7 +232,7 @@ static int param_node(ic_pair *pair, int s, const ic_trace_point *p, const ic_je
     ic_surface *S = ic_pair_surface(pair, s);
     int sides[2][2][2] = {{{0}}};
     double on[2][2];
-    knot_ways(pair, p, sp, space, sides, on);
+    sheet_ways(pair, s, p, sp, space, sides, on); /* this sheet's only */
     ic_surface_set_knot_side(S, sides[1][s]);
     int ok = param_derivatives(S, sp, on[s], space->d1, space->d2, h->d1, h->d2);
     /* the same piece and the same c', c'' on both sides (off knot lines and

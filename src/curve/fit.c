@@ -369,20 +369,38 @@ static double pcurve_off(ic_pair *pair, const ic_curve_fit *f, int k, double s, 
     return ic_norm3(d);
 }
 
+/* The fitted curve at the middle of a stretch (ok: 0 where it cannot be
+ * evaluated) and each pcurve's image's distance from it there (pcurve_off;
+ * -1 without a pcurve): found once for both checks. */
+typedef struct {
+    int ok;
+    double s, X[3], off[2];
+} fit_middle;
+
+static void fit_middles(ic_pair *pair, const ic_curve_fit *f, const ic_hermite_node *nodes, int n,
+                        fit_middle *mid)
+{
+    for (int i = 0; i + 1 < n; i++) {
+        fit_middle *m = &mid[i];
+        m->s = 0.5 * (nodes[i].s + nodes[i + 1].s);
+        m->ok = ic_bspline_eval(&f->curve, m->s, 0, m->X, NULL) == IC_OK;
+        for (int k = 0; k < 2; k++) {
+            double uv[2];
+            m->off[k] = m->ok && f->pcurves[k].ncontrol ? pcurve_off(pair, f, k, m->s, m->X, uv)
+                                                        : -1;
+        }
+    }
+}
+
 /* The pcurves at the middle of every stretch: one whose image leaves the
  * curve by more than tol somewhere (a stretch across a point where its
  * sheet's parametrisation degenerates, a sphere's pole: the parameters jump
  * there) is dropped, and said so. */
-static void check_pcurves(ic_pair *pair, ic_curve_fit *f, const ic_hermite_node *nodes, int n,
-                          double tol)
+static void check_pcurves(ic_curve_fit *f, const fit_middle *mid, int n, double tol)
 {
     for (int k = 0; k < 2; k++)
         for (int i = 0; f->pcurves[k].ncontrol && i + 1 < n; i++) {
-            const double s = 0.5 * (nodes[i].s + nodes[i + 1].s);
-            double X[3], uv[2];
-            const int ok = ic_bspline_eval(&f->curve, s, 0, X, NULL) == IC_OK;
-            const double e = ok ? pcurve_off(pair, f, k, s, X, uv) : -1;
-            if (e >= 0 && e <= tol)
+            if (mid[i].off[k] >= 0 && mid[i].off[k] <= tol)
                 continue;
             free(f->pcurves[k].knots);
             free(f->pcurves[k].control);
@@ -468,25 +486,25 @@ static ic_status fit_spaces_new(fit_spaces *sp, ic_error *err)
     return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory fitting a curve");
 }
 
-/* The fitted curve's point at s, the middle of the stretch from point a to
+/* The fitted curve's point at m, the middle of the stretch from point a to
  * point b, against both surfaces: its distance to each (through a pcurve's
  * image where the sheet has one). -1 where it cannot be measured. */
 static double check_at(ic_pair *pair, const ic_curve_fit *f, const ic_trace_point *a,
-                       const ic_trace_point *b, double s, const fit_spaces *sp)
+                       const ic_trace_point *b, const fit_middle *m, const fit_spaces *sp)
 {
-    double X[3], worst = 0;
-    if (ic_bspline_eval(&f->curve, s, 0, X, NULL) != IC_OK)
+    double worst = 0;
+    if (!m->ok)
         return -1;
     for (int k = 0; k < 2; k++) {
         ic_surface *S = ic_pair_surface(pair, k);
         double uv[2], e;
         if (ic_surface_get_kind(S) == IC_IMPLICIT)
-            e = implicit_distance(S, sp->point1, X);
+            e = implicit_distance(S, sp->point1, m->X);
         else if (f->pcurves[k].ncontrol)
-            e = pcurve_off(pair, f, k, s, X, uv);
+            e = m->off[k];
         else {
             middle_params(S, a, b, k, uv);
-            e = sheet_distance(S, sp->sheet1, X, uv);
+            e = sheet_distance(S, sp->sheet1, m->X, uv);
         }
         if (e < 0)
             return -1;
@@ -497,22 +515,38 @@ static double check_at(ic_pair *pair, const ic_curve_fit *f, const ic_trace_poin
 
 /* Checks the fit at the middle of every stretch between its nodes. */
 static void check_fit(ic_pair *pair, ic_curve_fit *f, const ic_trace_curve *c,
-                      const ic_hermite_node *nodes, const int *source, int n, double tol,
+                      const fit_middle *mid, const int *source, int n, double tol,
                       const fit_spaces *sp, double *bad, int *nbad)
 {
     *nbad = 0;
     f->fit_error = 0;
     f->checks = 0;
     for (int k = 0; k + 1 < n; k++) {
-        const double e = check_at(pair, f, &c->points[source[k]], &c->points[source[k + 1]],
-                                  0.5 * (nodes[k].s + nodes[k + 1].s), sp);
+        const double e =
+            check_at(pair, f, &c->points[source[k]], &c->points[source[k + 1]], &mid[k], sp);
         if (e < 0) /* no corrected point there: unchecked, said by checks */
             continue;
         f->fit_error = fmax(f->fit_error, e);
         f->checks++;
         if (e > tol) /* to be refined: a node at its middle */
-            bad[(*nbad)++] = 0.5 * (nodes[k].s + nodes[k + 1].s);
+            bad[(*nbad)++] = mid[k].s;
     }
+}
+
+/* The pcurves checked, then the fit (check_pcurves, check_fit), at the
+ * middles of the stretches between the n nodes. */
+static ic_status check_all(ic_pair *pair, ic_curve_fit *f, const ic_trace_curve *c,
+                           const ic_hermite_node *nodes, const int *source, int n, double tol,
+                           const fit_spaces *sp, double *bad, int *nbad, ic_error *err)
+{
+    fit_middle *mid = malloc(sizeof *mid * (size_t)n);
+    if (!mid)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory checking a curve's fit");
+    fit_middles(pair, f, nodes, n, mid);
+    check_pcurves(f, mid, n, tol);
+    check_fit(pair, f, c, mid, source, n, tol, sp, bad, nbad);
+    free(mid);
+    return IC_OK;
 }
 
 /* Whether the curve in space is smooth across every knot line of the pair:
@@ -616,10 +650,8 @@ static ic_status fit_once(ic_curve_fit **out, ic_pair *pair, const ic_trace_curv
             param_nodes(pair, s, c, nodes, source, n, sp, nodes + c->npoints))
             st = ic_hermite_bspline(&f->pcurves[s], nodes + c->npoints, n, 2,
                                     c->closed && ic_hermite_closes(nodes + c->npoints, n, 2), err);
-    if (st == IC_OK) {
-        check_pcurves(pair, f, nodes, n, fit_tol);
-        check_fit(pair, f, c, nodes, source, n, fit_tol, spaces, bad, nbad);
-    }
+    if (st == IC_OK)
+        st = check_all(pair, f, c, nodes, source, n, fit_tol, spaces, bad, nbad, err);
     free(nodes);
     free(source);
     if (st != IC_OK) {

@@ -12,6 +12,7 @@
 
 #include "common/vec3.h"
 #include "curve/hermite.h"
+#include "surface/surface_internal.h"
 #include "intercurve/trace.h"
 
 /* (u', v') and (u'', v'') of a parametric sheet along the curve from c'
@@ -50,24 +51,29 @@ static int param_derivatives(ic_surface *S, const ic_jet_space *sp, const double
  * on its knot line (the tracer's snap, IC_TRACE_KNOT_SNAP_REL) */
 #define FIT_KNOT_SNAP_REL 1e-13
 
+/* Whether the parameters x of sheet s stand on one of its knot lines or
+ * periodic seams (never on an implicit surface). */
+static int sheet_on_line(ic_pair *pair, int s, const double x[2])
+{
+    ic_surface *S = ic_pair_surface(pair, s);
+    if (ic_surface_get_kind(S) != IC_PARAMETRIC)
+        return 0;
+    double dom[2][2], knot;
+    ic_surface_get_domain(S, dom, NULL);
+    for (int i = 0; i < 2; i++) {
+        const double snap = FIT_KNOT_SNAP_REL * (dom[i][1] - dom[i][0]);
+        if (ic_surface_knot_crossed(S, i, x[i] - snap, x[i] + snap, &knot) ||
+            (ic_surface_knot_seam(S, i) &&
+             (fabs(x[i] - dom[i][0]) <= snap || fabs(x[i] - dom[i][1]) <= snap)))
+            return 1;
+    }
+    return 0;
+}
+
 /* Whether p stands on a knot line or a periodic seam of a NURBS sheet. */
 static int stands_on_line(ic_pair *pair, const ic_trace_point *p)
 {
-    for (int s = 0; s < 2; s++) {
-        ic_surface *S = ic_pair_surface(pair, s);
-        if (ic_surface_get_kind(S) != IC_PARAMETRIC)
-            continue;
-        double dom[2][2], knot;
-        ic_surface_get_domain(S, dom, NULL);
-        for (int i = 0; i < 2; i++) {
-            const double x = p->params[s][i], snap = FIT_KNOT_SNAP_REL * (dom[i][1] - dom[i][0]);
-            if (ic_surface_knot_crossed(S, i, x - snap, x + snap, &knot) ||
-                (ic_surface_knot_seam(S, i) &&
-                 (fabs(x - dom[i][0]) <= snap || fabs(x - dom[i][1]) <= snap)))
-                return 1;
-        }
-    }
-    return 0;
+    return sheet_on_line(pair, 0, p->params[0]) || sheet_on_line(pair, 1, p->params[1]);
 }
 
 /* relative (of the curve's length): the shortest stretch between nodes. A
@@ -175,23 +181,31 @@ static int side_curvature(ic_pair *pair, const ic_trace_point *p, const double o
     return 1;
 }
 
-/* The knot sides of every sheet at a point on knot lines, for the stretch
- * before (sides[0]) and after (sides[1]) it. */
+/* The knot sides of sheet s at a point, for the stretch before
+ * (sides[0][s]) and after (sides[1][s]) it, and the parameters on[s] there. */
+static void sheet_ways(ic_pair *pair, int s, const ic_trace_point *p, const ic_jet_space *sp,
+                       const ic_hermite_node *h, int sides[2][2][2], double on[2][2])
+{
+    double d1[2], d2[2];
+    memset(sides[0][s], 0, sizeof sides[0][s]);
+    memset(sides[1][s], 0, sizeof sides[1][s]);
+    memcpy(on[s], p->params[s], sizeof on[s]);
+    /* any point may stand on a knot line: a branch point the tracer ended a
+     * curve at, not only the points it landed there; off every line the
+     * sides stay 0 without the sheet's derivatives (most points) */
+    if (!sheet_on_line(pair, s, p->params[s]) ||
+        !param_derivatives(ic_pair_surface(pair, s), sp, p->params[s], h->d1, h->d2, d1, d2))
+        return;
+    knot_sides(pair, s, p, d1, d2, -1, sides[0][s], on[s]);
+    knot_sides(pair, s, p, d1, d2, +1, sides[1][s], on[s]);
+}
+
+/* The knot sides of every sheet at a point on knot lines (sheet_ways). */
 static void knot_ways(ic_pair *pair, const ic_trace_point *p, const ic_jet_space *sp,
                       const ic_hermite_node *h, int sides[2][2][2], double on[2][2])
 {
-    memset(sides, 0, sizeof(int) * 8);
-    memcpy(on, p->params, sizeof(double) * 4);
-    for (int s = 0; s < 2; s++) {
-        double d1[2], d2[2];
-        /* any point may stand on a knot line: a branch point the tracer
-         * ended a curve at, not only the points it landed there */
-        if (ic_surface_get_kind(ic_pair_surface(pair, s)) != IC_PARAMETRIC ||
-            !param_derivatives(ic_pair_surface(pair, s), sp, p->params[s], h->d1, h->d2, d1, d2))
-            continue;
-        knot_sides(pair, s, p, d1, d2, -1, sides[0][s], on[s]);
-        knot_sides(pair, s, p, d1, d2, +1, sides[1][s], on[s]);
-    }
+    for (int s = 0; s < 2; s++)
+        sheet_ways(pair, s, p, sp, h, sides, on);
 }
 
 /* Both sides' c'' at a point on knot lines (the trace gives one side's). */
@@ -218,11 +232,21 @@ static int param_node(ic_pair *pair, int s, const ic_trace_point *p, const ic_je
     ic_surface *S = ic_pair_surface(pair, s);
     int sides[2][2][2] = {{{0}}};
     double on[2][2];
-    knot_ways(pair, p, sp, space, sides, on);
+    sheet_ways(pair, s, p, sp, space, sides, on); /* this sheet's only */
     ic_surface_set_knot_side(S, sides[1][s]);
     int ok = param_derivatives(S, sp, on[s], space->d1, space->d2, h->d1, h->d2);
-    ic_surface_set_knot_side(S, sides[0][s]);
-    ok = ok && param_derivatives(S, sp, on[s], space->d1b, space->d2b, h->d1b, h->d2b);
+    /* the same piece and the same c', c'' on both sides (off knot lines and
+     * junctions): the side before is the side after, bit for bit */
+    const int same = memcmp(sides[0][s], sides[1][s], sizeof sides[0][s]) == 0 &&
+                     memcmp(space->d1, space->d1b, sizeof space->d1) == 0 &&
+                     memcmp(space->d2, space->d2b, sizeof space->d2) == 0;
+    if (same) {
+        memcpy(h->d1b, h->d1, sizeof h->d1);
+        memcpy(h->d2b, h->d2, sizeof h->d2);
+    } else {
+        ic_surface_set_knot_side(S, sides[0][s]);
+        ok = ok && param_derivatives(S, sp, on[s], space->d1b, space->d2b, h->d1b, h->d2b);
+    }
     ic_surface_set_knot_side(S, NULL);
     return ok;
 }
@@ -345,20 +369,38 @@ static double pcurve_off(ic_pair *pair, const ic_curve_fit *f, int k, double s, 
     return ic_norm3(d);
 }
 
+/* The fitted curve at the middle of a stretch (ok: 0 where it cannot be
+ * evaluated) and each pcurve's image's distance from it there (pcurve_off;
+ * -1 without a pcurve): found once for both checks. */
+typedef struct {
+    int ok;
+    double s, X[3], off[2];
+} fit_middle;
+
+static void fit_middles(ic_pair *pair, const ic_curve_fit *f, const ic_hermite_node *nodes, int n,
+                        fit_middle *mid)
+{
+    for (int i = 0; i + 1 < n; i++) {
+        fit_middle *m = &mid[i];
+        m->s = 0.5 * (nodes[i].s + nodes[i + 1].s);
+        m->ok = ic_bspline_eval(&f->curve, m->s, 0, m->X, NULL) == IC_OK;
+        for (int k = 0; k < 2; k++) {
+            double uv[2];
+            m->off[k] = m->ok && f->pcurves[k].ncontrol ? pcurve_off(pair, f, k, m->s, m->X, uv)
+                                                        : -1;
+        }
+    }
+}
+
 /* The pcurves at the middle of every stretch: one whose image leaves the
  * curve by more than tol somewhere (a stretch across a point where its
  * sheet's parametrisation degenerates, a sphere's pole: the parameters jump
  * there) is dropped, and said so. */
-static void check_pcurves(ic_pair *pair, ic_curve_fit *f, const ic_hermite_node *nodes, int n,
-                          double tol)
+static void check_pcurves(ic_curve_fit *f, const fit_middle *mid, int n, double tol)
 {
     for (int k = 0; k < 2; k++)
         for (int i = 0; f->pcurves[k].ncontrol && i + 1 < n; i++) {
-            const double s = 0.5 * (nodes[i].s + nodes[i + 1].s);
-            double X[3], uv[2];
-            const int ok = ic_bspline_eval(&f->curve, s, 0, X, NULL) == IC_OK;
-            const double e = ok ? pcurve_off(pair, f, k, s, X, uv) : -1;
-            if (e >= 0 && e <= tol)
+            if (mid[i].off[k] >= 0 && mid[i].off[k] <= tol)
                 continue;
             free(f->pcurves[k].knots);
             free(f->pcurves[k].control);
@@ -418,25 +460,51 @@ static void middle_params(ic_surface *S, const ic_trace_point *a, const ic_trace
     }
 }
 
-/* The fitted curve's point at s, the middle of the stretch from point a to
+/* The jet spaces the fit evaluates in, made once for all its rounds: a
+ * sheet's derivatives (two variables to order 2), and the check's distances
+ * to a sheet and to an implicit surface (two and three variables to order
+ * 1, check_at). */
+typedef struct {
+    ic_jet_space *sheet, *sheet1, *point1;
+} fit_spaces;
+
+static void fit_spaces_free(fit_spaces *sp)
+{
+    ic_jet_space_free(sp->sheet);
+    ic_jet_space_free(sp->sheet1);
+    ic_jet_space_free(sp->point1);
+}
+
+static ic_status fit_spaces_new(fit_spaces *sp, ic_error *err)
+{
+    memset(sp, 0, sizeof *sp);
+    if (ic_jet_space_new(&sp->sheet, 2, 2, err) == IC_OK &&
+        ic_jet_space_new(&sp->sheet1, 2, 1, err) == IC_OK &&
+        ic_jet_space_new(&sp->point1, 3, 1, err) == IC_OK)
+        return IC_OK;
+    fit_spaces_free(sp);
+    return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory fitting a curve");
+}
+
+/* The fitted curve's point at m, the middle of the stretch from point a to
  * point b, against both surfaces: its distance to each (through a pcurve's
  * image where the sheet has one). -1 where it cannot be measured. */
 static double check_at(ic_pair *pair, const ic_curve_fit *f, const ic_trace_point *a,
-                       const ic_trace_point *b, double s, const ic_jet_space *sp[2])
+                       const ic_trace_point *b, const fit_middle *m, const fit_spaces *sp)
 {
-    double X[3], worst = 0;
-    if (ic_bspline_eval(&f->curve, s, 0, X, NULL) != IC_OK)
+    double worst = 0;
+    if (!m->ok)
         return -1;
     for (int k = 0; k < 2; k++) {
         ic_surface *S = ic_pair_surface(pair, k);
         double uv[2], e;
         if (ic_surface_get_kind(S) == IC_IMPLICIT)
-            e = implicit_distance(S, sp[1], X);
+            e = implicit_distance(S, sp->point1, m->X);
         else if (f->pcurves[k].ncontrol)
-            e = pcurve_off(pair, f, k, s, X, uv);
+            e = m->off[k];
         else {
             middle_params(S, a, b, k, uv);
-            e = sheet_distance(S, sp[0], X, uv);
+            e = sheet_distance(S, sp->sheet1, m->X, uv);
         }
         if (e < 0)
             return -1;
@@ -446,32 +514,58 @@ static double check_at(ic_pair *pair, const ic_curve_fit *f, const ic_trace_poin
 }
 
 /* Checks the fit at the middle of every stretch between its nodes. */
-static ic_status check_fit(ic_pair *pair, ic_curve_fit *f, const ic_trace_curve *c,
-                           const ic_hermite_node *nodes, const int *source, int n, double tol,
-                           double *bad, int *nbad, ic_error *err)
+static void check_fit(ic_pair *pair, ic_curve_fit *f, const ic_trace_curve *c,
+                      const fit_middle *mid, const int *source, int n, double tol,
+                      const fit_spaces *sp, double *bad, int *nbad)
 {
     *nbad = 0;
     f->fit_error = 0;
     f->checks = 0;
-    ic_jet_space *sp[2] = {NULL, NULL};
-    if (ic_jet_space_new(&sp[0], 2, 1, err) != IC_OK || ic_jet_space_new(&sp[1], 3, 1, err) != IC_OK) {
-        ic_jet_space_free(sp[0]);
-        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory checking a curve's fit");
-    }
     for (int k = 0; k + 1 < n; k++) {
-        const double e = check_at(pair, f, &c->points[source[k]], &c->points[source[k + 1]],
-                                  0.5 * (nodes[k].s + nodes[k + 1].s),
-                                  (const ic_jet_space **)sp);
+        const double e =
+            check_at(pair, f, &c->points[source[k]], &c->points[source[k + 1]], &mid[k], sp);
         if (e < 0) /* no corrected point there: unchecked, said by checks */
             continue;
         f->fit_error = fmax(f->fit_error, e);
         f->checks++;
         if (e > tol) /* to be refined: a node at its middle */
-            bad[(*nbad)++] = 0.5 * (nodes[k].s + nodes[k + 1].s);
+            bad[(*nbad)++] = mid[k].s;
     }
-    ic_jet_space_free(sp[0]);
-    ic_jet_space_free(sp[1]);
+}
+
+/* The pcurves checked, then the fit (check_pcurves, check_fit), at the
+ * middles of the stretches between the n nodes. */
+static ic_status check_all(ic_pair *pair, ic_curve_fit *f, const ic_trace_curve *c,
+                           const ic_hermite_node *nodes, const int *source, int n, double tol,
+                           const fit_spaces *sp, double *bad, int *nbad, ic_error *err)
+{
+    fit_middle *mid = malloc(sizeof *mid * (size_t)n);
+    if (!mid)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory checking a curve's fit");
+    fit_middles(pair, f, nodes, n, mid);
+    check_pcurves(f, mid, n, tol);
+    check_fit(pair, f, c, mid, source, n, tol, sp, bad, nbad);
+    free(mid);
     return IC_OK;
+}
+
+/* Whether the curve in space is smooth across every knot line of the pair:
+ * each parametric sheet a net recognised as a plane or a surface of
+ * revolution (ic_surface_net_shape). Such a net lies within 4 IC_NET_REL of
+ * its size on that smooth surface (docs/nurbs.md), the surface the exact
+ * paths trace on, so the curve's c'' is the same on both sides of a knot
+ * line up to that: the traced c'' serves both, the joint is C^2 like the
+ * others, and only the pcurves (whose pieces change there) keep two sides. */
+static int smooth_across_knots(ic_pair *pair)
+{
+    for (int s = 0; s < 2; s++) {
+        ic_surface *S = ic_pair_surface(pair, s);
+        const ic_net_shape *shape = NULL;
+        if (ic_surface_get_kind(S) == IC_PARAMETRIC &&
+            (ic_surface_net_shape(S, &shape) != 0 || !shape)) /* out of memory: the full way */
+            return 0;
+    }
+    return 1;
 }
 
 /* The nodes of the traced points of c: positions and derivatives, with
@@ -481,8 +575,12 @@ static int curve_nodes(ic_pair *pair, const ic_trace_curve *c, const ic_jet_spac
                        ic_hermite_node *nodes, int *source, int *pinned)
 {
     const int n = space_nodes(pair, c, nodes, source, pinned);
-    for (int k = 0; k < n; k++)
-        knot_node(pair, &c->points[source[k]], sp, &nodes[k]);
+    /* on a tangential curve the side apparatus finds a tangential point,
+     * never a transversal one (side_curvature keeps the traced c'' then):
+     * a full tangential analysis per knot point, for nothing */
+    if (!c->tangential && !smooth_across_knots(pair))
+        for (int k = 0; k < n; k++)
+            knot_node(pair, &c->points[source[k]], sp, &nodes[k]);
     junction_nodes(pair, c, nodes, source, n);
     return n;
 }
@@ -502,15 +600,14 @@ static int curve_nodes(ic_pair *pair, const ic_trace_curve *c, const ic_jet_spac
  * merged where the error allows): a new array in *pts (owned by the
  * caller), or NULL where nothing is merged. */
 static ic_status merged_points(ic_pair *pair, const ic_trace_curve *c, double fit_tol,
-                               ic_trace_point **pts, int *npts, ic_error *err)
+                               const ic_jet_space *sp, ic_trace_point **pts, int *npts,
+                               ic_error *err)
 {
     *pts = NULL;
     ic_hermite_node *nodes = malloc(sizeof *nodes * (size_t)c->npoints);
     int *source = malloc(sizeof *source * (size_t)c->npoints * 3);
     int *pinned = source ? source + c->npoints : NULL, *keep = source ? pinned + c->npoints : NULL;
-    ic_jet_space *sp = NULL;
-    ic_status st = nodes && source ? ic_jet_space_new(&sp, 2, 2, err)
-                                   : ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
+    ic_status st = nodes && source ? IC_OK : ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
     const int n = st == IC_OK ? curve_nodes(pair, c, sp, nodes, source, pinned) : 0;
     const int m = n >= 2 ? ic_hermite_merge(nodes, pinned, n, 3, FIT_MERGE_POS * fit_tol,
                                             FIT_MERGE_DERIV, FIT_MERGE_TAU, keep)
@@ -523,7 +620,6 @@ static ic_status merged_points(ic_pair *pair, const ic_trace_curve *c, double fi
             (*pts)[k] = c->points[source[keep[k]]];
         *npts = m;
     }
-    ic_jet_space_free(sp);
     free(nodes);
     free(source);
     return st;
@@ -532,15 +628,16 @@ static ic_status merged_points(ic_pair *pair, const ic_trace_curve *c, double fi
 /* One fit of the points of c; bad (c->npoints doubles) receives the middles
  * of the stretches beyond tol. */
 static ic_status fit_once(ic_curve_fit **out, ic_pair *pair, const ic_trace_curve *c,
-                          double fit_tol, double *bad, int *nbad, ic_error *err)
+                          double fit_tol, const fit_spaces *spaces, double *bad, int *nbad,
+                          ic_error *err)
 {
     *out = NULL;
     *nbad = 0;
     ic_curve_fit *f = calloc(1, sizeof *f);
     ic_hermite_node *nodes = malloc(sizeof *nodes * (size_t)c->npoints * 2);
     int *source = malloc(sizeof *source * (size_t)c->npoints * 2), *pinned = source + c->npoints;
-    ic_jet_space *sp = NULL;
-    ic_status st = f && nodes && source ? ic_jet_space_new(&sp, 2, 2, err)
+    const ic_jet_space *sp = spaces->sheet;
+    ic_status st = f && nodes && source ? IC_OK
                                         : ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
     const int n = st == IC_OK ? curve_nodes(pair, c, sp, nodes, source, pinned) : 0;
     if (st == IC_OK && n < 2)
@@ -553,11 +650,8 @@ static ic_status fit_once(ic_curve_fit **out, ic_pair *pair, const ic_trace_curv
             param_nodes(pair, s, c, nodes, source, n, sp, nodes + c->npoints))
             st = ic_hermite_bspline(&f->pcurves[s], nodes + c->npoints, n, 2,
                                     c->closed && ic_hermite_closes(nodes + c->npoints, n, 2), err);
-    if (st == IC_OK) {
-        check_pcurves(pair, f, nodes, n, fit_tol);
-        st = check_fit(pair, f, c, nodes, source, n, fit_tol, bad, nbad, err);
-    }
-    ic_jet_space_free(sp);
+    if (st == IC_OK)
+        st = check_all(pair, f, c, nodes, source, n, fit_tol, spaces, bad, nbad, err);
     free(nodes);
     free(source);
     if (st != IC_OK) {
@@ -648,7 +742,11 @@ ic_status ic_curve_fit_new(ic_curve_fit **out, ic_pair *pair, const ic_trace_cur
     ic_trace_curve cur = *c;
     ic_trace_point *owned = NULL;
     ic_curve_fit *f = NULL;
-    ic_status st = merged_points(pair, c, fit_tol, &owned, &cur.npoints, err);
+    fit_spaces spaces;
+    ic_status st = fit_spaces_new(&spaces, err);
+    if (st != IC_OK)
+        return st;
+    st = merged_points(pair, c, fit_tol, spaces.sheet, &owned, &cur.npoints, err);
     if (owned)
         cur.points = owned;
     for (int round = 0; st == IC_OK && round <= FIT_MAX_ROUNDS; round++) {
@@ -659,7 +757,7 @@ ic_status ic_curve_fit_new(ic_curve_fit **out, ic_pair *pair, const ic_trace_cur
             break;
         }
         ic_curve_fit_free(f);
-        st = fit_once(&f, pair, &cur, fit_tol, bad, &nbad, err);
+        st = fit_once(&f, pair, &cur, fit_tol, &spaces, bad, &nbad, err);
         ic_trace_point *next = NULL;
         int n = 0, more = 0;
         if (st == IC_OK && nbad > 0 && round < FIT_MAX_ROUNDS)
@@ -674,6 +772,7 @@ ic_status ic_curve_fit_new(ic_curve_fit **out, ic_pair *pair, const ic_trace_cur
         cur.points = owned;
         cur.npoints = n;
     }
+    fit_spaces_free(&spaces);
     free(owned);
     if (st != IC_OK) {
         ic_curve_fit_free(f);

@@ -24,12 +24,11 @@ static void hermite_bezier(double *b, const ic_hermite_node *a, const ic_hermite
     }
 }
 
-void ic_hermite_eval(const ic_hermite_node *a, const ic_hermite_node *z, int dim, double s,
-                     double out[4][3])
+/* The quintic of Bezier net b over [s0, s0 + h] at s: its derivatives
+ * 0..3 (ic_hermite_eval). */
+static void bezier_eval(const double *b, double s0, double h, int dim, double s, double out[4][3])
 {
-    double b[6 * 3];
-    hermite_bezier(b, a, z, dim);
-    const double h = z->s - a->s, u = (s - a->s) / h, v = 1 - u;
+    const double u = (s - s0) / h, v = 1 - u;
     /* Bernstein polynomials of degree 5, 4 and 3 at u */
     const double B5[6] = {v * v * v * v * v, 5 * u * v * v * v * v, 10 * u * u * v * v * v,
                           10 * u * u * u * v * v, 5 * u * u * u * u * v, u * u * u * u * u};
@@ -55,6 +54,14 @@ void ic_hermite_eval(const ic_hermite_node *a, const ic_hermite_node *z, int dim
     }
 }
 
+void ic_hermite_eval(const ic_hermite_node *a, const ic_hermite_node *z, int dim, double s,
+                     double out[4][3])
+{
+    double b[6 * 3];
+    hermite_bezier(b, a, z, dim);
+    bezier_eval(b, a->s, z->s - a->s, dim, s, out);
+}
+
 /* The torsion of a space curve from its first three derivatives: (c' x
  * c'') . c''' / |c' x c''|^2; NAN where c' x c'' vanishes. */
 static double torsion(const double d[4][3])
@@ -71,9 +78,11 @@ static double torsion(const double d[4][3])
 static int bridges(const ic_hermite_node *nodes, int a, int z, int dim, double pos_tol,
                    double deriv_tol, double tau_tol, double curvature_floor)
 {
+    double b[6 * 3]; /* the quintic's net, made once for every node it passes */
+    hermite_bezier(b, &nodes[a], &nodes[z], dim);
     for (int k = a + 1; k < z; k++) {
         double h[4][3], e0 = 0, e1 = 0, e2 = 0, size2 = 0;
-        ic_hermite_eval(&nodes[a], &nodes[z], dim, nodes[k].s, h);
+        bezier_eval(b, nodes[a].s, nodes[z].s - nodes[a].s, dim, nodes[k].s, h);
         for (int j = 0; j < dim; j++) {
             e0 = fmax(e0, fabs(h[0][j] - nodes[k].x[j]));
             e1 = fmax(e1, fabs(h[1][j] - nodes[k].d1[j]));

@@ -26,6 +26,10 @@ static const char NETS[] = "closed form: NURBS nets recognised as plane sections
 /* relative to L: every point's parameters on a net put it back on the
  * point, |S(u, v) - x| (the path refuses beyond this: IC_EXACT_ON_NET) */
 #define ON_NET_REL 1e-12
+/* relative to L: a step's arc length s against its chord, chord <= ds <=
+ * chord + kappa_max^2 ds^3 / 24 (a plane arc of curvature at most
+ * kappa_max), beyond a few roundings of the O(L) values of s */
+#define ARC_ROUNDING 1e-14
 /* relative: the general path's lengths against the exact ones (its
  * truncation error per step is 1e-11 L at most, of either sign along a
  * closed curve; test_exact_conics holds the primitives to the same) */
@@ -108,18 +112,24 @@ static net_place place_along(const double *o, const double *a, double spin)
     return p;
 }
 
-static void cylinder_sheet(sheet *s, const double *o, const double *a, double r, double half,
-                           double spin, int variant)
+/* The cylinder about the place's e3 through its origin (unit scale). */
+static void cylinder_at(sheet *s, const net_place *pl, double r, double half, int variant)
 {
     net_curve circle, profile;
     circle9(&circle);
     segment(&profile, r, -half, r, half);
     vary(&circle, variant, 0.4);
     vary(&profile, variant, 0.3);
-    const net_place pl = place_along(o, a, spin);
-    revolve(&s->net, &circle, &profile, &pl, 0, 0);
+    revolve(&s->net, &circle, &profile, pl, 0, 0);
     s->plane = 0, s->r = r;
-    memcpy(s->o, o, sizeof s->o), memcpy(s->a, a, sizeof s->a);
+    memcpy(s->o, pl->o, sizeof s->o), memcpy(s->a, pl->e[2], sizeof s->a);
+}
+
+static void cylinder_sheet(sheet *s, const double *o, const double *a, double r, double half,
+                           double spin, int variant)
+{
+    const net_place pl = place_along(o, a, spin);
+    cylinder_at(s, &pl, r, half, variant);
 }
 
 /* The plane through o normal to n as a grid [-w, w]^2 sheared by the
@@ -362,13 +372,28 @@ static int on_knot(const net_patch *n, int d, double x)
     return 0;
 }
 
+/* Every step's arc length against its chord (the knot-line points' s
+ * come from their own quadrature): the worst excess over the bounds. */
+static double arc_excess(const ellipse *e, const ic_trace_curve *cv)
+{
+    const double a = fmax(norm3(e->A), norm3(e->B)), b = fmin(norm3(e->A), norm3(e->B));
+    const double kmax = a / (b * b);
+    double worst = 0;
+    for (int p = 0; p + 1 < cv->npoints; p++) {
+        const double ds = cv->points[p + 1].s - cv->points[p].s;
+        const double chord = dist3(cv->points[p + 1].xyz, cv->points[p].xyz);
+        worst = fmax(worst, fmax(chord - ds, ds - chord - kmax * kmax * ds * ds * ds / 24));
+    }
+    return worst;
+}
+
 /* The points of curve cv (ellipse i) against the closed forms: on the
  * ellipse, on both exact surfaces, each net at the point's parameters; a
- * point on every knot line crossed, exactly on it. */
+ * point on every knot line crossed, exactly on it; the arc lengths. */
 static void check_points(traced *t, const conic_case *c, const ic_trace_curve *cv, int i)
 {
     double off = 0, on = 0;
-    int flagged[2] = {0, 0}, exact_on[2] = {1, 1};
+    int flagged[2] = {0, 0}, exact_on[2] = {1, 1}, continued = 1;
     for (int p = 0; p < cv->npoints; p++) {
         const ic_trace_point *pt = &cv->points[p];
         off = fmax(off, off_ellipse(&c->ell[i], pt->xyz));
@@ -379,6 +404,16 @@ static void check_points(traced *t, const conic_case *c, const ic_trace_curve *c
             on = ic_surface_eval(t->S[s], x, pt->params[s], &err) == IC_OK
                      ? fmax(on, dist3(x, pt->xyz))
                      : INFINITY;
+            for (int d = 0; p > 0 && d < 2; d++) { /* no jump of a period between points */
+                const net_patch *n = &c->s[s].net;
+                const double width = n->knots[d][n->count[d]] - n->knots[d][n->degree[d]];
+                continued &= fabs(pt->params[s][d] - pt[-1].params[s][d]) < 0.25 * width;
+            }
+            if (p + 1 == cv->npoints && pt->knot_line != cv->points[0].knot_line)
+                exact_on[s] = 0; /* the last point is the first again */
+            if (p + 1 == cv->npoints && (pt->knot_line & (1 << s)))
+                exact_on[s] &= on_knot(&c->s[s].net, 0, pt->params[s][0]) ||
+                               on_knot(&c->s[s].net, 1, pt->params[s][1]);
             if (p + 1 < cv->npoints && (pt->knot_line & (1 << s))) { /* the last: the first */
                 flagged[s]++;
                 exact_on[s] &= on_knot(&c->s[s].net, 0, pt->params[s][0]) ||
@@ -388,6 +423,10 @@ static void check_points(traced *t, const conic_case *c, const ic_trace_curve *c
     }
     CHECK(off <= EXACT_REL * t->L, "%s: ellipse %d: the points %.3g L off it or a surface",
           c->name, i, off / t->L);
+    CHECK(continued, "%s: ellipse %d: the parameters run on from point to point", c->name, i);
+    const double excess = arc_excess(&c->ell[i], cv);
+    CHECK(excess <= ARC_ROUNDING * t->L, "%s: ellipse %d: a step's s %.3g L beyond its chord's bounds",
+          c->name, i, excess / t->L);
     CHECK(on <= ON_NET_REL * t->L, "%s: ellipse %d: the nets at the points' parameters %.3g L off",
           c->name, i, on / t->L);
     for (int s = 0; s < 2; s++) {
@@ -609,10 +648,44 @@ static void bench_case(void)
     harness_rng g = {11};
     const double o[3] = {0, 0, 0}, x[3] = {1, 0, 0}, y[3] = {0, 1, 0};
     steinmetz(&c, o, x, y, 1, 1.5, 0, &g);
+    /* the seams along z, as the benchmark's: the branch point (0, 0, 1),
+     * where the ellipses start, on both seams, (0, 0, -1) on the meridians
+     * at pi */
+    const net_place px = {{0, 0, 0}, 1, {{0, 0, 1}, {0, -1, 0}, {1, 0, 0}}};
+    const net_place py = {{0, 0, 0}, 1, {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}}};
+    cylinder_at(&c.s[0], &px, 1, 1.5, 0);
+    cylinder_at(&c.s[1], &py, 1, 1.5, 0);
     snprintf(c.name, sizeof c.name, "Steinmetz nets of the peers benchmark");
     run_case(&c);
     CHECK_CLOSE(ellipse_length(&c.ell[0]), 7.64039557805542403581, 16 * DBL_EPSILON,
                 "4 sqrt(2) E(1/2): the closed form derived here");
+}
+
+/* A plane net beside a cylinder net's ellipse (its plane cuts the
+ * cylinder, the patch lies 20 radii away along it): nothing, found by the
+ * conic path (the ellipse proven off the patch), as by the general path. */
+static void off_patch(void)
+{
+    conic_case c;
+    const double o[3] = {0.1, -0.2, 0.3}, a[3] = {0, 0, 1};
+    double n[3] = {0.3, -0.4, 1}, q[3];
+    net_unit(n);
+    plane_cylinder(&c, o, n, o, a, 1, 0);
+    axpy(q, c.ell[0].c, 20, c.ell[0].A);
+    plane_sheet(&c.s[0], q, n, 6, 0);
+    snprintf(c.name, sizeof c.name, "plane net beside a cylinder net's ellipse");
+    traced t;
+    if (trace_case(&t, &c)) {
+        const ic_trace_report *rep = ic_trace_result_report(t.res[1]);
+        CHECK(rep->complete && strcmp(rep->method, NETS) == 0 &&
+                  ic_trace_result_num_curves(t.res[1]) == 0 &&
+                  ic_trace_result_num_specials(t.res[1]) == 0 &&
+                  ic_trace_result_num_curves(t.res[0]) == 0 &&
+                  ic_trace_result_num_specials(t.res[0]) == 0,
+              "%s: %s, %d curves (the general path %d)", c.name, rep->method,
+              ic_trace_result_num_curves(t.res[1]), ic_trace_result_num_curves(t.res[0]));
+    }
+    release(&t);
 }
 
 int main(void)
@@ -622,5 +695,6 @@ int main(void)
     steinmetz_cases(&g);
     plane_cylinder_cases(&g);
     too_short();
+    off_patch();
     return harness_finish("test_nurbs_conics");
 }

@@ -621,22 +621,36 @@ static int same_results(const ic_trace_result *a, const ic_trace_result *b)
     return 1;
 }
 
-/* Steinmetz's cylinders at right angles, half-length 0.8: the ellipses
- * reach 1 along each axis, the nets' edges cut them. */
-static void too_short(void)
+static void fall_back(const conic_case *c)
+{
+    traced t;
+    if (trace_case(&t, c))
+        CHECK(same_results(t.res[0], t.res[1]),
+              "%s: left to the general path, exactly what it gives (%d curves; method %s)",
+              c->name, ic_trace_result_num_curves(t.res[1]),
+              ic_trace_result_report(t.res[1])->method);
+    release(&t);
+}
+
+/* Patches whose edges cut the ellipses: Steinmetz's cylinders at right
+ * angles, half-length 0.8 (the ellipses reach 1 along each axis); a plane
+ * net of half-width 0.4 about the centre of an ellipse of semi-axes 1 and
+ * more. */
+static void edges_cut(void)
 {
     conic_case c;
     harness_rng g = {7};
     const double o[3] = {0, 0, 0}, x[3] = {1, 0, 0}, y[3] = {0, 1, 0};
     steinmetz(&c, o, x, y, 1, 0.8, 0, &g);
     snprintf(c.name, sizeof c.name, "Steinmetz nets cut by their edges");
-    traced t;
-    if (trace_case(&t, &c))
-        CHECK(same_results(t.res[0], t.res[1]),
-              "%s: left to the general path, exactly what it gives (%d curves; method %s)",
-              c.name, ic_trace_result_num_curves(t.res[1]),
-              ic_trace_result_report(t.res[1])->method);
-    release(&t);
+    fall_back(&c);
+    const double a[3] = {0, 0, 1};
+    double n[3] = {0.3, -0.4, 1};
+    net_unit(n);
+    plane_cylinder(&c, o, n, o, a, 1, 0);
+    plane_sheet(&c.s[0], c.ell[0].c, n, 0.4, 0);
+    snprintf(c.name, sizeof c.name, "a plane net cut by the cylinder net's ellipse");
+    fall_back(&c);
 }
 
 /* The peers benchmark's case: unit cylinders about x and y, half-length
@@ -694,7 +708,7 @@ int main(void)
     bench_case();
     steinmetz_cases(&g);
     plane_cylinder_cases(&g);
-    too_short();
+    edges_cut();
     off_patch();
     return harness_finish("test_nurbs_conics");
 }

@@ -505,14 +505,14 @@ static ic_status nurbs_cylinder_plane(made_pair *m, ic_error *err)
     return st;
 }
 
-/* the exact paths on recognised nets: a circle with its parameters, a
- * contact point at a pole, an ellipse on a cylinder's and a plane's nets */
+/* the exact path on recognised nets: a circle with its parameters, and a
+ * contact point at a pole */
 static ic_status trace_exact_nets(ic_error *err, char *summary)
 {
     ic_status st = IC_OK;
-    for (int c = 0; c < 3 && st == IC_OK; c++) {
+    for (int c = 0; c < 2 && st == IC_OK; c++) {
         made_pair m;
-        st = c == 2 ? nurbs_cylinder_plane(&m, err) : nurbs_sphere_plane(&m, c ? -1 : 0.5, err);
+        st = nurbs_sphere_plane(&m, c ? -1 : 0.5, err);
         ic_trace_options opt;
         ic_trace_defaults(&opt);
         ic_trace_result *res = NULL;
@@ -525,6 +525,26 @@ static ic_status trace_exact_nets(ic_error *err, char *summary)
         ic_trace_result_free(res);
         free_pair(&m);
     }
+    return st;
+}
+
+/* the conic path on recognised nets: an ellipse with its parameters and
+ * its knot lines' points */
+static ic_status trace_conic_nets(ic_error *err, char *summary)
+{
+    made_pair m;
+    ic_status st = nurbs_cylinder_plane(&m, err);
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    ic_trace_result *res = NULL;
+    if (st == IC_OK)
+        st = ic_trace(&res, m.pair, &opt, err);
+    if (st == IC_OK) {
+        say(summary, "%s; ", ic_trace_result_report(res)->method);
+        say_trace(summary, res);
+    }
+    ic_trace_result_free(res);
+    free_pair(&m);
     return st;
 }
 
@@ -833,6 +853,7 @@ int main(int argc, char **argv)
         {"trace, tangential", trace_tangential},
         {"trace, exact", trace_exact},
         {"trace, exact nets", trace_exact_nets},
+        {"trace, conic nets", trace_conic_nets},
         {"problem file", problem_file},
         {"writers", writers},
         {"bindings", bindings},

@@ -30,6 +30,12 @@ static const char NETS[] = "closed form: NURBS nets recognised as plane sections
  * chord + kappa_max^2 ds^3 / 24 (a plane arc of curvature at most
  * kappa_max), beyond a few roundings of the O(L) values of s */
 #define ARC_ROUNDING 1e-14
+/* relative to a parameter's domain: a step's parameters move by less than
+ * this (the steps are short; a wrap not run on jumps by a whole period) */
+#define STEP_PARAM 0.25
+/* relative: the closed form derived here, 4 sqrt(2) E(1/2) by the AGM,
+ * against mpmath's (as test_exact_conics' EXACT_LENGTH) */
+#define AGM_LENGTH (16 * DBL_EPSILON)
 /* relative: the general path's lengths against the exact ones (its
  * truncation error per step is 1e-11 L at most, of either sign along a
  * closed curve; test_exact_conics holds the primitives to the same) */
@@ -446,7 +452,7 @@ static void check_points(traced *t, const conic_case *c, const ic_trace_curve *c
             for (int d = 0; p > 0 && d < 2; d++) { /* no jump of a period between points */
                 const net_patch *n = &c->s[s].net;
                 const double width = n->knots[d][n->count[d]] - n->knots[d][n->degree[d]];
-                continued &= fabs(pt->params[s][d] - pt[-1].params[s][d]) < 0.25 * width;
+                continued &= fabs(pt->params[s][d] - pt[-1].params[s][d]) < STEP_PARAM * width;
             }
             if (p + 1 == cv->npoints && pt->knot_line != cv->points[0].knot_line)
                 exact_on[s] = 0; /* the last point is the first again */
@@ -734,7 +740,7 @@ static void bench_case(void)
     cylinder_at(&c.s[1], &py, 1, 1.5, 0);
     snprintf(c.name, sizeof c.name, "Steinmetz nets of the peers benchmark");
     run_case(&c);
-    CHECK_CLOSE(ellipse_length(&c.ell[0]), 7.64039557805542403581, 16 * DBL_EPSILON,
+    CHECK_CLOSE(ellipse_length(&c.ell[0]), 7.64039557805542403581, AGM_LENGTH,
                 "4 sqrt(2) E(1/2): the closed form derived here");
 }
 

@@ -219,8 +219,8 @@ static void plane_cylinder(conic_case *c, const double *q, const double *n, cons
  * + x2) / 2 (z = h + m xc), its semi-axes (x1 - x2) / 2 (1, 0, m) and,
  * along y, sqrt(((h + m xc) t)^2 - xc^2) (m t < 1: an ellipse). The cone's
  * net covers the heights [z0, z1] of one nappe. */
-static void plane_cone(conic_case *c, const net_place *pl, double t, double h, double m,
-                       double z0, double z1, int variant)
+static void plane_cone(conic_case *c, const net_place *pl, double t, double h, double m, double z0,
+                       double z1, int variant)
 {
     memset(c, 0, sizeof *c);
     const double x1 = h * t / (1 - m * t), x2 = -h * t / (1 + m * t), xc = 0.5 * (x1 + x2);
@@ -279,8 +279,8 @@ static int trace_case(traced *t, const conic_case *c)
     memset(t, 0, sizeof *t);
     t->L = nets_size(c);
     for (int s = 0; s < 2; s++)
-        if (!REQUIRE(net_surface(&t->S[s], &c->s[s].net, &err) == IC_OK, "%s: net %d: %s",
-                     c->name, s, err.message))
+        if (!REQUIRE(net_surface(&t->S[s], &c->s[s].net, &err) == IC_OK, "%s: net %d: %s", c->name,
+                     s, err.message))
             return 0;
     if (!REQUIRE(ic_pair_new(&t->pair, t->S[0], t->S[1], &err) == IC_OK, "%s: %s", c->name,
                  err.message))
@@ -466,19 +466,19 @@ static void check_points(traced *t, const conic_case *c, const ic_trace_curve *c
             }
         }
     }
-    CHECK(off <= EXACT_REL * t->L, "%s: ellipse %d: the points %.3g L off it or a surface",
-          c->name, i, off / t->L);
+    CHECK(off <= EXACT_REL * t->L, "%s: ellipse %d: the points %.3g L off it or a surface", c->name,
+          i, off / t->L);
     CHECK(continued, "%s: ellipse %d: the parameters run on from point to point", c->name, i);
     const double excess = arc_excess(&c->ell[i], cv);
-    CHECK(excess <= ARC_ROUNDING * t->L, "%s: ellipse %d: a step's s %.3g L beyond its chord's bounds",
-          c->name, i, excess / t->L);
+    CHECK(excess <= ARC_ROUNDING * t->L,
+          "%s: ellipse %d: a step's s %.3g L beyond its chord's bounds", c->name, i, excess / t->L);
     CHECK(on <= ON_NET_REL * t->L, "%s: ellipse %d: the nets at the points' parameters %.3g L off",
           c->name, i, on / t->L);
     for (int s = 0; s < 2; s++) {
         const int want = crossings(c, s, &c->ell[i]);
         CHECK(flagged[s] == want && exact_on[s],
-              "%s: ellipse %d: %d points on net %d's knot lines (want %d), exactly on: %d",
-              c->name, i, flagged[s], s, want, exact_on[s]);
+              "%s: ellipse %d: %d points on net %d's knot lines (want %d), exactly on: %d", c->name,
+              i, flagged[s], s, want, exact_on[s]);
     }
 }
 
@@ -695,9 +695,8 @@ static void fall_back(const conic_case *c)
     traced t;
     if (trace_case(&t, c))
         CHECK(same_results(t.res[0], t.res[1]),
-              "%s: left to the general path, exactly what it gives (%d curves; method %s)",
-              c->name, ic_trace_result_num_curves(t.res[1]),
-              ic_trace_result_report(t.res[1])->method);
+              "%s: left to the general path, exactly what it gives (%d curves; method %s)", c->name,
+              ic_trace_result_num_curves(t.res[1]), ic_trace_result_report(t.res[1])->method);
     release(&t);
 }
 

@@ -28,7 +28,8 @@ static void ellipse_range(const ic_exact_ellipse *e, const double o[3], const do
 {
     double w[3];
     ic_axpy3(w, e->c, -1.0, o);
-    const double mid = ic_dot3(w, k), half = hypot(e->a * ic_dot3(e->u, k), e->b * ic_dot3(e->v, k));
+    const double mid = ic_dot3(w, k),
+                 half = hypot(e->a * ic_dot3(e->u, k), e->b * ic_dot3(e->v, k));
     *lo = mid - half, *hi = mid + half;
 }
 

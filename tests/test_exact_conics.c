@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "exact_pair.h"
+#include "elliptic_e.h"
 #include "harness.h"
 #include "intercurve.h"
 
@@ -105,20 +106,7 @@ static void normal_to(harness_rng *g, const double *e, double *w)
     unit(w);
 }
 
-/* ---- the complete elliptic integral E(m) by the arithmetic-geometric
- * mean (Abramowitz and Stegun (1964), 17.6.3-4): E = K (1 - sum 2^(n-1)
- * c_n^2), K = pi / (2 a_N), c_0^2 = m ---- */
-
-static double ellipe(double m)
-{
-    double a = 1, b = sqrt(1 - m), sum = 0.5 * m, w = 0.5;
-    for (int n = 0; n < 40 && fabs(a - b) > DBL_EPSILON * a; n++) {
-        const double c = 0.5 * (a - b), an = 0.5 * (a + b);
-        b = sqrt(a * b), a = an, w *= 2;
-        sum += w * c * c;
-    }
-    return PI / (2 * a) * (1 - sum);
-}
+/* ---- E(m) (elliptic_e.h) against mpmath ---- */
 
 static void agm_against_mpmath(void)
 {

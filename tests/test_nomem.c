@@ -494,6 +494,35 @@ static ic_status nurbs_sphere_plane(made_pair *m, double h, ic_error *err)
     return st;
 }
 
+/* The unit cylinder's net about z (the 9-point circle revolved with the
+ * segment from height -2 to 2) and the plane z = 0.3 x's bilinear net over
+ * [-3, 3]^2: recognised as a cylinder and a plane, their ellipse traced in
+ * closed form with its knot lines' points. */
+static ic_status nurbs_cylinder_plane(made_pair *m, ic_error *err)
+{
+    static const double cx[9] = {1, 1, 0, -1, -1, -1, 0, 1, 1}, cy[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
+    static const double ku[12] = {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1};
+    static const double k1[4] = {0, 0, 1, 1};
+    double P[3 * 18], w[18], Q[12];
+    for (int i = 0; i < 9; i++)
+        for (int j = 0; j < 2; j++) {
+            const int at = 2 * i + j;
+            P[3 * at] = cx[i], P[3 * at + 1] = cy[i], P[3 * at + 2] = j ? 2 : -2;
+            w[at] = i % 2 ? sqrt(0.5) : 1;
+        }
+    for (int i = 0; i < 4; i++)
+        Q[3 * i] = i < 2 ? -3 : 3, Q[3 * i + 1] = i % 2 ? 3 : -3, Q[3 * i + 2] = 0.3 * Q[3 * i];
+    const ic_nurbs cylinder = {{2, 1}, {9, 2}, {ku, k1}, P, w, {1, 0}};
+    const ic_nurbs plane = {{1, 1}, {2, 2}, {k1, k1}, Q, NULL, {0, 0}};
+    memset(m, 0, sizeof *m);
+    ic_status st = ic_surface_new_nurbs(&m->A, &cylinder, err);
+    if (st == IC_OK)
+        st = ic_surface_new_nurbs(&m->B, &plane, err);
+    if (st == IC_OK)
+        st = ic_pair_new(&m->pair, m->A, m->B, err);
+    return st;
+}
+
 /* the exact path on recognised nets: a circle with its parameters, and a
  * contact point at a pole */
 static ic_status trace_exact_nets(ic_error *err, char *summary)
@@ -514,6 +543,26 @@ static ic_status trace_exact_nets(ic_error *err, char *summary)
         ic_trace_result_free(res);
         free_pair(&m);
     }
+    return st;
+}
+
+/* the conic path on recognised nets: an ellipse with its parameters and
+ * its knot lines' points */
+static ic_status trace_conic_nets(ic_error *err, char *summary)
+{
+    made_pair m;
+    ic_status st = nurbs_cylinder_plane(&m, err);
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    ic_trace_result *res = NULL;
+    if (st == IC_OK)
+        st = ic_trace(&res, m.pair, &opt, err);
+    if (st == IC_OK) {
+        say(summary, "%s; ", ic_trace_result_report(res)->method);
+        say_trace(summary, res);
+    }
+    ic_trace_result_free(res);
+    free_pair(&m);
     return st;
 }
 
@@ -824,6 +873,7 @@ int main(int argc, char **argv)
         {"trace, tangential", trace_tangential},
         {"trace, exact", trace_exact},
         {"trace, exact nets", trace_exact_nets},
+        {"trace, conic nets", trace_conic_nets},
         {"problem file", problem_file},
         {"writers", writers},
         {"bindings", bindings},

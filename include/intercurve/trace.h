@@ -215,8 +215,10 @@ typedef struct {
     /** how the intersection was found, a static string: "search" (the
      *  subdivision search and the marching), "closed form: coaxial surfaces
      *  of revolution" (two implicit primitives), "closed form: NURBS nets
-     *  recognised as coaxial surfaces of revolution" or "closed form: plane
-     *  sections of quadrics" (docs/tracing.md, "Exact paths": nothing was
+     *  recognised as coaxial surfaces of revolution", "closed form: plane
+     *  sections of quadrics" (two implicit primitives) or "closed form: NURBS
+     *  nets recognised as plane sections of quadrics" (docs/tracing.md,
+     *  "Exact paths": nothing was
      *  searched, the cell counts are 0, complete is 1) */
     const char *method;
 } ic_trace_report;

@@ -268,12 +268,17 @@ static int sheet_normal(ic_pair *pair, int s, const ic_trace_point *p, double n[
     return 0;
 }
 
-void ic_exact_circle_orient(ic_pair *pair, ic_trace_point *pts, int n)
+void ic_exact_orient_at(ic_pair *pair, ic_trace_point *pts, int n, int at)
 {
     double a[3], b[3], t[3];
-    if (n < 2 || sheet_normal(pair, 0, &pts[0], a) != 0 || sheet_normal(pair, 1, &pts[0], b) != 0)
+    if (n < 2 || sheet_normal(pair, 0, &pts[at], a) != 0 || sheet_normal(pair, 1, &pts[at], b) != 0)
         return;
     ic_cross3(t, a, b);
-    if (ic_dot3(t, pts[0].t) < 0)
+    if (ic_dot3(t, pts[at].t) < 0)
         ic_trace_points_reverse(pts, n);
+}
+
+void ic_exact_circle_orient(ic_pair *pair, ic_trace_point *pts, int n)
+{
+    ic_exact_orient_at(pair, pts, n, 0);
 }

@@ -52,4 +52,8 @@ int ic_exact_circle_points(ic_exact_circle *c, int n, const ic_exact_source src[
  * surface's gradient), as the general path's curves run. */
 void ic_exact_circle_orient(ic_pair *pair, ic_trace_point *pts, int n);
 
+/* The same for any closed curve's points, read at point `at` (where the
+ * normals are not parallel). */
+void ic_exact_orient_at(ic_pair *pair, ic_trace_point *pts, int n, int at);
+
 #endif

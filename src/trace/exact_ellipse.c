@@ -46,8 +46,8 @@ static double normal_angle(const double *g, const double *h)
  * the angle between the normals only when `angle` is set). The point was
  * zeroed (calloc: no parameters, no knot line): a memset of each point
  * here took a third of the time. */
-static void ellipse_point(ic_trace_point *p, const ic_exact_ellipse *e, const double *binormal,
-                          double cs, double sn, int angle)
+void ic_exact_ellipse_point(ic_trace_point *p, const ic_exact_ellipse *e, const double *binormal,
+                            double cs, double sn, int angle)
 {
     const double ac = e->a * cs, bs = e->b * sn, as = e->a * sn, bc = e->b * cs;
     const double speed = sqrt(as * as + bc * bc), inv = 1 / speed;
@@ -89,7 +89,7 @@ static void ellipse_points(ic_trace_point *pts, const ic_exact_ellipse *e,
             const int own = !e->symmetric || m < 2;
             double ct, st;
             ic_ellipse_theta(plan, cc[m], ss[m], &ct, &st);
-            ellipse_point(&pts[k[m]], e, binormal, ct, st, own);
+            ic_exact_ellipse_point(&pts[k[m]], e, binormal, ct, st, own);
             if (!own)
                 pts[k[m]].angle = pts[k[m == 3 || m == 4 || m == 7 ? 0 : 1]].angle;
             pts[k[m]].s = arc_at(S, q, k[m]);
@@ -101,9 +101,8 @@ static void ellipse_points(ic_trace_point *pts, const ic_exact_ellipse *e,
     pts[n].s = 4 * S[q];
 }
 
-ic_status ic_exact_add_ellipse(ic_trace_result *r, const ic_exact_ellipse *e,
-                               const ic_ellipse_plan *plan, const ic_trace_options *opt,
-                               ic_error *err)
+int ic_exact_ellipse_points(const ic_exact_ellipse *e, const ic_ellipse_plan *plan,
+                            ic_trace_point **out)
 {
     const int n = plan->n, q = n / 4;
     ic_trace_point *pts = calloc((size_t)n + 1, sizeof *pts);
@@ -112,7 +111,7 @@ ic_status ic_exact_add_ellipse(ic_trace_result *r, const ic_exact_ellipse *e,
     double *S = malloc((size_t)(q + 1) * sizeof *S);
     if (!pts || !phi || !S) {
         free(pts), free(phi), free(S);
-        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory adding a curve");
+        return -1;
     }
     for (int j = 0; j <= n / 8; j++) { /* the second octant by reflection */
         phi[j][0] = phi[q - j][1] = cos(2 * IC_PI * j / n);
@@ -121,6 +120,14 @@ ic_status ic_exact_add_ellipse(ic_trace_result *r, const ic_exact_ellipse *e,
     ic_exact_quarter_lengths(e, plan, (const double(*)[2])phi, S);
     ellipse_points(pts, e, plan, (const double(*)[2])phi, S);
     free(phi), free(S);
+    *out = pts;
+    return 0;
+}
+
+ic_status ic_exact_add_ellipse_points(ic_trace_result *r, const ic_exact_ellipse *e,
+                                      ic_trace_point *pts, int np, const ic_trace_options *opt,
+                                      ic_error *err)
+{
     /* the shape test's verdict (shape.c), read from the semi-axes: tau is 0
      * exactly, so planar, or a circle where kappa, between b / a^2 and a /
      * b^2 at the ends of the axes (points of every ellipse: n is a multiple
@@ -128,6 +135,16 @@ ic_status ic_exact_add_ellipse(ic_trace_result *r, const ic_exact_ellipse *e,
     const double lo = fmin(e->a, e->b), hi = fmax(e->a, e->b);
     const double kmax = hi / (lo * lo), kmin = lo / (hi * hi);
     const ic_shape shape = kmax - kmin <= opt->shape_tol * kmax ? IC_SHAPE_CIRCLE : IC_SHAPE_PLANAR;
-    return ic_trace_add_shaped_curve(r, pts, n + 1, 1, IC_TRACE_CLOSED, IC_TRACE_CLOSED,
+    return ic_trace_add_shaped_curve(r, pts, np, 1, IC_TRACE_CLOSED, IC_TRACE_CLOSED,
                                      opt->shape_tol, shape, -1, -1, err);
+}
+
+ic_status ic_exact_add_ellipse(ic_trace_result *r, const ic_exact_ellipse *e,
+                               const ic_ellipse_plan *plan, const ic_trace_options *opt,
+                               ic_error *err)
+{
+    ic_trace_point *pts;
+    if (ic_exact_ellipse_points(e, plan, &pts) != 0)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory adding a curve");
+    return ic_exact_add_ellipse_points(r, e, pts, plan->n + 1, opt, err);
 }

@@ -55,6 +55,30 @@ int ic_exact_ellipse_plan(const ic_trace_options *opt, const ic_exact_ellipse *e
 void ic_exact_quarter_lengths(const ic_exact_ellipse *e, const ic_ellipse_plan *plan,
                               const double (*phi)[2], double *S);
 
+/* The arc length from phi0 to phi1 (phi1 - phi0 at most one arc, 2 pi /
+ * n): the plan's quadrature on `split` parts of that stretch, whose error
+ * bound (exact_ellipse_plan.c) only falls on a shorter stretch. */
+double ic_exact_ellipse_arc(const ic_exact_ellipse *e, const ic_ellipse_plan *plan, double phi0,
+                            double phi1);
+
+/* The point at the angle theta of cosine cs and sine sn with its exact
+ * apparatus (b = binormal, u x v), the angle between the normals when
+ * `angle` is set; not s. The point must be zeroed first. */
+void ic_exact_ellipse_point(ic_trace_point *p, const ic_exact_ellipse *e, const double *binormal,
+                            double cs, double sn, int angle);
+
+/* The plan's n + 1 points (the last the first again) with their apparatus
+ * and arc length, in *pts (calloc'ed): 0, or -1 out of memory. */
+int ic_exact_ellipse_points(const ic_exact_ellipse *e, const ic_ellipse_plan *plan,
+                            ic_trace_point **pts);
+
+/* Adds the np points (taken: the result frees them from now on, even on an
+ * error) to r as a closed transversal curve, its shape that of the shape
+ * test. */
+ic_status ic_exact_add_ellipse_points(ic_trace_result *r, const ic_exact_ellipse *e,
+                                      ic_trace_point *pts, int np, const ic_trace_options *opt,
+                                      ic_error *err);
+
 /* Adds it to r as a closed transversal curve, its shape that of the shape
  * test. IC_ERR_NOMEM out of memory. */
 ic_status ic_exact_add_ellipse(ic_trace_result *r, const ic_exact_ellipse *e,

@@ -151,3 +151,21 @@ void ic_exact_quarter_lengths(const ic_exact_ellipse *e, const ic_ellipse_plan *
         S[j + 1] = sum = t;
     }
 }
+
+double ic_exact_ellipse_arc(const ic_exact_ellipse *e, const ic_ellipse_plan *plan, double phi0,
+                            double phi1)
+{
+    const int m = plan->split;
+    const double w = (phi1 - phi0) / m, r = plan->r, b2 = e->b * e->b;
+    const double ar2 = e->a * e->a * r * r;
+    double arc = 0;
+    for (int i = 0; i < m; i++)
+        for (int k = 0; k < GAUSS_NODES; k++) {
+            const double x = k < 4 ? -GAUSS_X[3 - k] : GAUSS_X[k - 4];
+            const double at = phi0 + (i + 0.5 * (1 + x)) * w, c = cos(at), s = sin(at);
+            const double q = c * c + r * r * s * s;
+            arc += 0.5 * w * GAUSS_W[k < 4 ? 3 - k : k - 4] * r *
+                   sqrt((b2 * c * c + ar2 * s * s) / (q * q * q));
+        }
+    return arc;
+}

@@ -217,7 +217,8 @@ extern const char ic_trace_method_revolution[];
 extern const char ic_trace_method_revolution_nets[];
 
 /* exact_conic.c: the same for a plane and a quadric primitive meeting in an
- * ellipse, and for two cylinders of equal radius whose axes meet (tried
+ * ellipse, and for two cylinders of equal radius whose axes meet, implicit
+ * or NURBS patches recognised as them (tried
  * after the revolution path, which keeps the coaxial cases); and the same
  * on the two implicit primitives themselves. */
 ic_status ic_trace_exact_conic(ic_trace_result *r, ic_pair *pair,
@@ -227,6 +228,7 @@ ic_status ic_trace_exact_conic_primitives(ic_trace_result *r, const ic_primitive
                                           const ic_trace_options *user_opt, int *done,
                                           ic_error *err);
 extern const char ic_trace_method_conic[];
+extern const char ic_trace_method_conic_nets[];
 
 /* trace.c: adds the curve of the points pts (the result's from now on,
  * freed with it even when this fails) of a shape known; and a special point

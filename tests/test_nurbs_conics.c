@@ -13,6 +13,7 @@
  * ellipse is left to the general path: exactly what it gives. */
 #include <string.h>
 
+#include "same_trace.h"
 #include "elliptic_e.h"
 #include "harness.h"
 #include "nurbs_nets.h"
@@ -666,28 +667,6 @@ static void plane_cone_cases(harness_rng *g)
                  m * t);
         run_case(&c);
     }
-}
-
-/* Both traces the same, point for point, and both the search. */
-static int same_results(const ic_trace_result *a, const ic_trace_result *b)
-{
-    const ic_trace_report *ra = ic_trace_result_report(a), *rb = ic_trace_result_report(b);
-    if (strcmp(ra->method, "search") != 0 || strcmp(rb->method, "search") != 0 ||
-        ra->complete != rb->complete || ra->cells != rb->cells || ra->nfailures != rb->nfailures ||
-        ic_trace_result_num_curves(a) != ic_trace_result_num_curves(b) ||
-        ic_trace_result_num_specials(a) != ic_trace_result_num_specials(b))
-        return 0;
-    for (int k = 0; k < ic_trace_result_num_curves(a); k++) {
-        const ic_trace_curve *ca = ic_trace_result_curve(a, k), *cb = ic_trace_result_curve(b, k);
-        if (ca->npoints != cb->npoints || ca->length != cb->length ||
-            memcmp(ca->points, cb->points, (size_t)ca->npoints * sizeof *ca->points) != 0)
-            return 0;
-    }
-    for (int k = 0; k < ic_trace_result_num_specials(a); k++)
-        if (memcmp(ic_trace_result_special(a, k), ic_trace_result_special(b, k),
-                   sizeof(ic_trace_special)) != 0)
-            return 0;
-    return 1;
 }
 
 static void fall_back(const conic_case *c)

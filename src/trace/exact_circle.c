@@ -155,22 +155,6 @@ static int around_param(const ic_exact_source *src, const sheet_setup *ss, int s
     return 0;
 }
 
-/* On a crossing: the parameter set exactly on its line (a seam: the end
- * of the domain the computed value is nearest, by whole periods). */
-static void snap(const ic_exact_source *src, const ic_exact_knot *k, double *t)
-{
-    double dom[2][2];
-    int periodic[2];
-    ic_surface_get_domain(src->surface, dom, periodic);
-    const double period = dom[k->dir][1] - dom[k->dir][0];
-    if (!periodic[k->dir]) {
-        *t = k->value;
-        return;
-    }
-    const double r = round((*t - k->value) / period);
-    *t = r == 1 && k->seam ? dom[k->dir][1] : k->value + r * period;
-}
-
 /* Every point's parameters on the recognised patches, each checked
  * against its patch: 0, or 1. */
 static int fill_params(ic_trace_point *pts, const double *phi, const int *mark, int np,
@@ -192,7 +176,7 @@ static int fill_params(ic_trace_point *pts, const double *phi, const int *mark, 
             for (int j = mark[i]; j >= 0 && j < nk && k[j].phi - k[mark[i]].phi <= EXACT_SAME_ANGLE;
                  j++)
                 if (k[j].sheet == s) {
-                    snap(&src[s], &k[j], &uv[k[j].dir]);
+                    ic_exact_knot_snap(&src[s], &k[j], &uv[k[j].dir]);
                     pts[i].knot_line |= 1 << s;
                     pts[i].knot_side = 1;
                 }

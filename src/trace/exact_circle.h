@@ -26,6 +26,21 @@ typedef struct {
     double value;
 } ic_exact_knot;
 
+/* A growing list of knot points (exact_knots.c), zeroed to start. */
+typedef struct {
+    ic_exact_knot *m;
+    int n, cap;
+} ic_exact_marks;
+
+/* Appends the point at angle phi taken modulo 2 pi into [0, 2 pi): 0, or -1
+ * out of memory (the list kept). */
+int ic_exact_mark_add(ic_exact_marks *k, double phi, int sheet, int dir, int seam, double value);
+
+/* On crossing k: the parameter *t of its patch (src) set exactly on its
+ * line, by whole periods where the direction is periodic (a seam: the end
+ * of the domain the computed value is nearest, one period on). */
+void ic_exact_knot_snap(const ic_exact_source *src, const ic_exact_knot *k, double *t);
+
 /* The circle's crossings of the knot lines of both sources' patches, in
  * *marks (malloc'ed, *n of them, any order): 0, 1 where they cannot be
  * told (a knot line nearly touching the circle, or a revolved patch the

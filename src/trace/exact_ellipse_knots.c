@@ -15,25 +15,6 @@
 #include <math.h>
 #include <stdlib.h>
 
-typedef struct {
-    ic_exact_knot *m;
-    int n, cap;
-} marks;
-
-static int add(marks *k, double theta, int sheet, int dir, int seam, double value)
-{
-    if (k->n == k->cap) {
-        const int cap = 2 * k->cap + 8;
-        ic_exact_knot *m = realloc(k->m, sizeof *m * (size_t)cap);
-        if (!m)
-            return -1;
-        k->m = m, k->cap = cap;
-    }
-    theta = fmod(theta, 2 * IC_PI);
-    k->m[k->n++] = (ic_exact_knot){theta < 0 ? theta + 2 * IC_PI : theta, sheet, dir, seam, value};
-    return 0;
-}
-
 /* The angles where the plane through o normal to the unit m meets the
  * ellipse: their count (0 or 2) in theta[], or -1 where it nearly touches
  * (|K0| within IC_EXACT_NEAR L of sqrt(K1^2 + K2^2)). */
@@ -66,7 +47,7 @@ static double along(const ic_exact_ellipse *e, double theta, const double o[3], 
 /* The meridian at angle alpha about the revolved net's axis: the one of
  * the plane's two crossings on its side of the axis. 0, 1, -1. */
 static int meridian(const ic_exact_ellipse *e, const ic_net_shape *sh, double alpha, int sheet,
-                    int seam, double value, double L, marks *k)
+                    int seam, double value, double L, ic_exact_marks *k)
 {
     double m[3], r[3], theta[2];
     for (int i = 0; i < 3; i++) {
@@ -78,12 +59,12 @@ static int meridian(const ic_exact_ellipse *e, const ic_net_shape *sh, double al
     const int first = along(e, theta[0], sh->origin, r) > 0;
     if (first == (along(e, theta[1], sh->origin, r) > 0))
         return 1;
-    return add(k, theta[first ? 0 : 1], sheet, sh->around, seam, value);
+    return ic_exact_mark_add(k, theta[first ? 0 : 1], sheet, sh->around, seam, value);
 }
 
 /* The parallel at the height of the profile's knot (tau its position). */
 static int parallel(const ic_exact_ellipse *e, const ic_net_shape *sh, double tau, int sheet,
-                    double value, double L, marks *k)
+                    double value, double L, ic_exact_marks *k)
 {
     double o[3], theta[2];
     ic_axpy3(o, sh->origin, sh->profile.c[1] + tau * sh->profile.d[1], sh->frame[2]);
@@ -91,13 +72,13 @@ static int parallel(const ic_exact_ellipse *e, const ic_net_shape *sh, double ta
     if (n < 0)
         return 1;
     for (int i = 0; i < n; i++)
-        if (add(k, theta[i], sheet, 1 - sh->around, 0, value) != 0)
+        if (ic_exact_mark_add(k, theta[i], sheet, 1 - sh->around, 0, value) != 0)
             return -1;
     return 0;
 }
 
 static int revolved_knots(const ic_exact_ellipse *e, const ic_net_shape *sh, int sheet, double L,
-                          marks *k)
+                          ic_exact_marks *k)
 {
     const ic_net_pieces *pc = &sh->pieces[0], *pr = &sh->pieces[1];
     int st = meridian(e, sh, 0.0, sheet, 1, pc->t[0], L, k); /* the seam */
@@ -113,7 +94,7 @@ static int revolved_knots(const ic_exact_ellipse *e, const ic_net_shape *sh, int
 /* A planar net: the lines f(u) = f(kappa) (g(v) = g(kappa)) of its
  * distinct interior knots. */
 static int planar_knots(const ic_exact_ellipse *e, const ic_net_shape *sh, int sheet, double L,
-                        marks *k)
+                        ic_exact_marks *k)
 {
     for (int d = 0; d < 2; d++) {
         const ic_net_curve *cv = &sh->curve[d];
@@ -131,7 +112,7 @@ static int planar_knots(const ic_exact_ellipse *e, const ic_net_shape *sh, int s
             if (n < 0)
                 return 1;
             for (int j = 0; j < n; j++)
-                if (add(k, theta[j], sheet, d, 0, kn[i]) != 0)
+                if (ic_exact_mark_add(k, theta[j], sheet, d, 0, kn[i]) != 0)
                     return -1;
         }
     }
@@ -141,7 +122,7 @@ static int planar_knots(const ic_exact_ellipse *e, const ic_net_shape *sh, int s
 int ic_exact_ellipse_knots(const ic_exact_ellipse *e, const ic_exact_source src[2], double L,
                            ic_exact_knot **out, int *n)
 {
-    marks k = {NULL, 0, 0};
+    ic_exact_marks k = {NULL, 0, 0};
     int st = 0;
     for (int s = 0; s < 2 && st == 0; s++) {
         const ic_net_shape *sh = src[s].net;

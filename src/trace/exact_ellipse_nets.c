@@ -76,22 +76,6 @@ static int merge(const ic_trace_point *plan_pts, const ic_exact_knot *k, int nk,
     return m + 1;
 }
 
-/* On a crossing: the parameter set exactly on its line, by whole periods
- * (a seam: the end of the domain it is nearest one period on). */
-static void snap(const ic_exact_source *src, const ic_exact_knot *k, double *t)
-{
-    double dom[2][2];
-    int periodic[2];
-    ic_surface_get_domain(src->surface, dom, periodic);
-    const double period = dom[k->dir][1] - dom[k->dir][0];
-    if (!periodic[k->dir]) {
-        *t = k->value;
-        return;
-    }
-    const double r = round((*t - k->value) / period);
-    *t = r == 1 && k->seam ? dom[k->dir][1] : k->value + r * period;
-}
-
 /* Point i's parameters on crossing j's patch set on its line, and checked
  * there against the patch: 0, or 1. */
 static int on_line(ic_trace_point *p, const ic_exact_knot *k, const ic_exact_source src[2],
@@ -99,7 +83,7 @@ static int on_line(ic_trace_point *p, const ic_exact_knot *k, const ic_exact_sou
 {
     const int s = k->sheet;
     double S[3], d[3];
-    snap(&src[s], k, &p->params[s][k->dir]);
+    ic_exact_knot_snap(&src[s], k, &p->params[s][k->dir]);
     p->knot_line |= 1 << s;
     p->knot_side = 1;
     ic_surface_nurbs_point(src[s].surface, p->params[s], S);

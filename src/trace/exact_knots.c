@@ -13,12 +13,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-typedef struct {
-    ic_exact_knot *m;
-    int n, cap;
-} marks;
-
-static int add(marks *k, double phi, int sheet, int dir, int seam, double value)
+int ic_exact_mark_add(ic_exact_marks *k, double phi, int sheet, int dir, int seam, double value)
 {
     if (k->n == k->cap) {
         const int cap = 2 * k->cap + 8;
@@ -32,20 +27,36 @@ static int add(marks *k, double phi, int sheet, int dir, int seam, double value)
     return 0;
 }
 
+void ic_exact_knot_snap(const ic_exact_source *src, const ic_exact_knot *k, double *t)
+{
+    double dom[2][2];
+    int periodic[2];
+    ic_surface_get_domain(src->surface, dom, periodic);
+    const double period = dom[k->dir][1] - dom[k->dir][0];
+    if (!periodic[k->dir]) {
+        *t = k->value;
+        return;
+    }
+    const double r = round((*t - k->value) / period);
+    *t = r == 1 && k->seam ? dom[k->dir][1] : k->value + r * period;
+}
+
 /* A revolved patch: its circle's angle at every interior knot (the ends of
  * its spans among its pieces) and at its seam where it wraps. */
-static int revolved_knots(const ic_exact_source *src, int sheet, double theta0, int way, marks *k)
+static int revolved_knots(const ic_exact_source *src, int sheet, double theta0, int way,
+                          ic_exact_marks *k)
 {
     const ic_net_shape *sh = src->net;
     const ic_net_pieces *pc = &sh->pieces[0];
     double dom[2][2];
     int periodic[2];
     ic_surface_get_domain(src->surface, dom, periodic);
-    if (periodic[sh->around] && add(k, -way * theta0, sheet, sh->around, 1, pc->t[0]) != 0)
+    if (periodic[sh->around] &&
+        ic_exact_mark_add(k, -way * theta0, sheet, sh->around, 1, pc->t[0]) != 0)
         return -1;
     for (int i = 1; i < pc->n; i++)
         if (pc->span[i] != pc->span[i - 1] &&
-            add(k, way * (pc->pos[i] - theta0), sheet, sh->around, 0, pc->t[i]) != 0)
+            ic_exact_mark_add(k, way * (pc->pos[i] - theta0), sheet, sh->around, 0, pc->t[i]) != 0)
             return -1;
     return 0;
 }
@@ -55,7 +66,7 @@ static int revolved_knots(const ic_exact_source *src, int sheet, double theta0, 
  * it: rho^2 - d^2 (d its distance from the centre; the square of half
  * its chord) within (IC_EXACT_NEAR L)^2 of 0. */
 static int planar_knots(const ic_exact_circle *c, const ic_exact_source *src, int sheet, double L,
-                        marks *k)
+                        ic_exact_marks *k)
 {
     const ic_net_shape *sh = src->net;
     for (int d = 0; d < 2; d++) {
@@ -76,7 +87,8 @@ static int planar_knots(const ic_exact_circle *c, const ic_exact_source *src, in
             for (int sg = -1; disc > 0 && sg <= 1; sg += 2) {
                 double r[3];
                 ic_axpy3(r, w, -b + sg * sqrt(disc), Eo);
-                if (add(k, atan2(ic_dot3(r, c->v), ic_dot3(r, c->u)), sheet, d, 0, kn[i]) != 0)
+                if (ic_exact_mark_add(k, atan2(ic_dot3(r, c->v), ic_dot3(r, c->u)), sheet, d, 0,
+                                      kn[i]) != 0)
                     return -1;
             }
         }
@@ -88,7 +100,7 @@ int ic_exact_circle_knots(const ic_exact_circle *c, const ic_exact_source src[2]
                           const double theta0[2], const int way[2], ic_exact_knot **out, int *n,
                           double L)
 {
-    marks k = {NULL, 0, 0};
+    ic_exact_marks k = {NULL, 0, 0};
     int st = 0;
     for (int s = 0; s < 2 && st == 0; s++) {
         if (!src[s].net)

@@ -1,0 +1,83 @@
+#!/usr/bin/env bash
+# Writes every output document of the command on the bundled cases into OUTDIR,
+# one file per case and format, with the STEP and IGES files' time stamps set to
+# a fixed text of the same length (they are the writing time, the only part of
+# an output that is not a function of the input). The cases: every bundled
+# example, every torture case and every NURBS and CAD problem; the formats:
+# trace's json (with and without the exact paths), text, csv, vtk, obj, step and
+# iges, point's json at the first point of each traced curve, and the examples'
+# SVG pictures. tests/test_golden.sh compares their hashes with
+# tests/golden/outputs.sha256, made by this script from the tree of issue 22's
+# start (commit 309689a), so that a change of layout shows itself as a change of
+# no output at all.
+#   capture.sh BUILD_DIR SOURCE_DIR OUTDIR
+set -uo pipefail
+build="$1" src="$2" out="$3"
+ic="$build/intercurve"
+mkdir -p "$out"
+cd "$src" || exit 2
+
+cases() {
+    ls examples/*.json tests/torture/*.json tests/data/nurbs/problem-*.json \
+        tests/data/cad/problem-*.json
+}
+
+# fixed-length time stamps: STEP's FILE_NAME and IGES's global section
+unstamp() {
+    sed -E -e "s/'[0-9]{4}-[0-9]{2}-[0-9]{2}T[0-9]{2}:[0-9]{2}:[0-9]{2}'/'0000-00-00T00:00:00'/" \
+        -e 's/15H[0-9]{8}\.[0-9]{6}/15H00000000.000000/g'
+}
+
+# the first point of each curve of a trace document, as --at X,Y,Z
+first_points() {
+    python3 -c '
+import json, sys
+doc = json.load(open(sys.argv[1]))
+for c in doc.get("curves", []):
+    pts = c.get("points") or []
+    if pts:
+        print(",".join(repr(x) for x in pts[0]["xyz"]))
+' "$1" 2>/dev/null | head -n "$POINTS_PER_CASE"
+}
+
+run() { # name, command...: the output and the exit status, both recorded
+    local name="$1"
+    shift
+    "$@" >"$out/$name" 2>"$out/$name.err"
+    echo "exit $?" >>"$out/$name.err"
+}
+
+# the first curves' points only: a case of thousands of curves would take minutes
+POINTS_PER_CASE=3
+# cases of a gigabyte in every format or 20 s a run: the json only
+HEAVY="tests/torture/eggcrate-k100.json tests/torture/near-spheres-1e-9.json"
+
+for f in $(cases); do
+    key="$(echo "${f%.json}" | tr '/' '_')"
+    if [[ " $HEAVY " == *" $f "* ]]; then
+        "$ic" trace "$f" 2>"$out/$key.trace.json.err" | sha256sum >"$out/$key.trace.json.sha256"
+        continue
+    fi
+    run "$key.trace.json" "$ic" trace "$f"
+    run "$key.noexact.json" "$ic" trace "$f" --no-exact
+    for fmt in text csv vtk obj; do
+        run "$key.trace.$fmt" "$ic" trace "$f" --format "$fmt"
+    done
+    for fmt in step iges; do
+        run "$key.trace.$fmt.raw" "$ic" trace "$f" --format "$fmt"
+        unstamp <"$out/$key.trace.$fmt.raw" >"$out/$key.trace.$fmt"
+        rm -f "$out/$key.trace.$fmt.raw"
+        mv "$out/$key.trace.$fmt.raw.err" "$out/$key.trace.$fmt.err"
+    done
+    i=0
+    for at in $(first_points "$out/$key.trace.json"); do
+        run "$key.point$i.json" "$ic" point "$f" --at "$at"
+        i=$((i + 1))
+    done
+done
+for f in examples/*.json; do
+    key="$(echo "${f%.json}" | tr '/' '_')"
+    "$ic" plot "$f" -o "$out/$key.plot.svg" >/dev/null 2>"$out/$key.plot.err"
+    echo "exit $?" >>"$out/$key.plot.err"
+done
+exit 0

@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# The layout of the code changes no output: every document the command writes on
+# the bundled cases (tests/golden/capture.sh says which) has the hash it had when
+# tests/golden/outputs.sha256 was made. A change that is meant to change an output
+# regenerates the list (tests/golden/capture.sh, then `sha256sum *` in its
+# directory) and says why in its commit.
+#   test_golden.sh BUILD_DIR SOURCE_DIR
+set -uo pipefail
+build="$1" src="$2"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+bash "$src/tests/golden/capture.sh" "$build" "$src" "$tmp/out" || exit 1
+(cd "$tmp/out" && sha256sum -- * | LC_ALL=C sort -k2) >"$tmp/now.sha256"
+LC_ALL=C sort -k2 "$src/tests/golden/outputs.sha256" >"$tmp/then.sha256"
+if ! diff -q "$tmp/then.sha256" "$tmp/now.sha256" >/dev/null; then
+    echo "outputs that differ from tests/golden/outputs.sha256 (< then, > now):"
+    diff "$tmp/then.sha256" "$tmp/now.sha256" | grep '^[<>]' | head -60
+    n="$(diff "$tmp/then.sha256" "$tmp/now.sha256" | grep -c '^>')"
+    echo "golden: $n of $(wc -l <"$tmp/then.sha256") documents differ"
+    exit 1
+fi
+echo "golden: all $(wc -l <"$tmp/now.sha256") documents as before"

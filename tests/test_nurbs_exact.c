@@ -16,7 +16,7 @@
 #include "same_trace.h"
 #include "harness.h"
 #include "nurbs_nets.h"
-#include "trace/exact_source.h"
+#include "trace/exact/exact_source.h"
 
 /* relative to the problem's size L: the exact path's points, centres,
  * contact points and lengths against the closed forms here: a few roundings

@@ -7,24 +7,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-void ic_trace_points_reverse(ic_trace_point *p, int n)
-{
-    if (!p || n < 1)
-        return;
-    const double L = p[n - 1].s + p[0].s;
-    for (int i = 0; i < n / 2; i++) {
-        const ic_trace_point tmp = p[i];
-        p[i] = p[n - 1 - i];
-        p[n - 1 - i] = tmp;
-    }
-    for (int i = 0; i < n; i++) {
-        ic_scale3(p[i].t, p[i].t, -1.0);
-        ic_scale3(p[i].b, p[i].b, -1.0);
-        p[i].s = L - p[i].s;
-        p[i].knot_side = -p[i].knot_side;
-    }
-}
-
 /* Outgoing direction at end e of curve c (into the curve): +t at its start,
  * -t at its end; *p the end point. */
 static void outgoing(const ic_trace_curve *c, int e, double *o, const ic_trace_point **p)

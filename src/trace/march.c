@@ -4,7 +4,7 @@
  * height, events.
  */
 #include "common/args.h"
-#include "trace_constants.h"
+#include "core/trace_constants.h"
 #include "trace_internal.h"
 #include "common/vec3.h"
 #include "local/local_internal.h"
@@ -38,40 +38,6 @@ const char *ic_trace_event_name(ic_trace_event ev)
     static const char *const names[] = {"continue",   "closed", "left-domain", "left-box",
                                         "tangential", "budget", "failed"};
     return ev >= IC_TRACE_CONTINUE && ev <= IC_TRACE_FAILED ? names[ev] : "unknown";
-}
-
-void ic_trace_defaults(ic_trace_options *opt)
-{
-    if (!opt)
-        return;
-    memset(opt, 0, sizeof *opt);
-    /* fractions of the problem's size L (ic_trace_problem_scale): about the
-     * absolute values of earlier versions for the bundled examples, whose L
-     * is 3 to 14 */
-    opt->tol = 1e-11;
-    opt->chord = 1e-4;
-    opt->max_step = 0.05;
-    opt->min_step = 1e-13;
-    opt->order = 6;
-    opt->max_points = 100000;
-    opt->depth = 6;
-    opt->shape_tol = 1e-6;
-    opt->exact_paths = 1;
-    opt->threads = 0; /* all the cores */
-    ic_local_defaults(&opt->local);
-}
-
-ic_trace_options ic_trace_absolute_options(const ic_trace_options *opt, double L)
-{
-    ic_trace_options a = *opt;
-    a.tol *= L;
-    a.chord *= L;
-    a.max_step *= L;
-    a.min_step *= L;
-    a.local.scale = L;
-    a.local.point_tol = IC_TRACE_POINT_TOL * L;
-    a.local.kappa_zero = opt->local.kappa_zero / L;
-    return a;
 }
 
 ic_status ic_tracer_new(ic_tracer **out, ic_pair *pair, const ic_trace_options *opt, ic_error *err)

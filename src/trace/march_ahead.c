@@ -11,7 +11,7 @@
  * when most were for nothing the trace marches alone again.
  */
 #include "march_ahead.h"
-#include "trace_constants.h"
+#include "core/trace_constants.h"
 #include "workers.h"
 #include "common/vec3.h"
 #include "local/local_internal.h"

@@ -14,7 +14,7 @@
  * report's failures with its box and reason, and the result is not complete.
  */
 #define _POSIX_C_SOURCE 200809L
-#include "trace_constants.h"
+#include "core/trace_constants.h"
 #include "trace_internal.h"
 #include "workers.h"
 #include "common/vec3.h"
@@ -24,39 +24,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-
-double ic_trace_now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-int ic_trace_out_of_time(ic_trace_budget *b)
-{
-    if (b->deadline > 0 && ic_trace_now() > b->deadline) {
-        b->stopped = IC_TRACE_STOP_TIME;
-        return 1;
-    }
-    return 0;
-}
-
-void ic_trace_progress(ic_trace_result *r, const ic_trace_options *opt, const char *stage,
-                       long done, long total)
-{
-    /* seconds between two reports: often enough to show life, rarely
-     * enough to cost nothing */
-    const double EVERY = 0.5;
-    if (!opt->progress)
-        return;
-    const double now = ic_trace_now();
-    if (r->last_progress == 0)
-        r->last_progress = now;
-    if (now - r->last_progress < EVERY)
-        return;
-    r->last_progress = now;
-    opt->progress(opt->progress_user, stage, done, total);
-}
 
 /* A located singular point, a traced tangential curve, or a degenerate
  * point of a parametrization (a pole) that a traced curve passes, within

@@ -5,7 +5,8 @@
  * (join.c) and the shapes (shape.c) have their own files.
  */
 #include "common/args.h"
-#include "trace_constants.h"
+#include "core/trace_constants.h"
+#include "exact/exact.h"
 #include "trace_internal.h"
 #include "march_ahead.h"
 #include "workers.h"
@@ -19,123 +20,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-void ic_trace_failure(ic_trace_report *rep, const char *fmt, ...)
-{
-    if (rep->nfailures >= IC_TRACE_MAX_FAILURES)
-        return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(rep->failures[rep->nfailures++], sizeof rep->failures[0], fmt, ap);
-    va_end(ap);
-}
-
-static double point_segment(const double *p, const double *a, const double *b)
-{
-    double ab[3], ap[3];
-    ic_axpy3(ab, b, -1.0, a);
-    ic_axpy3(ap, p, -1.0, a);
-    const double l2 = ic_dot3(ab, ab);
-    double t = l2 > 0 ? ic_dot3(ap, ab) / l2 : 0.0;
-    t = t < 0 ? 0 : t > 1 ? 1 : t;
-    double q[3];
-    ic_axpy3(q, a, t, ab);
-    ic_axpy3(q, p, -1.0, q);
-    return ic_norm3(q);
-}
-
-/* Distance from x to the box around points [k0, k1] (0 inside). */
-static double box_distance(const ic_trace_point *pts, int k0, int k1, const double *x)
-{
-    double d2 = 0.0;
-    for (int i = 0; i < 3; i++) {
-        double lo = pts[k0].xyz[i], hi = lo;
-        for (int k = k0 + 1; k <= k1; k++) {
-            const double v = pts[k].xyz[i];
-            lo = v < lo ? v : lo;
-            hi = v > hi ? v : hi;
-        }
-        const double e = x[i] < lo ? lo - x[i] : x[i] > hi ? x[i] - hi : 0.0;
-        d2 += e * e;
-    }
-    return sqrt(d2);
-}
-
-/* How far the curve between two traced points may stray from their chord:
- * the sagitta kappa h^2 / 8 of an arc of curvature kappa over a chord h,
- * doubled for the curvature's change along the step. */
-double ic_trace_segment_sagitta(const ic_trace_point *p, const ic_trace_point *q)
-{
-    double d[3];
-    ic_axpy3(d, q->xyz, -1.0, p->xyz);
-    const double h2 = ic_dot3(d, d), k = fmax(fabs(p->kappa), fabs(q->kappa));
-    const double s = 0.25 * k * h2;
-    return isfinite(s) ? s : 0.5 * sqrt(h2);
-}
-
-double ic_trace_segment_distance(const ic_trace_point *p, const ic_trace_point *q, const double *x)
-{
-    return fmax(0.0, point_segment(x, p->xyz, q->xyz) - ic_trace_segment_sagitta(p, q));
-}
-
-double ic_trace_polyline_distance(const ic_trace_point *pts, int np, const double *x, double bound)
-{
-    if (np == 1)
-        return point_segment(x, pts[0].xyz, pts[0].xyz);
-    /* the distance to the curve itself, not to its polyline: each segment's
-     * distance less the segment's sagitta. Chunks of 16 segments whose
-     * bounding box is farther than the bound and their largest sagitta are
-     * skipped, and the first segment within it ends the search (the coverage
-     * checks call this for every cell and candidate against every curve) */
-    enum { CHUNK = 16 };
-    double best = INFINITY;
-    for (int k0 = 0; k0 + 1 < np; k0 += CHUNK) {
-        const int k1 = k0 + CHUNK < np - 1 ? k0 + CHUNK : np - 1;
-        double sag[CHUNK], most = 0.0;
-        for (int k = k0; k < k1; k++)
-            most = fmax(most, sag[k - k0] = ic_trace_segment_sagitta(&pts[k], &pts[k + 1]));
-        if (box_distance(pts, k0, k1, x) - most > bound)
-            continue;
-        for (int k = k0; k < k1; k++) {
-            const double d = fmax(0.0, point_segment(x, pts[k].xyz, pts[k + 1].xyz) - sag[k - k0]);
-            if (d <= bound)
-                return d;
-            best = d < best ? d : best;
-        }
-    }
-    return best;
-}
-
-void ic_trace_curve_box(const ic_trace_point *pts, int np, double pad, double *lo, double *hi)
-{
-    double sag = 0.0;
-    for (int k = 0; k + 1 < np; k++)
-        sag = fmax(sag, ic_trace_segment_sagitta(&pts[k], &pts[k + 1]));
-    for (int i = 0; i < 3; i++)
-        lo[i] = hi[i] = pts[0].xyz[i];
-    for (int k = 1; k < np; k++)
-        for (int i = 0; i < 3; i++)
-            lo[i] = fmin(lo[i], pts[k].xyz[i]), hi[i] = fmax(hi[i], pts[k].xyz[i]);
-    for (int i = 0; i < 3; i++)
-        lo[i] -= sag + pad, hi[i] += sag + pad;
-}
-
-int ic_trace_in_box(const double *x, const double *lo, const double *hi)
-{
-    return x[0] >= lo[0] && x[0] <= hi[0] && x[1] >= lo[1] && x[1] <= hi[1] && x[2] >= lo[2] &&
-           x[2] <= hi[2];
-}
-
-void ic_trace_cover(ic_candidate *c, int n, const ic_trace_point *pts, int np, double radius)
-{
-    /* the curve's box first: a batch of candidates meets every curve */
-    double lo[3], hi[3];
-    ic_trace_curve_box(pts, np, radius, lo, hi);
-    for (int i = 0; i < n; i++)
-        if (!c[i].covered && ic_trace_in_box(c[i].xyz, lo, hi) &&
-            ic_trace_polyline_distance(pts, np, c[i].xyz, radius) <= radius)
-            c[i].covered = 1;
-}
-
 /* Marks the candidates within radius of the point x as covered. */
 static void cover_point(ic_candidate *c, int n, const double *x, double radius)
 {
@@ -143,175 +27,6 @@ static void cover_point(ic_candidate *c, int n, const double *x, double radius)
     memset(&one, 0, sizeof one);
     memcpy(one.xyz, x, sizeof one.xyz);
     ic_trace_cover(c, n, &one, 1, radius);
-}
-
-static int is_contact(ic_point_type t)
-{
-    return t == IC_POINT_ISOLATED_CONTACT || t == IC_POINT_HIGHER_ORDER_CONTACT;
-}
-
-/* An isolated contact is located by Gauss-Newton on a root of multiplicity
- * m - 1 (m its order): where its formulas cancel, only to the radius where
- * the residuals sink into rounding (ic_local_tangential_place). The point is
- * classified again knowing that radius (a quadratic part that a shift this
- * small could make is no contact term) and, beyond IC_TRACE_PLACE_REL, it is
- * approximate and the report says so. */
-static void check_contact_place(ic_trace_result *r, ic_trace_special *s, ic_trace_located *loc,
-                                ic_pair *pair, ic_local_options *o)
-{
-    double radius;
-    if (!is_contact(s->type) || ic_local_tangential_place(pair, &loc->pt, o, &radius, NULL) != IC_OK)
-        return;
-    if (radius > o->place_tol) {
-        o->place_tol = radius;
-        ic_local_result res;
-        if (ic_local_apparatus(pair, &res, &loc->pt, 3, IC_METHOD_AUTO, o, NULL) == IC_OK) {
-            loc->res = res;
-            s->type = res.type;
-            s->nbranches = res.nbranches;
-        }
-    }
-    if (radius <= IC_TRACE_PLACE_REL * r->scale)
-        return;
-    s->approximate = 1;
-    ic_trace_failure(&r->report,
-                     "a contact point near (%.6g, %.6g, %.6g) is located only to about %.2g (a "
-                     "contact of high order, a multiple root): its place and type are approximate",
-                     s->xyz[0], s->xyz[1], s->xyz[2], radius);
-}
-
-/* Room for one more special point (and its located record): 0, or -1 out
- * of memory. */
-static int grow_specials(ic_trace_result *r)
-{
-    if (r->nspecials < r->caps)
-        return 0;
-    const int cap = r->caps ? 2 * r->caps : 8;
-    ic_trace_special *p = realloc(r->specials, (size_t)cap * sizeof *p);
-    if (p)
-        r->specials = p;
-    ic_trace_located *q = realloc(r->located, (size_t)cap * sizeof *q);
-    if (q)
-        r->located = q;
-    if (!p || !q)
-        return -1;
-    r->caps = cap;
-    return 0;
-}
-
-ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local_point *pt,
-                               int approximate, const ic_trace_options *opt, int *index)
-{
-    int dummy;
-    if (!index)
-        index = &dummy;
-    for (int i = 0; i < r->nspecials; i++) {
-        double d[3];
-        ic_axpy3(d, r->specials[i].xyz, -1.0, pt->xyz);
-        const double same = (r->specials[i].approximate || approximate ? IC_TRACE_SAME_APPROX
-                                                                        : IC_TRACE_SAME_EXACT) *
-                            r->scale;
-        if (ic_norm3(d) < same) { /* the same point met from another curve */
-            *index = i;
-            return IC_OK;
-        }
-    }
-    *index = r->nspecials;
-    if (grow_specials(r) != 0)
-        return IC_ERR_NOMEM;
-    ic_trace_located *loc = &r->located[r->nspecials];
-    loc->pt = *pt;
-    ic_trace_special *s = &r->specials[r->nspecials++];
-    memcpy(s->xyz, pt->xyz, sizeof s->xyz);
-    s->approximate = approximate;
-    /* classify: at a curve end the point is just off the tangential point,
-     * so the threshold is relaxed there (docs/tracing.md) */
-    ic_local_options o = opt->local;
-    if (approximate)
-        o.tangential_angle = 1e-3;
-    else /* located to a few units in the last place of L */
-        o.place_tol = IC_TRACE_PLACE_ULPS * DBL_EPSILON * r->scale;
-    /* order 12: the branches' series also serve the curve points nearby
-     * (ic_trace_refit_near_special) */
-    loc->res_ok = ic_local_apparatus(pair, &loc->res, pt, 12, IC_METHOD_AUTO, &o, NULL) == IC_OK;
-    /* a contact of high order has fewer valid orders: its branches to 3 */
-    if (!loc->res_ok)
-        loc->res_ok = ic_local_apparatus(pair, &loc->res, pt, 3, IC_METHOD_AUTO, &o, NULL) == IC_OK;
-    if (loc->res_ok) {
-        s->type = loc->res.type;
-        s->nbranches = loc->res.nbranches;
-        if (!approximate)
-            check_contact_place(r, s, loc, pair, &o);
-    } else if (ic_pairing_point_may_degenerate(ic_pair_pairing(pair), pt->xyz, pt->params,
-                                               IC_TRACE_SINGULAR_CLEARANCE)) {
-        /* where the parametrization degenerates (R_u x R_v = 0: the pinch
-         * point of Whitney's umbrella) the surface itself is singular; its
-         * exact place is not located */
-        s->type = IC_POINT_SURFACE_SINGULAR;
-        s->nbranches = 0;
-        s->approximate = 1;
-    } else { /* not classified: kept as an approximate place, and said */
-        s->type = IC_POINT_TANGENTIAL;
-        s->nbranches = 0;
-        s->approximate = 1;
-        ic_trace_failure(&r->report,
-                         "a tangential point near (%.6g, %.6g, %.6g) could not be classified", s->xyz[0],
-                         s->xyz[1], s->xyz[2]);
-    }
-    return IC_OK;
-}
-
-int ic_trace_add_exact_special(ic_trace_result *r, const double *xyz, ic_point_type type)
-{
-    if (grow_specials(r) != 0)
-        return -1;
-    ic_trace_located *loc = &r->located[r->nspecials];
-    memset(loc, 0, sizeof *loc);
-    memcpy(loc->pt.xyz, xyz, sizeof loc->pt.xyz);
-    ic_trace_special *s = &r->specials[r->nspecials++];
-    memset(s, 0, sizeof *s);
-    memcpy(s->xyz, xyz, sizeof s->xyz);
-    s->type = type;
-    return 0;
-}
-
-ic_status ic_trace_add_shaped_curve(ic_trace_result *r, ic_trace_point *pts, int n, int closed,
-                                    ic_trace_event e0, ic_trace_event e1, double shape_tol,
-                                    ic_shape shape, int at0, int at1, ic_error *err)
-{
-    if (r->ncurves == r->capc) {
-        const int cap = r->capc ? 2 * r->capc : 8;
-        ic_trace_curve *c = realloc(r->curves, (size_t)cap * sizeof *c);
-        ic_trace_point **s = realloc(r->storage, (size_t)cap * sizeof *s);
-        int(*at)[2] = realloc(r->at, (size_t)cap * sizeof *at);
-        if (c)
-            r->curves = c;
-        if (s)
-            r->storage = s;
-        if (at)
-            r->at = at;
-        if (!c || !s || !at) { /* (tests/test_nomem.c, "trace, mixed": pts leaked) */
-            free(pts);
-            return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory adding a curve");
-        }
-        r->capc = cap;
-    }
-    r->at[r->ncurves][0] = at0;
-    r->at[r->ncurves][1] = at1;
-    ic_trace_curve *c = &r->curves[r->ncurves];
-    r->storage[r->ncurves++] = pts;
-    memset(c, 0, sizeof *c);
-    c->closed = closed;
-    c->npoints = n;
-    c->points = pts;
-    c->length = pts[n - 1].s - pts[0].s;
-    c->ends[0] = e0;
-    c->ends[1] = e1;
-    c->shape_tol = shape_tol;
-    c->shape = shape;
-    if (r->index && ic_curve_index_add(r->index, r->ncurves - 1, pts, n) != 0)
-        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory indexing a curve");
-    return IC_OK;
 }
 
 /* Adds the curve of the points pts (the result's from now on, freed with it
@@ -374,18 +89,10 @@ static int end_at_surface_singular(ic_trace_result *r, ic_trace_point *pts, int 
             ic_norm3(d) <= IC_TRACE_ON_CURVE * r->scale)
             index = i;
     }
-    if (index < 0) {
-        if (grow_specials(r) != 0)
+    if (index < 0) { /* a point known exactly, with no apparatus */
+        if (ic_trace_add_exact_special(r, X, IC_POINT_SURFACE_SINGULAR) != 0)
             return -1;
-        index = r->nspecials++;
-        ic_trace_special *s = &r->specials[index];
-        memset(s, 0, sizeof *s);
-        memcpy(s->xyz, X, sizeof s->xyz);
-        s->type = IC_POINT_SURFACE_SINGULAR;
-        ic_trace_located *loc = &r->located[index];
-        memset(loc, 0, sizeof *loc);
-        memcpy(loc->pt.xyz, X, sizeof loc->pt.xyz);
-        loc->res_ok = 0;
+        index = r->nspecials - 1;
     }
     /* the points nearer than IC_TRACE_SINGULAR_CLEARANCE L carry the
      * apparatus of a vanishing normal (errors about eps (L/d)^2) and go */
@@ -638,32 +345,6 @@ static void list_deferred(ic_trace_result *r, double radius)
     }
 }
 
-int ic_trace_add_coincident(ic_trace_result *r, const double *x)
-{
-    if (r->ncoincident == r->capk) {
-        const int cap = r->capk ? 2 * r->capk : 16;
-        double(*p)[3] = realloc(r->coincident, (size_t)cap * sizeof *p);
-        if (!p)
-            return -1;
-        r->coincident = p;
-        r->capk = cap;
-    }
-    memcpy(r->coincident[r->ncoincident++], x, 3 * sizeof *x);
-    return 0;
-}
-
-int ic_trace_in_coincident(const ic_trace_result *r, const double *x)
-{
-    const double reach = IC_TRACE_COINCIDENT_REACH * r->scale;
-    for (int k = 0; k < r->ncoincident; k++) {
-        double d[3];
-        ic_axpy3(d, r->coincident[k], -1.0, x);
-        if (ic_norm3(d) <= reach)
-            return 1;
-    }
-    return 0;
-}
-
 /* Whether x lies within gap of a curve end that left a parameter domain
  * (at a pole of a parametrization, say): the joining bridges that gap
  * (ic_trace_join_curves, max_gap), and a curve started there would be a
@@ -879,43 +560,13 @@ static void set_complete(ic_trace_result *r)
                          rep->undecided_loop_cells == 0 && rep->coincident_cells == 0;
 }
 
-/* The options ic_trace accepts: IC_OK, or IC_ERR_INVALID saying which. */
-static ic_status check_options(const ic_trace_options *o, ic_error *err)
-{
-    if (o->depth < 1 || o->depth > IC_TRACE_MAX_DEPTH)
-        return ic_error_set(err, IC_ERR_INVALID, 0, "trace: depth %d is not in 1..%d", o->depth,
-                            IC_TRACE_MAX_DEPTH);
-    if (o->order < 3 || o->order > 12 || o->max_points < 2)
-        return ic_error_set(err, IC_ERR_INVALID, 0,
-                            "trace: order %d is not in 3..12, or max_points %d below 2", o->order,
-                            o->max_points);
-    const double rel[4] = {o->tol, o->chord, o->max_step, o->min_step};
-    for (int k = 0; k < 4; k++)
-        if (!(rel[k] > 0) || !isfinite(rel[k]))
-            return ic_error_set(err, IC_ERR_INVALID, 0,
-                                "trace: tol, chord, max_step and min_step must be positive and "
-                                "finite");
-    if (o->threads < 0 || o->threads > IC_TRACE_MAX_THREADS)
-        return ic_error_set(err, IC_ERR_INVALID, 0, "trace: threads %d is not in 0..%d",
-                            o->threads, IC_TRACE_MAX_THREADS);
-    if (!(o->time_limit >= 0) || !(o->shape_tol > 0))
-        return ic_error_set(err, IC_ERR_INVALID, 0,
-                            "trace: time_limit must be 0 or positive, shape_tol positive");
-    for (int k = 0; o->has_box && k < 3; k++)
-        if (!isfinite(o->box[k][0]) || !isfinite(o->box[k][1]) || !(o->box[k][1] > o->box[k][0]))
-            return ic_error_set(err, IC_ERR_INVALID, 0,
-                                "trace: box[%d] = [%g, %g] is not a finite, increasing interval",
-                                k, o->box[k][0], o->box[k][1]);
-    return IC_OK;
-}
-
 static ic_status trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options *user_opt,
                        ic_error *err)
 {
     if (!out || !pair || !user_opt)
         return ic_error_set(err, IC_ERR_INVALID, 0, "ic_trace needs a result, a pair and options");
     *out = NULL;
-    ic_status valid = check_options(user_opt, err);
+    ic_status valid = ic_trace_check_options(user_opt, err);
     if (valid != IC_OK)
         return valid;
     ic_trace_result *r = calloc(1, sizeof *r);
@@ -928,9 +579,7 @@ static ic_status trace(ic_trace_result **out, ic_pair *pair, const ic_trace_opti
     const ic_trace_options *opt = &eff;
     r->report.method = ic_trace_method_search;
     int exact = 0;
-    ic_status st = ic_trace_exact_revolution(r, pair, user_opt, &exact, err);
-    if (st == IC_OK && !exact)
-        st = ic_trace_exact_conic(r, pair, user_opt, &exact, err);
+    ic_status st = ic_trace_exact(r, pair, user_opt, &exact, err);
     if (st != IC_OK || exact) {
         if (st != IC_OK)
             ic_trace_result_free(r);
@@ -1011,73 +660,6 @@ static ic_status trace(ic_trace_result **out, ic_pair *pair, const ic_trace_opti
     }
     *out = r;
     return IC_OK;
-}
-
-void ic_trace_result_free(ic_trace_result *r)
-{
-    if (!r)
-        return;
-    for (int i = 0; i < r->ncurves; i++)
-        free(r->storage[i]);
-    free(r->storage);
-    free(r->curves);
-    free(r->at);
-    free(r->specials);
-    free(r->located);
-    free(r->deferred);
-    free(r->coincident);
-    ic_curve_index_free(r->index);
-    free(r->deferred_why);
-    for (int i = 0; r->fits && i < r->ncurves; i++)
-        ic_curve_fit_free(r->fits[i]);
-    free(r->fits);
-    ic_trace_workers_free(r->workers);
-    free(r);
-}
-
-ic_status ic_trace_fit(ic_trace_result *r, ic_pair *pair, double fit_tol, ic_error *err)
-{
-    IC_ARG_NOT_NULL(r, "res");
-    IC_ARG_NOT_NULL(pair, "pair");
-    if (!(fit_tol > 0) || !isfinite(fit_tol))
-        return ic_error_set(err, IC_ERR_INVALID, 0, "ic_trace_fit: a result, its pair and a "
-                                                    "positive tolerance");
-    const double tol = fit_tol * r->scale;
-    if (!r->fits && r->ncurves > 0 && !(r->fits = calloc((size_t)r->ncurves, sizeof *r->fits)))
-        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory fitting curves");
-    r->report.fit_tol = tol;
-    r->report.fit_error = 0;
-    for (int i = 0; i < r->ncurves; i++) {
-        ic_curve_fit_free(r->fits[i]);
-        r->fits[i] = NULL;
-        ic_error e2;
-        const ic_status st = ic_curve_fit_new(&r->fits[i], pair, &r->curves[i], tol, &e2);
-        if (st == IC_ERR_NOMEM)
-            return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory fitting curves");
-        if (st == IC_OK)
-            r->report.fit_error = fmax(r->report.fit_error, r->fits[i]->fit_error);
-    }
-    return IC_OK;
-}
-
-const ic_curve_fit *ic_trace_result_fit(const ic_trace_result *r, int i)
-{
-    return r && r->fits && i >= 0 && i < r->ncurves ? r->fits[i] : NULL;
-}
-
-int ic_trace_result_num_curves(const ic_trace_result *r) { return r ? r->ncurves : 0; }
-const ic_trace_curve *ic_trace_result_curve(const ic_trace_result *r, int i)
-{
-    return r && i >= 0 && i < r->ncurves ? &r->curves[i] : NULL;
-}
-int ic_trace_result_num_specials(const ic_trace_result *r) { return r ? r->nspecials : 0; }
-const ic_trace_special *ic_trace_result_special(const ic_trace_result *r, int i)
-{
-    return r && i >= 0 && i < r->nspecials ? &r->specials[i] : NULL;
-}
-const ic_trace_report *ic_trace_result_report(const ic_trace_result *r)
-{
-    return r ? &r->report : NULL;
 }
 
 /* Out of memory ends the trace, wherever it struck: the searches and the

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The constants' mutation study (issue 10, item 4; docs/testing.md, "Constants
-# pinned"): every tracer constant of the register (src/trace/trace_constants.h)
+# pinned"): every tracer constant of the register (src/trace/core/trace_constants.h)
 # and of the tangential locator (LOCATE_* in src/local/locate_tangential.c,
 # PLACE_* in src/local/tangential_place.c) is built once multiplied by 10 and
 # once divided by 10, and the trace tests are run against each build. A
@@ -42,7 +42,7 @@ DEFAULT_TESTS="trust torture contact_place trace trace_robust trace_examples loo
 [ -f "$TREE/tests/test_constants.c" ] && DEFAULT_TESTS="$DEFAULT_TESTS constants"
 TESTS=${TESTS:-$DEFAULT_TESTS}
 
-H=src/trace/trace_constants.h
+H=src/trace/core/trace_constants.h
 LT=src/local/locate_tangential.c
 TP=src/local/tangential_place.c
 # file  constant  value x10  value /10

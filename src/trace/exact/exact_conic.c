@@ -15,9 +15,11 @@
  */
 #include "exact_common.h"
 #include "exact_conic.h"
+#include "exact_paths.h"
 #include "exact_ellipse_nets.h"
 #include "exact_profile.h"
 #include "surface/surface_internal.h"
+#include "trace/core/options.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -6,7 +6,9 @@
  * sagitta, touches; a query visits the cells its ball touches, or, when
  * that ball is too large for the grid, falls back to every curve.
  */
-#include "trace_internal.h"
+#include "result.h"
+#include "curve_index.h"
+#include "polyline.h"
 
 #include <math.h>
 #include <stdlib.h>

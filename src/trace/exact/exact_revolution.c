@@ -17,7 +17,8 @@
 #include "exact_common.h"
 #include "exact_profile.h"
 #include "exact_source.h"
-#include "trace_internal.h"
+#include "exact_paths.h"
+#include "trace/core/options.h"
 #include "common/mathconst.h"
 #include "common/vec3.h"
 
@@ -25,9 +26,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The report's method (ic_trace_report.method): the search's, and this
- * file's. */
-const char ic_trace_method_search[] = "search";
 const char ic_trace_method_revolution[] = "closed form: coaxial surfaces of revolution";
 const char ic_trace_method_revolution_nets[] =
     "closed form: NURBS nets recognised as coaxial surfaces of revolution";

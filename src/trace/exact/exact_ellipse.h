@@ -3,7 +3,7 @@
 #ifndef IC_TRACE_EXACT_ELLIPSE_H
 #define IC_TRACE_EXACT_ELLIPSE_H
 
-#include "trace_internal.h"
+#include "trace/core/result.h"
 
 #include <math.h>
 

@@ -221,6 +221,16 @@ typedef struct {
      *  "Exact paths": nothing was
      *  searched, the cell counts are 0, complete is 1) */
     const char *method;
+    /** length: the problem's size L0, the diagonal of the region searched
+     *  (docs/tracing.md, "Scale"): the first search's lengths are fractions
+     *  of it */
+    double search_scale;
+    /** length: the size L1 of what the first search found (the diagonal of
+     *  its start points' and open cells' box, between 1e-3 L0 and L0), or on
+     *  an exact path of what the closed form found: the marching's, the
+     *  refinement's, the singular points' and the fit's lengths (tol, chord,
+     *  the steps, fit_tol) are fractions of it */
+    double scale;
 } ic_trace_report;
 
 typedef struct ic_trace_result ic_trace_result;

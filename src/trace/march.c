@@ -327,12 +327,19 @@ static double step_arc(const ic_tracer *tr, double h, const double *X, const dou
     return isfinite(along) ? h + along : h;
 }
 
+/* The largest correction of a predicted point accepted in a step of length
+ * h (IC_TRACE_CORRECTION_TOLS, IC_TRACE_CORRECTION_OF_STEP). */
+static double max_correction(const ic_tracer *tr, double h)
+{
+    return fmax(IC_TRACE_CORRECTION_TOLS * tr->opt.tol, IC_TRACE_CORRECTION_OF_STEP * h);
+}
+
 static int corrected(const ic_tracer *tr, double h, ic_local_point *next, double *X)
 {
     double params[2][2];
     predict(tr, h, X, params);
     if (tr->tcurve)
-        return ic_tcurve_correct(tr->pair, tr->par, X, params, fmax(1e3 * tr->opt.tol, 1e-3 * h),
+        return ic_tcurve_correct(tr->pair, tr->par, X, params, max_correction(tr, h),
                                  &tr->opt.local, next) == IC_OK;
     return ic_local_locate_guess(tr->pair, next, X, params, &tr->opt.local, NULL) == IC_OK;
 }
@@ -690,9 +697,10 @@ static ic_status step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
     }
     double h = step_length(tr);
     int near_tangential = 0;
-    for (int attempt = 0; attempt < 60; attempt++, h *= 0.5) {
+    for (int attempt = 0; attempt < IC_TRACE_STEP_HALVINGS; attempt++, h *= 0.5) {
         if (h < tr->opt.min_step ||
-            (near_tangential && h < 1e-10 * (tr->opt.local.scale + ic_norm3(tr->cur.xyz))))
+            (near_tangential &&
+             h < IC_TRACE_TANGENTIAL_MIN_STEP * (tr->opt.local.scale + ic_norm3(tr->cur.xyz))))
             break;
         double X[3];
         ic_local_point next;
@@ -704,7 +712,7 @@ static ic_status step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
         march_t(tr, &tr->res, t);
         ic_axpy3(d, next.xyz, -1.0, tr->cur.xyz);
         ic_axpy3(c, next.xyz, -1.0, X);
-        if (ic_dot3(d, t) <= 0.5 * h || ic_norm3(c) > fmax(1e3 * tr->opt.tol, 1e-3 * h))
+        if (ic_dot3(d, t) <= IC_TRACE_STEP_ADVANCE * h || ic_norm3(c) > max_correction(tr, h))
             continue;
         double hs;
         if (closes(tr, next.xyz, h, &hs))

@@ -73,10 +73,12 @@ ic_search_part *ic_search_part_take_child(ic_search_part *p, int i);
 void ic_search_part_free(ic_search_part *p);
 
 /* Traces a curve from every start candidate that no curve traced so far
- * covers (trace.c). */
+ * covers (candidates.c); and, at the end, lists as failures the deferred
+ * candidates that nothing traced passes within radius of. */
 ic_status ic_trace_from_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
                                    ic_candidate *cand, int nc, const ic_trace_options *opt,
                                    ic_error *err);
+void ic_trace_list_deferred(ic_trace_result *r, double radius);
 
 /* resolve.c: every open cell refined until decided or out of levels or
  * budget (*cells is taken and replaced by the cells left open); then the
@@ -103,7 +105,8 @@ int ic_trace_locate_surface_singular(ic_pair *pair, const double *near, double L
  * (singular.c). */
 int ic_trace_point_near_found(const ic_trace_result *r, const double *x, double bound);
 
-/* Traces the curve through pt in both directions into a new curve of r. */
+/* Traces the curve through pt in both directions into a new curve of r
+ * (curve_ends.c). */
 ic_status ic_trace_both_ways(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
                              const ic_local_point *pt, const ic_trace_options *opt,
                              ic_trace_point **pts_out, int *n_out, ic_error *err);
@@ -133,7 +136,7 @@ ic_status ic_trace_tangential_in_cell(ic_trace_result *r, ic_tracer *tr, ic_pair
 /* Curve points just before a located singular point pts[n] (the curve's
  * end, continued by branch br with orientation sg) where the normals are
  * nearly parallel: their t, n, b, kappa and tau are recomputed from the
- * branch's Taylor series (singular.c). */
+ * branch's Taylor series (refit.c). */
 void ic_trace_refit_near_special(ic_trace_point *pts, int n, const ic_branch *br, double sg);
 
 #endif

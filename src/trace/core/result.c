@@ -107,7 +107,7 @@ ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local
      * so the threshold is relaxed there (docs/tracing.md) */
     ic_local_options o = opt->local;
     if (approximate)
-        o.tangential_angle = 1e-3;
+        o.tangential_angle = IC_TRACE_APPROX_TANGENTIAL_ANGLE;
     else /* located to a few units in the last place of L */
         o.place_tol = IC_TRACE_PLACE_ULPS * DBL_EPSILON * r->scale;
     /* order 12: the branches' series also serve the curve points nearby

@@ -152,4 +152,57 @@
 #define IC_TRACE_END_REACH 1e-4
 #define IC_TRACE_DEGENERATE_REACH 5e-3
 
+/* relative (of L): the grid cell of the curve index (curve_index.c), a
+ * spatial hash of the traced segments. Only speed hangs on it: where the
+ * index cannot answer from its cells, ic_curve_index_near says so (-1) and
+ * every curve is scanned, so any cell size gives the same answers.
+ * Pinned: PINNED_INDEX_CELL. */
+#define IC_TRACE_INDEX_CELL (1.0 / 128)
+
+/* chords (of the absolute chord-height bound, opt.chord): the least gap
+ * the joining bridges where two curve ends meet at a degenerate point of a
+ * parametrization (a sphere patch's pole: both ends left the domain there);
+ * the joining bridges up to two last steps each side as well (join.c), so
+ * this floor decides only where the last steps are shorter.
+ * Pinned: PINNED_POLE_GAP. */
+#define IC_TRACE_POLE_GAP_CHORDS 50.0
+
+/* chords: a start candidate the locator refused (deferred: at a pole, say)
+ * is listed as a failure only when no traced curve or recorded point passes
+ * within this many chord heights of it, after the joining has bridged the
+ * arcs meeting at the pole. Pinned: PINNED_DEFERRED. */
+#define IC_TRACE_DEFERRED_CHORDS 2.0
+
+/* The march's step control (march.c, step). */
+/* count: halvings of a step that failed before the march gives up on it;
+ * 2^-60 takes the longest step (0.05 L) below the smallest one (1e-13 L)
+ * with room, so min_step ends the halving first. Pinned: PINNED_HALVINGS. */
+#define IC_TRACE_STEP_HALVINGS 60
+/* relative (of L + |x|): near a tangential point a step shorter than this
+ * ends the march there (the tangential point is then located) instead of
+ * halving on to min_step: steps this short resolve nothing at doubles'
+ * precision around |x|. Pinned: PINNED_TANGENTIAL_MIN_STEP. */
+#define IC_TRACE_TANGENTIAL_MIN_STEP 1e-10
+/* fraction of the step h: the corrected point must advance at least this
+ * far along the tangent, else the step is retried shorter (a corrector that
+ * slid back along the curve, or onto another branch). Pinned:
+ * PINNED_STEP_ADVANCE. */
+#define IC_TRACE_STEP_ADVANCE 0.5
+/* The largest correction accepted, max(TOLS tol, OF_STEP h): the predictor
+ * of order K errs by about the truncation tolerance tol per step, so a
+ * correction a thousand times larger means the corrector jumped (to
+ * another branch or sheet); OF_STEP h keeps short steps from failing on
+ * rounding. Used by both correctors (the transversal march and a
+ * tangential curve's). Pinned: PINNED_CORRECTION. */
+#define IC_TRACE_CORRECTION_TOLS 1e3
+#define IC_TRACE_CORRECTION_OF_STEP 1e-3
+
+/* radians: the threshold of the normals' angle below which a point is
+ * tangential, for the classification of a point known only approximately
+ * (a curve end just off a tangential point, a candidate nudged off a pole;
+ * ic_trace_add_special): relaxed from the local analysis's default because
+ * such a point lies up to a step off the tangential point, where the angle
+ * is already above the default threshold. Pinned: PINNED_APPROX_ANGLE. */
+#define IC_TRACE_APPROX_TANGENTIAL_ANGLE 1e-3
+
 #endif

@@ -95,10 +95,10 @@ IC_API size_t ic_expr_interval_work_len(const ic_expr *e);
 IC_API void ic_expr_eval_interval(const ic_expr *e, ic_interval *out, const ic_interval *x,
                                   ic_interval *work);
 
-/** Most seed directions of an interval gradient. */
+/** Most directions of differentiation of an interval gradient. */
 #define IC_INTERVAL_GRAD_MAX 3
 
-/** An enclosure of a value and of its derivatives along the seed directions. */
+/** An enclosure of a value and of its derivatives along the directions of differentiation. */
 typedef struct {
     ic_interval v;
     ic_interval d[IC_INTERVAL_GRAD_MAX];
@@ -108,7 +108,7 @@ typedef struct {
 IC_API size_t ic_expr_interval_grad_work_len(const ic_expr *e);
 /**
  * Forward mode on intervals: x[i].v is variable i's interval and x[i].d[k]
- * its derivative along seed direction k (k < ngrad <= IC_INTERVAL_GRAD_MAX;
+ * its derivative along direction k (k < ngrad <= IC_INTERVAL_GRAD_MAX;
  * the identity for a gradient). out[i].d[k] then encloses the derivative of
  * formula i along direction k at every point of the box where the formula
  * is differentiable (abs contributes [-1, 1] where its argument holds 0).

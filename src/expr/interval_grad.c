@@ -2,7 +2,7 @@
  * Enclosures of values and gradients together (forward mode on intervals):
  * each register holds the interval of its value over the box and the
  * intervals of its partial derivatives along up to IC_INTERVAL_GRAD_MAX
- * seed directions. The derivative rules are the calculus ones evaluated in
+ * directions of differentiation. The derivative rules are the calculus ones evaluated in
  * interval arithmetic, so each partial encloses the derivative at every
  * point of the box where the formula is differentiable (|x| contributes
  * [-1, 1] times its argument's derivative where the argument holds 0). The

@@ -8,7 +8,7 @@
 #include "common/mathconst.h"
 #include "common/vec3.h"
 #include "local/local_internal.h"
-#include "surface/surface_internal.h"
+#include "surface/surface_access.h"
 
 #include <math.h>
 #include <stdlib.h>

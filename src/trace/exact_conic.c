@@ -17,7 +17,6 @@
 #include "exact_conic.h"
 #include "exact_ellipse_nets.h"
 #include "exact_profile.h"
-#include "surface/surface_internal.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -13,7 +13,7 @@
 #include "common/vec3.h"
 #include "curve/fit_check.h"
 #include "curve/hermite.h"
-#include "surface/surface_internal.h"
+#include "surface/surface_access.h"
 #include "intercurve/trace.h"
 
 /* (u', v') and (u'', v'') of a parametric sheet along the curve from c'

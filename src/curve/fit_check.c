@@ -9,7 +9,6 @@
 #include <string.h>
 
 #include "common/vec3.h"
-#include "surface/surface_internal.h"
 
 /* The nearest representative of x modulo the period (periodic directions)
  * to the value the previous node predicts: a pcurve continues across a

@@ -3,6 +3,7 @@
 #define IC_EXPR_INTERNAL_H
 
 #include "intercurve/expr.h"
+#include "expr_access.h"
 
 typedef enum {
     OP_CONST, OP_VAR,
@@ -36,10 +37,6 @@ struct ic_expr {
     int *hash;     /* open addressing table of instruction indices, -1 empty */
     int hash_cap;
 };
-
-/* A deep copy of a compiled expression (its own tape): what a worker
- * thread of a trace evaluates (trace/workers.c). IC_ERR_NOMEM. */
-ic_status ic_expr_copy(ic_expr **out, const ic_expr *e, ic_error *err);
 
 /* Builder: appends an instruction (or returns an identical earlier one),
  * folding constants. Returns the register index, or -1 with err filled. */

@@ -5,6 +5,7 @@
 #include "intercurve/jet.h"
 #include "intercurve/local.h"
 #include "pairing/pairing.h"
+#include "pair_access.h"
 
 struct ic_pair {
     ic_surface *s[2];      /* A, B (B = A for a self-intersection) */
@@ -18,17 +19,6 @@ struct ic_pair {
     ic_pairing pairing; /* what differs between the kinds of pair */
     long nomem;         /* its operations that ran out of memory (ic_pair_nomem_check) */
 };
-
-/* Out of memory is noted in the pair, like a stream's error indicator: an
- * operation built on others that tries another way after a failed step (a
- * search, a march, a locator) cannot tell it from a step that fails, and
- * asks afterwards. Returns st, noted when it is IC_ERR_NOMEM; IC_ERR_NOMEM
- * (err set) when memory ran out during the operation (the pair's count is
- * no longer `before`), whatever st says. */
-ic_status ic_pair_nomem_check(ic_pair *pair, long before, ic_status st, ic_error *err);
-
-/* The pair's pairing (pairing/pairing.h), built with it. */
-const ic_pairing *ic_pair_pairing(const ic_pair *pair);
 
 /* One sheet of the pair at the point: its geometry and derivatives to
  * order 4 (parametric: 3 jets of 15 coefficients over (u, v); implicit: one
@@ -93,11 +83,6 @@ ic_status ic_closed_abdel_all(ic_branch *br, const ic_sheet sh[2], ic_paper_valu
                               ic_error *err);
 ic_status ic_closed_patrikalakis_maekawa(ic_branch *br, const ic_sheet sh[2],
                                          ic_paper_values *paper, ic_error *err);
-
-/* The parameters of the point of parametric sheet `which` nearest to X, by
- * damped Newton on |R(u, v) - X|^2 from uv (updated); *dist the distance. */
-ic_status ic_local_project(ic_pair *pair, int which, double uv[2], const double X[3],
-                           const ic_local_options *opt, double *dist);
 
 /* x with t . x = r[0], N_A . x = r[1], N_B . x = r[2] (unit t normal to
  * both): x = (r0 N_A x N_B + r1 N_B x t + r2 t x N_A) / det[t; N_A; N_B]. */

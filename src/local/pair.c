@@ -139,6 +139,20 @@ ic_status ic_pair_nomem_check(ic_pair *pair, long before, ic_status st, ic_error
     return st;
 }
 
+long ic_pair_nomem_count(const ic_pair *pair) { return pair->nomem; }
+void ic_pair_nomem_restore(ic_pair *pair, long before) { pair->nomem = before; }
+
+void ic_pair_nomem_take(ic_pair *pair, ic_pair *copy)
+{
+    pair->nomem += copy->nomem;
+    copy->nomem = 0;
+}
+
+const ic_jet_space *ic_pair_near_space(const ic_pair *pair, int nvars)
+{
+    return pair->near[nvars - 2];
+}
+
 ic_status ic_sheet_singular(ic_error *err, ic_status st, int which)
 {
     if (st == IC_ERR_DOMAIN && err) {

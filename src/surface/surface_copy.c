@@ -7,7 +7,7 @@
  * original does.
  */
 #include "surface_copy.h"
-#include "expr/expr_internal.h"
+#include "expr/expr_access.h"
 #include "surface_internal.h"
 
 #include <stdlib.h>

@@ -6,6 +6,7 @@
 #include "intercurve/surface.h"
 #include "net_shape.h"
 #include "nurbs.h"
+#include "surface_access.h"
 
 typedef enum { BACKEND_FORMULA, BACKEND_CALLBACK, BACKEND_PRIMITIVE, BACKEND_NURBS } ic_backend;
 
@@ -47,17 +48,6 @@ ic_status ic_surface_reserve(ic_surface *s, ic_error *err);
 double *ic_surface_work(ic_surface *s, int slot, size_t len);
 /* ic_surface_space, ic_surface_taylor_toward */
 #include "surface_jets.h"
-
-/* A NURBS surface's recognised shape (net_shape.h; surface_net.c), found
- * on first use and kept, in *out: NULL for any other surface, a patch
- * restricted to part of its knots' domain, a patch not recognised. 0, or -1
- * out of memory (then tried again on the next call). */
-int ic_surface_net_shape(ic_surface *s, const ic_net_shape **out);
-
-/* A NURBS surface's point at uv, the same bits as the constant terms of
- * its Taylor coefficients there (ic_nurbs_point; a forced knot side
- * respected), without jets: 0, or -1 for any other surface. */
-int ic_surface_nurbs_point(ic_surface *s, const double uv[2], double out[3]);
 
 /* Primitives (primitive.c) */
 ic_status ic_primitive_check(ic_surface *s, ic_error *err);

@@ -7,7 +7,7 @@
  */
 #include "common/vec3.h"
 #include "core/trace_constants.h"
-#include "local/local_internal.h"
+#include "local/pair_access.h"
 #include "curve_ends.h"
 #include "march_ahead.h"
 #include "trace_internal.h"

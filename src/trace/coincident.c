@@ -1,15 +1,10 @@
 /*
- * The problem's length scale and coincident surfaces (docs/tracing.md,
- * "Scale" and "Coincident surfaces").
+ * The found scale and coincident surfaces (docs/tracing.md, "Scale" and
+ * "Coincident surfaces"); the problem's scale L itself is core/scale.c's.
  *
- * The scale L is the diagonal of the region where the intersection is
- * sought: the box for two implicit surfaces; otherwise the bounding box of
- * the parametric surfaces sampled over their domains (cut to the box when
- * there is one). After the first search it shrinks to the bounding box of
- * what that search left: its start points and the cells it could not
- * exclude (a parametric surface may reach far beyond the intersection).
- * Tolerances of the tracer that are lengths are fractions of L, so a
- * problem scaled by any factor gives the same answer.
+ * After the first search L shrinks to the bounding box of what that search
+ * left: its start points and the cells it could not exclude (a parametric
+ * surface may reach far beyond the intersection).
  *
  * Two surfaces coincide around a common point with parallel normals when
  * points of A around it, at distances L 2^-k in eight directions of the
@@ -20,13 +15,11 @@
 #include "trace_internal.h"
 #include "common/mathconst.h"
 #include "common/vec3.h"
-#include "local/local_internal.h"
-#include "surface/surface_internal.h"
+#include "local/pair_access.h"
+#include "surface/surface_access.h"
 
 #include <math.h>
 #include <string.h>
-
-enum { SCALE_GRID = 17 };
 
 double ic_trace_found_scale(double L, const ic_candidate *c, int nc, const ic_unresolved *u,
                             int nu)

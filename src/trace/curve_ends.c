@@ -7,7 +7,7 @@
  */
 #include "common/vec3.h"
 #include "core/trace_constants.h"
-#include "local/local_internal.h"
+#include "local/pair_access.h"
 #include "curve_ends.h"
 #include "march_ahead.h"
 #include "trace_internal.h"
@@ -31,7 +31,7 @@ static ic_status add_curve(ic_trace_result *r, ic_trace_point *pts, int n, int c
  * point was left out). */
 static void note_nomem(ic_pair *pair, ic_status st)
 {
-    (void)ic_pair_nomem_check(pair, pair->nomem, st, NULL);
+    (void)ic_pair_nomem_check(pair, ic_pair_nomem_count(pair), st, NULL);
 }
 
 /* The tangential point ahead of a curve end `near`; 0 when it cannot be

@@ -7,7 +7,7 @@
 #include "core/trace_constants.h"
 #include "trace_internal.h"
 #include "common/vec3.h"
-#include "local/local_internal.h"
+#include "local/pair_access.h"
 #include "tangential_curve.h"
 
 #include <math.h>
@@ -742,7 +742,7 @@ ic_status ic_tracer_step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
 {
     IC_ARG_NOT_NULL(tr, "tr");
     IC_ARG_NOT_NULL(event, "event");
-    const long before = tr->pair->nomem;
+    const long before = ic_pair_nomem_count(tr->pair);
     return ic_pair_nomem_check(tr->pair, before, step(tr, event, err), err);
 }
 

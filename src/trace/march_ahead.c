@@ -14,7 +14,7 @@
 #include "core/trace_constants.h"
 #include "workers.h"
 #include "common/vec3.h"
-#include "local/local_internal.h"
+#include "local/pair_access.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -83,7 +83,7 @@ static void march_candidate(void *ctx, int k, ic_pair *pair)
     const batch *b = ctx;
     const ic_candidate *c = &b->cand[b->which[k]];
     ic_trace_ahead *a = &b->ahead[b->which[k]];
-    const long before = pair->nomem;
+    const long before = ic_pair_nomem_count(pair);
     ic_local_options lo = b->opt->local;
     ic_local_result res;
     ic_tracer *tr = NULL;
@@ -97,8 +97,8 @@ static void march_candidate(void *ctx, int k, ic_pair *pair)
     }
     ic_tracer_free(tr);
     /* out of memory here costs only this march: the trace does it itself */
-    if (pair->nomem != before) {
-        pair->nomem = before;
+    if (ic_pair_nomem_count(pair) != before) {
+        ic_pair_nomem_restore(pair, before);
         a->valid = 0;
     }
     if (!a->valid)

@@ -18,7 +18,7 @@
 #include "search_internal.h"
 #include "trace_internal.h"
 #include "common/vec3.h"
-#include "local/local_internal.h"
+#include "local/pair_access.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -1,7 +1,7 @@
 /* The corrector and orientation for marching along tangential curves
  * (tangential_curve.h, docs/tracing.md). */
 #include "tangential_curve.h"
-#include "local/local_internal.h"
+#include "local/pair_access.h"
 
 #include <string.h>
 

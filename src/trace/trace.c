@@ -11,7 +11,7 @@
 #include "march_ahead.h"
 #include "workers.h"
 #include "common/vec3.h"
-#include "local/local_internal.h"
+#include "local/pair_access.h"
 
 #include <float.h>
 #include <math.h>
@@ -205,7 +205,7 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
     IC_ARG_NOT_NULL(out, "res");
     IC_ARG_NOT_NULL(pair, "pair");
     IC_ARG_NOT_NULL(user_opt, "opt");
-    const long before = pair->nomem;
+    const long before = ic_pair_nomem_count(pair);
     ic_status st = ic_pair_nomem_check(pair, before, trace(out, pair, user_opt, err), err);
     if (st == IC_ERR_NOMEM) {
         ic_trace_result_free(*out);

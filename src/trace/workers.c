@@ -4,7 +4,7 @@
  * a cell's refinement), so the lock costs nothing next to them.
  */
 #include "workers.h"
-#include "local/local_internal.h"
+#include "local/pair_access.h"
 #include "surface/surface_copy.h"
 
 #include <pthread.h>
@@ -188,9 +188,7 @@ void ic_trace_workers_run(ic_trace_workers *p, ic_pair *pair, ic_trace_job *job,
     while (p->busy > 0)
         pthread_cond_wait(&p->idle, &p->lock);
     /* out of memory noted in a copy is the trace's (ic_trace asks the pair) */
-    for (int k = 0; k < p->nthreads; k++) {
-        pair->nomem += p->w[k].pair->nomem;
-        p->w[k].pair->nomem = 0;
-    }
+    for (int k = 0; k < p->nthreads; k++)
+        ic_pair_nomem_take(pair, p->w[k].pair);
     pthread_mutex_unlock(&p->lock);
 }

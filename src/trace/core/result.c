@@ -3,7 +3,7 @@
  * the surfaces coincide, the failure list, and the public accessors. */
 #include "common/vec3.h"
 #include "curve_index.h"
-#include "local/local_internal.h"
+#include "local/pair_access.h"
 #include "result.h"
 #include "trace_constants.h"
 

@@ -7,9 +7,9 @@
  * factor gives the same answer.
  */
 #include "common/vec3.h"
-#include "local/local_internal.h"
+#include "local/pair_access.h"
 #include "options.h"
-#include "surface/surface_internal.h"
+#include "surface/surface_access.h"
 
 #include <math.h>
 #include <string.h>
@@ -52,7 +52,7 @@ double ic_trace_problem_scale(ic_pair *pair, const ic_trace_options *opt)
     for (int s = 0; s < 2; s++) {
         ic_surface *S = ic_pair_surface(pair, s);
         if (ic_surface_get_kind(S) == IC_PARAMETRIC)
-            sample_bounds(S, pair->near[0], lo, hi);
+            sample_bounds(S, ic_pair_near_space(pair, 2), lo, hi);
     }
     for (int k = 0; opt->has_box && k < 3; k++) {
         /* the samples cut to the box; no samples there: the box itself */

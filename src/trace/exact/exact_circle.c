@@ -7,8 +7,8 @@
 #include "exact_profile.h"
 #include "common/mathconst.h"
 #include "common/vec3.h"
-#include "local/local_internal.h"
-#include "surface/surface_internal.h"
+#include "local/pair_access.h"
+#include "surface/surface_access.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -233,7 +233,7 @@ static int sheet_normal(ic_pair *pair, int s, const ic_trace_point *p, double n[
 {
     ic_surface *S = ic_pair_surface(pair, s);
     const int parametric = ic_surface_get_kind(S) == IC_PARAMETRIC;
-    const ic_jet_space *sp = pair->near[parametric ? 0 : 1];
+    const ic_jet_space *sp = ic_pair_near_space(pair, parametric ? 2 : 3);
     const int len = ic_jet_space_len(sp);
     double t[3 * 10];
     if (3 * len > 30 ||

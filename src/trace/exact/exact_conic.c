@@ -18,7 +18,6 @@
 #include "exact_paths.h"
 #include "exact_ellipse_nets.h"
 #include "exact_profile.h"
-#include "surface/surface_internal.h"
 #include "trace/core/options.h"
 
 #include <math.h>

@@ -6,7 +6,7 @@
  * ellipse's extent along the axis or an edge's normal is exact. */
 #include "exact_ellipse_nets.h"
 #include "common/vec3.h"
-#include "surface/surface_internal.h"
+#include "surface/net_shape.h"
 
 #include <math.h>
 

@@ -10,7 +10,7 @@
 #include "exact_profile.h"
 #include "common/mathconst.h"
 #include "common/vec3.h"
-#include "surface/surface_internal.h"
+#include "surface/net_shape.h"
 
 #include <math.h>
 #include <stdlib.h>

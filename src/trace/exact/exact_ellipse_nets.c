@@ -8,7 +8,7 @@
 #include "exact_ellipse_nets.h"
 #include "common/mathconst.h"
 #include "common/vec3.h"
-#include "surface/surface_internal.h"
+#include "surface/surface_access.h"
 
 #include <math.h>
 #include <stdlib.h>

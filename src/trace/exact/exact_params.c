@@ -4,7 +4,7 @@
  * point checked on the patch. */
 #include "exact_source.h"
 #include "common/vec3.h"
-#include "surface/surface_internal.h"
+#include "surface/surface_access.h"
 
 #include <math.h>
 

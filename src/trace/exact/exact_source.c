@@ -5,7 +5,7 @@
 #include "exact_profile.h"
 #include "exact_source.h"
 #include "common/vec3.h"
-#include "surface/surface_internal.h"
+#include "surface/surface_access.h"
 
 #include <string.h>
 
@@ -15,10 +15,10 @@ static int source_of(ic_surface *s, ic_exact_source *out)
 {
     memset(out, 0, sizeof *out);
     out->surface = s;
-    if (s->backend == BACKEND_PRIMITIVE && s->kind == IC_IMPLICIT) {
-        out->prim = s->prim;
-        memcpy(out->frame, s->prim.kind == IC_PRIM_PLANE ? s->plane_frame : s->frame,
-               sizeof out->frame);
+    const ic_primitive *prim = ic_surface_primitive(s);
+    if (prim && ic_surface_get_kind(s) == IC_IMPLICIT) {
+        out->prim = *prim;
+        (void)ic_surface_primitive_frame(s, out->frame);
         return 1;
     }
     const ic_net_shape *sh;

@@ -25,30 +25,6 @@ static ic_status start_curve(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
     return IC_ERR_UNABLE;
 }
 
-/* Whether a traced curve passes within `bound` of x. */
-static int near_curves(const ic_trace_result *r, const double *x, double bound)
-{
-    const int hit = r->index ? ic_curve_index_near(r->index, r, x, bound) : -1;
-    if (hit >= 0)
-        return hit;
-    for (int c = 0; c < r->ncurves; c++)
-        if (ic_trace_polyline_distance(r->curves[c].points, r->curves[c].npoints, x, bound) <=
-            bound)
-            return 1;
-    return 0;
-}
-
-int ic_trace_point_near_found(const ic_trace_result *r, const double *x, double bound)
-{
-    for (int k = 0; k < r->nspecials; k++) {
-        double d[3];
-        ic_axpy3(d, r->specials[k].xyz, -1.0, x);
-        if (ic_norm3(d) <= bound)
-            return 1;
-    }
-    return near_curves(r, x, bound);
-}
-
 /* Whether a traced curve or a recorded point passes within the cell's radius. */
 int ic_trace_found_near(const ic_trace_result *r, const ic_unresolved *u)
 {
@@ -124,7 +100,7 @@ ic_status ic_trace_complete_branches(ic_trace_result *r, ic_tracer *tr, ic_pair 
                 ic_axpy3(q, at.xyz, sgn * delta, br->t);
                 if (br->frame_defined)
                     ic_axpy3(q, q, 0.5 * delta * delta * br->kappa, br->n);
-                if (near_curves(r, q, 0.25 * delta))
+                if (ic_trace_curves_near(r, q, 0.25 * delta))
                     continue;
                 ic_local_point pt;
                 ic_local_result there;

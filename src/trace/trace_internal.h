@@ -5,6 +5,7 @@
 #define IC_TRACE_INTERNAL_H
 
 #include "core/curve_index.h"
+#include "core/near.h"
 #include "core/options.h"
 #include "core/polyline.h"
 #include "core/result.h"
@@ -101,9 +102,6 @@ double ic_trace_found_scale(double L, const ic_candidate *c, int nc, const ic_un
  * it in out. */
 int ic_trace_locate_surface_singular(ic_pair *pair, const double *near, double L, double *out);
 
-/* Whether a traced curve or recorded singular point lies within bound of x
- * (singular.c). */
-int ic_trace_point_near_found(const ic_trace_result *r, const double *x, double bound);
 
 /* Traces the curve through pt in both directions into a new curve of r
  * (curve_ends.c). */

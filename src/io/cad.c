@@ -1,4 +1,6 @@
-/* CAD files: the format, the file's bytes, and the descriptions (cad.h). */
+/* CAD files (cad.h): the dispatcher, which finds a file's format, reads its
+ * bytes and hands them to the STEP or IGES reader (cad_readers.h), the only
+ * caller of the readers. */
 #include "cad.h"
 
 #include <errno.h>
@@ -7,7 +9,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "cad_internal.h"
+#include "cad_readers.h"
 
 ic_cad_format ic_cad_sniff(const char *data, size_t len)
 {
@@ -210,21 +212,4 @@ ic_status ic_cad_read(const char *path, ic_cad_format format, int entity, ic_cad
 {
     int entity_fault;
     return ic_cad_read_entity(path, format, entity, out, &entity_fault, err);
-}
-
-void ic_cad_surface_clear(ic_cad_surface *s)
-{
-    if (!s)
-        return;
-    free(s->knots_store);
-    free(s->points_store);
-    free(s->weights_store);
-    memset(s, 0, sizeof *s);
-}
-
-void ic_cad_list_free(ic_cad_surface *list, int n)
-{
-    for (int k = 0; list && k < n; k++)
-        ic_cad_surface_clear(&list[k]);
-    free(list);
 }

@@ -1,11 +1,10 @@
-/* Pieces shared by the STEP and IGES readers (cad.h). */
+/* Pieces shared by the STEP and IGES readers (cad_surface.c, cad_nurbs.c),
+ * below both: the readers call them and never the dispatcher (cad.c). */
 #ifndef IC_CAD_INTERNAL_H
 #define IC_CAD_INTERNAL_H
 
-#include "cad.h"
+#include "cad_types.h"
 #include "intercurve/common.h"
-#include "iges_parse.h"
-#include "step_parse.h"
 
 /* A patch closes on itself along a direction when its points at the two
  * ends of the domain agree to this much relative to the control net's size
@@ -29,17 +28,6 @@ ic_status ic_cad_alloc_nurbs(ic_cad_surface *s, const int degree[2], const int c
  * (its boundary curves at the two ends of the domain coincide). */
 ic_status ic_cad_finish_nurbs(ic_cad_surface *s, const int closed[2], const char *who,
                               ic_error *err);
-
-/* The readers of each format, on a parsed file. `unit`/`metres` are the
- * file's length unit. ic_*_read: the surface `entity` (or what it leads
- * to); ic_*_list: every surface. */
-ic_status ic_step_read(const ic_step_file *f, int entity, ic_cad_surface *out, ic_error *err);
-ic_status ic_step_list(const ic_step_file *f, ic_cad_surface **list, int *n, ic_cad_info *info,
-                       ic_error *err);
-void ic_iges_length_unit(const ic_iges_file *f, char *unit, size_t size, double *metres);
-ic_status ic_iges_read(const ic_iges_file *f, int entity, ic_cad_surface *out, ic_error *err);
-ic_status ic_iges_list(const ic_iges_file *f, ic_cad_surface **list, int *n, ic_cad_info *info,
-                       ic_error *err);
 
 /* Appends a copy of *s (taking its arrays) to a growing list. */
 ic_status ic_cad_list_append(ic_cad_surface **list, int *n, int *cap, ic_cad_surface *s,

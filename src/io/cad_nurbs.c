@@ -1,22 +1,11 @@
 /* NURBS patches read from CAD files: their arrays, checks and closure
  * (cad_internal.h). */
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cad_internal.h"
-
-ic_status ic_cad_fail(ic_error *err, const char *who, const char *fmt, ...)
-{
-    char msg[IC_ERROR_MESSAGE_LEN];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(msg, sizeof msg, fmt, ap);
-    va_end(ap);
-    return ic_error_set(err, IC_ERR_INVALID, 0, "%s: %s", who, msg);
-}
 
 ic_status ic_cad_alloc_nurbs(ic_cad_surface *s, const int degree[2], const int count[2],
                              int rational, const char *who, ic_error *err)
@@ -188,23 +177,5 @@ ic_status ic_cad_finish_nurbs(ic_cad_surface *s, const int closed[2], const char
     }
     for (int d = 0; d < 2; d++)
         s->periodic[d] = s->nurbs.periodic[d] = closed[d] && wraps(n, d, s->domain, scale);
-    return IC_OK;
-}
-
-ic_status ic_cad_list_append(ic_cad_surface **list, int *n, int *cap, ic_cad_surface *s,
-                             ic_error *err)
-{
-    if (*n == *cap) {
-        const int grown = *cap ? 2 * *cap : 16;
-        ic_cad_surface *l = realloc(*list, (size_t)grown * sizeof *l);
-        if (!l) {
-            ic_cad_surface_clear(s);
-            return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory listing the surfaces");
-        }
-        *list = l;
-        *cap = grown;
-    }
-    (*list)[(*n)++] = *s;
-    memset(s, 0, sizeof *s);
     return IC_OK;
 }

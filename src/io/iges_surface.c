@@ -1,4 +1,4 @@
-/* Surfaces of an IGES file (cad.h): the rational B-spline surface (entity
+/* Surfaces of an IGES file (cad_readers.h): the rational B-spline surface (entity
  * 128), alone or as the base surface of a trimmed surface (144), moved by
  * their transformation matrices (124). */
 #include <math.h>
@@ -6,7 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cad_internal.h"
+#include "cad_readers.h"
+#include "iges_surface.h"
 
 /* The IGES 5.3 surface entities, read or not, with their names. */
 typedef struct {

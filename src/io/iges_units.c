@@ -1,10 +1,10 @@
-/* The length unit of an IGES file: the global section's units flag (field
- * 14) and, for flag 3, its units name (field 15). */
+/* The length unit of an IGES file (iges_surface.h): the global section's
+ * units flag (field 14) and, for flag 3, its units name (field 15). */
 #include <ctype.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "cad_internal.h"
+#include "iges_surface.h"
 
 typedef struct {
     int flag;

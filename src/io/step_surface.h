@@ -1,8 +1,10 @@
-/* The STEP reader's pieces (step_surface.c, step_bspline.c, step_units.c). */
+/* The STEP reader's pieces (step_surface.c, step_bspline.c, step_units.c,
+ * step_placement.c). */
 #ifndef IC_STEP_SURFACE_H
 #define IC_STEP_SURFACE_H
 
 #include "cad_internal.h"
+#include "step_parse.h"
 
 /* A ref_direction whose part normal to the axis is shorter than this (the
  * sine of its angle to the unit axis) counts as along the axis. */
@@ -24,6 +26,13 @@ int ic_step_surface_type(const ic_step_file *f, const ic_step_instance *in, char
 /* The CARTESIAN_POINT a REF value names (three coordinates). */
 ic_status ic_step_point(const ic_step_file *f, int v, double out[3], const char *who,
                         ic_error *err);
+/* The AXIS2_PLACEMENT_3D(name, location, axis, ref_direction) a REF value
+ * names, into prim's center, axis and ref_direction: the axis defaults to z;
+ * the reference direction to x (y when the axis is along x, as ISO
+ * 10303-42's first_proj_axis has it) and loses its component along the
+ * axis. */
+ic_status ic_step_placement(const ic_step_file *f, int v, ic_primitive *prim, const char *who,
+                            ic_error *err);
 /* A B_SPLINE_SURFACE_WITH_KNOTS, simple or complex (with RATIONAL_B_SPLINE_SURFACE). */
 ic_status ic_step_bspline(const ic_step_file *f, const ic_step_instance *in, ic_cad_surface *out,
                           const char *who, ic_error *err);

@@ -1,8 +1,8 @@
 /* intercurve surfaces: every surface of a STEP or IGES file, so that a
  * problem file can name two of them (docs/cad-files.md). */
 #include "cli/cli.h"
-#include "io/cad.h"
-#include "io/cad_write.h"
+#include "cad/cad.h"
+#include "cad/cad_write.h"
 
 enum { OPT_FORMAT, NOPTIONS };
 

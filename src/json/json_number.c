@@ -7,8 +7,8 @@
  * 1e-180 512 bits (json_wide.c), so the rounding is exact, ties to even as
  * glibc rounds them. Every other number (and a compiler without 128-bit
  * integers) takes printf and strtod. */
-#include "io/json_number.h"
-#include "io/json_wide.h"
+#include "json/json_number.h"
+#include "json/json_wide.h"
 
 #include <math.h>
 #include <stdint.h>

@@ -6,7 +6,7 @@
 #include <stdlib.h>
 
 #include "intercurve/jet.h"
-#include "io/json_out.h"
+#include "json/json_out.h"
 
 /* The Taylor coefficients of s at `at` up to `order`, computed before
  * anything is written: *sp and *taylor (the caller frees both). */

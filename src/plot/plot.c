@@ -1,12 +1,12 @@
 /*
  * A figure: the title, the 3D panel (left) and the chart (right), on a
  * cairo surface chosen by the file's extension, streamed into a safe file
- * (io/safe_file.h: a temporary and a rename, or a device in place).
+ * (json/safe_file.h: a temporary and a rename, or a device in place).
  */
 #include "common/args.h"
 #include "plot_html.h"
 
-#include "io/safe_file.h"
+#include "json/safe_file.h"
 
 #include <cairo-pdf.h>
 #include <cairo-svg.h>

@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "intercurve/problem.h"
-#include "json_path.h"
+#include "json/json_path.h"
 
 /* Most control points one patch may have (a 1000 x 1000 net). */
 #define MAX_NET_POINTS 1000000

@@ -1,10 +1,10 @@
 /* JSON documents streamed in cJSON_Print's layout (json_out.h). */
-#include "io/json_out.h"
+#include "json/json_out.h"
 
 #include <math.h>
 #include <string.h>
 
-#include "io/json_number.h"
+#include "json/json_number.h"
 
 void ic_json_out_start(json_out *j, FILE *f)
 {

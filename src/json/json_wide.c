@@ -1,5 +1,5 @@
 /* Exact rounding of m 5^k / 2^sh in 512 bits (json_wide.h). */
-#include "io/json_wide.h"
+#include "json/json_wide.h"
 
 #include <string.h>
 

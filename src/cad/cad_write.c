@@ -6,7 +6,7 @@
 
 #include "cad.h"
 #include "cad_write.h"
-#include "io/json_out.h"
+#include "json/json_out.h"
 
 static const char *kind_name(const ic_cad_surface *s)
 {

@@ -1,6 +1,6 @@
 /* IGES's fixed-column lines: data, then the section letter in column 73
  * and the sequence number in columns 74-80 (P: the DE pointer in 66-72). */
-#include "io/iges_records.h"
+#include "cad/iges_records.h"
 
 #include <string.h>
 

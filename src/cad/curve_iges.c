@@ -7,8 +7,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "io/curve_out.h"
-#include "io/iges_records.h"
+#include "cad/curve_out.h"
+#include "cad/iges_records.h"
 
 enum {
     IGES_BSPLINE_CURVE = 126,

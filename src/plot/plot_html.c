@@ -1,14 +1,14 @@
 /*
  * The interactive page (docs/plots.md, "The interactive page"): one HTML
  * file holding three.js and the page's own scripts as text (web/, compiled
- * in: io/web_assets.h), the scene's data and the trace document as JSON.
+ * in: plot/web_assets.h), the scene's data and the trace document as JSON.
  * The bootstrap script (web/boot.js) turns the texts into modules.
  */
 #include "plot_html.h"
 
 #include "intercurve.h"
 #include "intercurve/writers.h"
-#include "io/web_assets.h"
+#include "plot/web_assets.h"
 
 #include <ctype.h>
 #include <stdlib.h>

@@ -3,7 +3,7 @@
 #include "common/args.h"
 #include "intercurve/writers.h"
 
-#include "io/json_out.h"
+#include "json/json_out.h"
 
 #include <string.h>
 

@@ -1,5 +1,5 @@
 /* Numbers, text and checks shared by the STEP and IGES curve writers. */
-#include "io/curve_out.h"
+#include "cad/curve_out.h"
 
 #include <math.h>
 #include <stdio.h>

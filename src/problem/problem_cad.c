@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cad.h"
+#include "cad/cad.h"
 
 /* A primitive made from a file must give the file's points: at sample
  * parameters its point (parametric) or its distance |f| / |grad f|

@@ -5,7 +5,7 @@
 #include "common/args.h"
 #include "intercurve/writers.h"
 
-#include "io/curve_out.h"
+#include "cad/curve_out.h"
 
 #define STEP_SCHEMA "AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }"
 

@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "intercurve/expr.h"
-#include "json_path.h"
+#include "json/json_path.h"
 #include "problem_cad.h"
 #include "problem_nurbs.h"
 

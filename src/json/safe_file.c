@@ -4,7 +4,7 @@
 #define _XOPEN_SOURCE 700
 
 #include "common/args.h"
-#include "io/safe_file.h"
+#include "json/safe_file.h"
 
 #include "intercurve/writers.h"
 

@@ -1,5 +1,6 @@
 /* Entry points for other languages (include/intercurve/bindings.h): the
  * commands' work with only handles, numbers and strings crossing. */
+#include "api/api.h"
 #include "common/args.h"
 #include "intercurve/bindings.h"
 #include "intercurve/plot.h"
@@ -18,15 +19,6 @@
 #define MAX_MESH 200
 
 void ic_free(void *mem) { free(mem); }
-
-/* The pair of a problem's surfaces (its one surface twice for a
- * self-intersection). */
-static ic_status problem_pair(ic_pair **pair, const ic_problem *problem, ic_error *err)
-{
-    const int self = ic_problem_is_self(problem);
-    return ic_pair_new(pair, ic_problem_surface(problem, 0),
-                       self ? NULL : ic_problem_surface(problem, 1), err);
-}
 
 ic_status ic_problem_trace(ic_trace_result **res, ic_pair **pair, const ic_problem *problem,
                            double tol, int depth, double time_limit, int threads,
@@ -48,19 +40,8 @@ ic_status ic_problem_trace(ic_trace_result **res, ic_pair **pair, const ic_probl
     opt.depth = depth;
     opt.time_limit = time_limit;
     opt.threads = threads; /* ic_trace refuses it out of range */
-    opt.has_box = ic_problem_box(problem, opt.box);
-    ic_status st = problem_pair(pair, problem, err);
-    if (st == IC_OK)
-        st = ic_trace(res, *pair, &opt, err);
-    if (st == IC_OK && fit_tol > 0)
-        st = ic_trace_fit(*res, *pair, fit_tol, err);
-    if (st != IC_OK) {
-        ic_trace_result_free(*res);
-        ic_pair_free(*pair);
-        *res = NULL;
-        *pair = NULL;
-    }
-    return st;
+    ic_api_stage failed;
+    return ic_api_trace_problem(res, pair, problem, &opt, fit_tol, &failed, err);
 }
 
 /* What a document writer needs, to be printed into a memory stream. */
@@ -126,7 +107,7 @@ ic_status ic_problem_point_json(char **json, size_t *len, const ic_problem *prob
     ic_local_defaults(&opt);
     opt.point_tol = point_tol;
     ic_pair *pair = NULL;
-    ic_status st = problem_pair(&pair, problem, err);
+    ic_status st = ic_api_problem_pair(&pair, problem, err);
     ic_local_point pt;
     if (st == IC_OK)
         st = ic_local_find(pair, &pt, values, count, by_params, &opt, err);

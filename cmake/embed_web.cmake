@@ -58,7 +58,7 @@ function(embed var name path)
   set(${name}_size ${bytes} PARENT_SCOPE)
 endfunction()
 
-set(body "${first_line}\n#include \"io/web_assets.h\"\n\n")
+set(body "${first_line}\n#include \"plot/web_assets.h\"\n\n")
 set(table "")
 foreach(group IN ITEMS OWN LIB)
   list(LENGTH ${group} n)

@@ -1,4 +1,4 @@
-/* libFuzzer target: the CAD reader (src/io/cad.h) on arbitrary bytes, as
+/* libFuzzer target: the CAD reader (src/cad/cad.h) on arbitrary bytes, as
  * STEP or IGES, whichever they look like. The input is handed over in a
  * buffer of exactly its size, so a read past the end is caught. A listing
  * must succeed or fail with a status and a message; every surface listed as
@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "io/cad.h"
+#include "cad/cad.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

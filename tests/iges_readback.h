@@ -1,5 +1,5 @@
 /* A small reader of IGES's fixed-column form for the tests, written apart
- * from the writer (src/io/curve_iges.c): the records checked column by
+ * from the writer (src/cad/curve_iges.c): the records checked column by
  * column, the global section's fields, and each entity 126 of the
  * directory with its parameter data. Any departure from the layout makes
  * it fail, never guess. */

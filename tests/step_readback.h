@@ -1,5 +1,5 @@
 /* A small reader of ISO 10303-21 for the tests, written apart from the
- * writer (src/io/curve_step.c): the DATA section's instances by number, and
+ * writer (src/cad/curve_step.c): the DATA section's instances by number, and
  * each B_SPLINE_CURVE_WITH_KNOTS with its CARTESIAN_POINTs followed by
  * reference and its knots expanded from the multiplicities. Any departure
  * from the syntax it expects makes it fail (ok = 0), never guess. */

@@ -1,4 +1,4 @@
-/* The CAD reader (src/io/cad.h) on files OpenCASCADE wrote
+/* The CAD reader (src/cad/cad.h) on files OpenCASCADE wrote
  * (tests/data/cad/bspline.*, primitives.*; tests/cad/gen_cad_files.cpp) and
  * on hand-written ones (small.step, small.igs): the surfaces listed, and
  * their geometry against the generator's definitions, restated here on
@@ -12,7 +12,7 @@
 #include "common/mathconst.h"
 #include "harness.h"
 #include "intercurve/problem.h"
-#include "io/cad.h"
+#include "cad/cad.h"
 
 /* The writers' digits: OpenCASCADE writes STEP reals to 12 significant
  * digits and IGES reals to 10, so each number read is within 5e-13 (5e-10)

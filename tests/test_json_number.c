@@ -1,15 +1,15 @@
-/* The JSON documents' numbers (io/json_number.h) against printf and strtod,
+/* The JSON documents' numbers (json/json_number.h) against printf and strtod,
  * the rule they replace: "%.15g" where it reads back to the number, else
  * "%.17g"; 0 for -0. Byte for byte, on numbers of every exponent, on exact
  * decimal ties at the 15th and 17th digit (glibc rounds them to even), on
  * the neighbours of powers of ten and of the %g switches to exponents, and
- * on the tiny numbers that need 512-bit digits (io/json_wide.h). */
+ * on the tiny numbers that need 512-bit digits (json/json_wide.h). */
 #include <float.h>
 #include <stdint.h>
 #include <string.h>
 
 #include "harness.h"
-#include "io/json_number.h"
+#include "json/json_number.h"
 
 /* the rule, written the slow way */
 static void reference(char out[IC_JSON_NUMBER_MAX], double x)

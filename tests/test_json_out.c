@@ -1,4 +1,4 @@
-/* The streamed JSON layout (io/json_out.h) against cJSON_Print, the
+/* The streamed JSON layout (json/json_out.h) against cJSON_Print, the
  * printer the documents used before they were streamed: the same
  * structures built as cJSON trees and written with ic_json_out give the
  * same bytes (empty objects and arrays, objects in arrays in objects,
@@ -8,8 +8,8 @@
 #include <string.h>
 
 #include "harness.h"
-#include "io/json_out.h"
-#include "io/json_number.h"
+#include "json/json_out.h"
+#include "json/json_number.h"
 
 /* what a document writer would write; its tree in *tree */
 static void streamed(json_out *j)

@@ -1,4 +1,4 @@
-/* The curves of the pictures as smooth paths (src/io/plot_curve.c,
+/* The curves of the pictures as smooth paths (src/plot/plot_curve.c,
  * docs/plots.md): a circle and an ellipse, traced finely and coarsely,
  * drawn from above with a known camera. Every cubic piece of the path,
  * mapped back into the plane, lies on the true curve: within 1.8e-5 a^6 of
@@ -11,7 +11,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "io/plot_internal.h"
+#include "plot/plot_internal.h"
 #include "traced_example.h"
 
 /* the circle of tests/data/periodic-plane-sphere.json: the unit sphere

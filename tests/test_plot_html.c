@@ -14,7 +14,7 @@
 #include "harness.h"
 #include "intercurve.h"
 #include "intercurve/plot.h"
-#include "io/web_assets.h"
+#include "plot/web_assets.h"
 
 static const char HOSTILE[] = "Viviani </script><script>alert(1)</script> <!-- & </SCRIPT x";
 

@@ -8,7 +8,7 @@
 
 #include "harness.h"
 #include "intercurve.h"
-#include "io/plot_internal.h"
+#include "plot/plot_internal.h"
 
 /* A circle of radius r about c in the plane z = c[2], n points (the first
  * four at 0, 90, 180 and 270 degrees when n is a multiple of 4). */

@@ -1,4 +1,4 @@
-/* The VTK output with the curves' B-splines (src/io/trace_vtk.c,
+/* The VTK output with the curves' B-splines (src/writers/trace_vtk.c,
  * docs/output-formats.md): a circle and an ellipse traced with the default
  * steps and coarsely, and fitted. The file's polyline holds every traced
  * point, in order, with its exact apparatus (traced = 1), and between them

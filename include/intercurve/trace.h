@@ -255,6 +255,11 @@ IC_API const ic_trace_curve *ic_trace_result_curve(const ic_trace_result *res, i
 IC_API int ic_trace_result_num_specials(const ic_trace_result *res);
 IC_API const ic_trace_special *ic_trace_result_special(const ic_trace_result *res, int i);
 IC_API const ic_trace_report *ic_trace_result_report(const ic_trace_result *res);
+/** The classification of a point of curve c: a recorded special point's type
+ *  where the point is one (a tangential curve end), tangential-curve along a
+ *  tangential curve, transversal otherwise (and without a point p). */
+IC_API ic_point_type ic_trace_point_type(const ic_trace_result *res, const ic_trace_curve *c,
+                                         const ic_trace_point *p);
 
 /**
  * A traced curve as B-splines (docs/bspline.md): in space, parametrised by

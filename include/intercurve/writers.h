@@ -23,12 +23,6 @@
 extern "C" {
 #endif
 
-/** The classification of a point of curve c: a recorded special point's type
- *  where the point is one (a tangential curve end), tangential-curve along a
- *  tangential curve, transversal otherwise (and without a point p). */
-IC_API ic_point_type ic_trace_point_type(const ic_trace_result *res, const ic_trace_curve *c,
-                                         const ic_trace_point *p);
-
 /** CSV, one row per curve point:
  *  curve,s,x,y,z,u,v,p,q,tx,ty,tz,nx,ny,nz,bx,by,bz,kappa,tau,type;
  *  then one row per special point with the curve and s columns empty. */

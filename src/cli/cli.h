@@ -37,9 +37,11 @@ typedef struct {
     ic_pair *pair;
     ic_trace_result *res;
 } ic_cli_traced;
-/* 0, or the exit code after printing the error with the file's name;
- * opt->has_box and box are set from the problem. */
-int ic_cli_trace_file(const char *file, ic_trace_options *opt, ic_cli_traced *t);
+/* 0, or the exit code after printing the error: with the file's name, or
+ * for the fit (when fit_tol > 0, the curves' B-splines at fit_tol) with
+ * "intercurve COMMAND:"; opt->has_box and box are set from the problem. */
+int ic_cli_trace_file(const char *file, ic_trace_options *opt, double fit_tol, const char *command,
+                      ic_cli_traced *t);
 void ic_cli_traced_free(ic_cli_traced *t);
 
 #endif

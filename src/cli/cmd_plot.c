@@ -113,16 +113,14 @@ int ic_cmd_plot(int argc, char **argv)
     to.exact_paths = !v[OPT_NO_EXACT].given;
     to.threads = (int)v[OPT_THREADS].integer;
     ic_cli_traced t;
-    if ((rc = ic_cli_trace_file(file, &to, &t)) != 0)
+    /* the curves are drawn through their B-splines (docs/plots.md) */
+    if ((rc = ic_cli_trace_file(file, &to, IC_TRACE_FIT_TOL_DEFAULT, "plot", &t)) != 0)
         return rc;
     ic_plot_scene scene;
     ic_plot_scene_of_problem(&scene, t.problem, t.res);
     ic_error err;
     ic_error_clear(&err);
-    /* the curves are drawn through their B-splines (docs/plots.md) */
-    ic_status st = ic_trace_fit(t.res, t.pair, IC_TRACE_FIT_TOL_DEFAULT, &err);
-    if (st == IC_OK)
-        st = ic_plot_write(v[OPT_OUTPUT].text, &scene, &po, &err);
+    const ic_status st = ic_plot_write(v[OPT_OUTPUT].text, &scene, &po, &err);
     if (st != IC_OK)
         fprintf(stderr, "intercurve plot: %s\n", err.message);
     ic_cli_traced_free(&t);

@@ -1,8 +1,7 @@
 /* intercurve surfaces: every surface of a STEP or IGES file, so that a
  * problem file can name two of them (docs/cad-files.md). */
 #include "cli/cli.h"
-#include "io/cad.h"
-#include "io/cad_write.h"
+#include "api/api.h"
 
 enum { OPT_FORMAT, NOPTIONS };
 
@@ -36,18 +35,15 @@ int ic_cmd_surfaces(int argc, char **argv)
     int rc = ic_cli_parse(&SURFACES, argc, argv, &file, v);
     if (rc != 0)
         return rc == IC_CLI_HELP ? 0 : rc;
-    ic_cad_surface *list = NULL;
-    int n = 0;
-    ic_cad_info info;
     ic_error err;
     ic_error_clear(&err);
-    ic_status st = ic_cad_list(file, IC_CAD_ANY, &list, &n, &info, &err);
-    if (st != IC_OK) {
+    int read_failed;
+    const ic_status st =
+        ic_api_list_surfaces(stdout, file, v[OPT_FORMAT].choice == 1, &read_failed, &err);
+    if (st != IC_OK && read_failed) {
         ic_cli_print_error(NULL, &err); /* the message begins with the file */
         return st == IC_ERR_NOMEM ? EXIT_COMPUTE : EXIT_INPUT;
     }
-    st = ic_cad_write_list(stdout, file, &info, list, n, v[OPT_FORMAT].choice == 1, &err);
-    ic_cad_list_free(list, n);
     if (st == IC_OK && fflush(stdout) == 0)
         return 0;
     fprintf(stderr, "intercurve: cannot write the output (%s)\n",

@@ -186,17 +186,10 @@ int ic_cmd_trace(int argc, char **argv)
     opt.threads = (int)v[OPT_THREADS].integer;
     if (v[OPT_TIME_LIMIT].given)
         opt.time_limit = v[OPT_TIME_LIMIT].real;
+    const double fit_tol = has_bsplines((out_format)v[OPT_FORMAT].choice) ? v[OPT_FIT_TOL].real : 0;
     ic_cli_traced t;
-    if ((rc = ic_cli_trace_file(file, &opt, &t)) != 0)
+    if ((rc = ic_cli_trace_file(file, &opt, fit_tol, "trace", &t)) != 0)
         return rc;
-    ic_error err;
-    ic_error_clear(&err);
-    if (has_bsplines((out_format)v[OPT_FORMAT].choice) &&
-        ic_trace_fit(t.res, t.pair, v[OPT_FIT_TOL].real, &err) != IC_OK) {
-        fprintf(stderr, "intercurve trace: %s\n", err.message);
-        ic_cli_traced_free(&t);
-        return EXIT_COMPUTE;
-    }
     trace_output o = {(out_format)v[OPT_FORMAT].choice, t.res, t.pair, ic_problem_title(t.problem)};
     rc = write_output(v[OPT_OUTPUT].text, &o);
     ic_cli_traced_free(&t);

@@ -1,0 +1,39 @@
+/* The library's entry points for the command (src/cli) beyond the public
+ * headers, which the bindings (bindings.c) share: a problem's pair, and the
+ * problem paired, traced and fitted in one call, so that `intercurve trace`
+ * and ic_problem_trace cannot drift apart; and the listing of a CAD file's
+ * surfaces, so that the command needs none of the CAD reader's internals. */
+#ifndef IC_API_H
+#define IC_API_H
+
+#include <stdio.h>
+
+#include "intercurve/problem.h"
+#include "intercurve/trace.h"
+
+/* The pair of the problem's surfaces (its one surface with itself for a
+ * self-intersection): ic_pair_new's statuses. */
+ic_status ic_api_problem_pair(ic_pair **pair, const ic_problem *problem, ic_error *err);
+
+/* The step of ic_api_trace_problem that failed, for the caller's message. */
+typedef enum { IC_API_PAIR, IC_API_TRACE, IC_API_FIT } ic_api_stage;
+
+/* Pairs the problem's surfaces (its one surface with itself for a
+ * self-intersection), sets opt->has_box and opt->box from the problem,
+ * traces the pair with *opt (its progress callback included), then, when
+ * fit_tol > 0, fits the curves' B-splines at fit_tol (ic_trace_fit). *res
+ * and *pair belong to the caller (free res before pair); both are NULL on
+ * failure, when *failed says which step it was. */
+ic_status ic_api_trace_problem(ic_trace_result **res, ic_pair **pair, const ic_problem *problem,
+                               ic_trace_options *opt, double fit_tol, ic_api_stage *failed,
+                               ic_error *err);
+
+/* Every surface of the STEP or IGES file `path` written to f as text lines
+ * or (json) one document (docs/cad-files.md, "Listing a file"). On failure
+ * *read_failed is 1 when the file could not be read (the message begins
+ * with the path; IC_ERR_NOMEM, or the reader's statuses), 0 when writing
+ * to f failed (IC_ERR_IO, IC_ERR_NOMEM). */
+ic_status ic_api_list_surfaces(FILE *f, const char *path, int json, int *read_failed,
+                               ic_error *err);
+
+#endif

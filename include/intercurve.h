@@ -8,6 +8,7 @@
 #define INTERCURVE_H
 
 #include "intercurve/common.h"
+#include "intercurve/defaults.h"
 #include "intercurve/jet.h"
 #include "intercurve/expr.h"
 #include "intercurve/surface.h"

@@ -5,6 +5,7 @@
  * function does nothing. Each pointer argument is NULL in turn, the others
  * valid. test_api_args_cover.sh checks that every IC_API function of the
  * headers appears below. */
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -99,6 +100,12 @@ static void common_args(void)
     CHECK(ic_error_set(NULL, IC_ERR_INVALID, 0, "x") == IC_ERR_INVALID, "error_set NULL");
     ic_error_set_path(NULL, "x");
     ic_free(NULL);
+    /* a name that is no default, and NULL: NaN, never a crash */
+    CHECK(isnan(ic_default_value(NULL)) && isnan(ic_default_value("no-such-default")),
+          "default_value of no name");
+    CHECK(ic_default_value("tol") == IC_TRACE_TOL_DEFAULT &&
+              ic_default_value("mesh") == IC_PLOT_MESH_DEFAULT,
+          "default_value by name");
 }
 
 static void surface_args(fixture *fx)

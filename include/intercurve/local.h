@@ -22,6 +22,7 @@
 #define INTERCURVE_LOCAL_H
 
 #include "intercurve/common.h"
+#include "intercurve/defaults.h"
 #include "intercurve/surface.h"
 
 #ifdef __cplusplus

@@ -21,6 +21,7 @@
 
 #include "intercurve/common.h"
 #include "intercurve/bspline.h"
+#include "intercurve/defaults.h"
 #include "intercurve/local.h"
 
 #ifdef __cplusplus
@@ -283,10 +284,6 @@ typedef struct {
      *  pole: the parameters jump there) and is not given */
     int pcurve_dropped[2];
 } ic_curve_fit;
-
-/** The fit tolerance the command uses unless told (`--fit-tol`): a fraction
- *  of the problem's size (docs/bspline.md). */
-#define IC_TRACE_FIT_TOL_DEFAULT 1e-9
 
 /**
  * Fits every curve of a result of ic_trace on `pair` as B-splines (the

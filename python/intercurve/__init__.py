@@ -12,10 +12,11 @@ over the C library (libintercurve.so) with ctypes (docs/python.md).
 
 from ._lib import ComputationError, Error, InputError, library_path
 from .batch import batch
-from .problem import Problem, TraceResult
+from .problem import Problem, TraceResult, default
 from .results import BSpline, Branch, Curve, PointResult, SpecialPoint
 
 __version__ = "0.1.0"
 
 __all__ = ["Problem", "TraceResult", "Curve", "BSpline", "SpecialPoint", "PointResult",
-           "Branch", "batch", "Error", "InputError", "ComputationError", "library_path"]
+           "Branch", "batch", "default", "Error", "InputError", "ComputationError",
+           "library_path"]

@@ -109,6 +109,7 @@ def _declare(lib):
         "ic_problem_plot": (status, [c.c_char_p, vp, vp, c.c_int, c.c_int, c.c_double,
                                      c.c_double, c.c_int, c.c_int, c.c_int, err]),
         "ic_free": (None, [vp]),
+        "ic_default_value": (c.c_double, [c.c_char_p]),
     }
     for name, (res, args) in sigs.items():
         f = getattr(lib, name)

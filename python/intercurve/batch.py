@@ -5,7 +5,7 @@ import concurrent.futures
 import multiprocessing
 import os
 
-from .problem import DEFAULT_DEPTH, DEFAULT_FIT_TOL, DEFAULT_TOL, Problem
+from .problem import Problem
 
 
 def _as_problem(item):
@@ -22,8 +22,8 @@ def _trace_one(item, options):
     return _as_problem(item).trace(**options)
 
 
-def batch(problems, workers=None, client=None, tol=DEFAULT_TOL, depth=DEFAULT_DEPTH,
-          fit_tol=DEFAULT_FIT_TOL, time_limit=0.0, threads=1):
+def batch(problems, workers=None, client=None, tol=None, depth=None, fit_tol=None,
+          time_limit=0.0, threads=1):
     """Traces many problems (Problem objects, problem files' paths or dicts)
     and returns their TraceResults in the same order, the same as
     [p.trace(...) for p in problems] would give, number for number.
@@ -34,7 +34,8 @@ def batch(problems, workers=None, client=None, tol=DEFAULT_TOL, depth=DEFAULT_DE
     workers must be able to import intercurve and load the library. The
     first problem that fails raises its InputError or ComputationError.
     threads: each trace's own (Problem.trace; default 1: the workers have
-    the cores already)."""
+    the cores already). tol, depth and fit_tol as Problem.trace takes them
+    (None: the command's defaults)."""
     items = list(problems)
     options = dict(tol=tol, depth=depth, fit_tol=fit_tol, time_limit=time_limit,
                    threads=threads)

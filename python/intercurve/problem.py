@@ -11,12 +11,21 @@ from . import _lib
 from ._view import view_html
 from .results import Curve, PointResult, SpecialPoint
 
-# The defaults of `intercurve trace`, `point` and `plot` (docs/cli.md).
-DEFAULT_TOL = 1e-11        # relative: truncation error per step
-DEFAULT_DEPTH = 6          # start-point search: 2^6 cells per axis
-DEFAULT_FIT_TOL = 1e-9     # relative: B-spline fit; 0: no B-splines
-DEFAULT_ORDER = 4          # highest derivative at a point
-DEFAULT_POINT_TOL = 1e-6   # length: how far from the surfaces a point search may start
+def default(name):
+    """The library's default called `name`, as `intercurve trace`, `point`
+    and `plot` take it (include/intercurve/defaults.h, ic_default_value):
+    "tol", "depth", "fit_tol", "threads", "point_tol", "point_order",
+    "width", "height", "azimuth", "elevation", "frames", "mesh". A
+    parameter given as None below takes it."""
+    value = _lib.library().ic_default_value(name.encode())
+    if value != value:  # NaN: no such default
+        raise KeyError("intercurve has no default called %r" % name)
+    return value
+
+
+def _or_default(value, name, kind=float):
+    """value, or the library's default `name` when value is None."""
+    return kind(default(name)) if value is None else value
 
 
 # a problem that cannot be read is the caller's input too; only running out
@@ -107,16 +116,17 @@ class Problem:
         """True for a self-intersection problem."""
         return bool(_lib.library().ic_problem_is_self(self._handle))
 
-    def trace(self, tol=DEFAULT_TOL, depth=DEFAULT_DEPTH, fit_tol=DEFAULT_FIT_TOL,
-              time_limit=0.0, threads=0):
+    def trace(self, tol=None, depth=None, fit_tol=None, time_limit=0.0, threads=None):
         """Traces the whole intersection, as `intercurve trace`: tol is the
         truncation error per step and fit_tol the B-splines' tolerance, both
         fractions of the problem's size (fit_tol 0: no B-splines); depth the
         start-point search (1..9); time_limit seconds (0: none); threads
         that search at once (0..256, 0: all the cores; the same result
-        whatever the number). Returns a
-        TraceResult; InputError for values out of range, ComputationError
-        when the trace fails."""
+        whatever the number). None takes the command's default (default()).
+        Returns a TraceResult; InputError for values out of range,
+        ComputationError when the trace fails."""
+        tol, fit_tol = _or_default(tol, "tol"), _or_default(fit_tol, "fit_tol")
+        depth, threads = _or_default(depth, "depth", int), _or_default(threads, "threads", int)
         lib = _lib.library()
         res, pair, err = ctypes.c_void_p(), ctypes.c_void_p(), _lib.new_error()
         with self._lock:
@@ -137,8 +147,7 @@ class Problem:
                        threads=threads)
         return TraceResult(document, self, options, (res, pair))
 
-    def point(self, at=None, params=None, order=DEFAULT_ORDER, method="auto",
-              point_tol=DEFAULT_POINT_TOL):
+    def point(self, at=None, params=None, order=None, method="auto", point_tol=None):
         """The intersection's apparatus at one point, as `intercurve point`:
         the point by its coordinates `at` (x, y, z) or by `params` (the
         parametric surfaces' parameters, in problem order; for a
@@ -147,7 +156,10 @@ class Problem:
         "height-difference"; point_tol how far (a length) from the surfaces
         the search may start. Returns a PointResult. ComputationError when
         the point is not on the intersection (its message starts "not on the
-        surfaces"), InputError for wrong values."""
+        surfaces"), InputError for wrong values. None takes the command's
+        default (default())."""
+        order = _or_default(order, "point_order", int)
+        point_tol = _or_default(point_tol, "point_tol")
         if (at is None) == (params is None):
             raise _lib.InputError("give the point by `at` or by `params`, not both or neither")
         values = [float(x) for x in (at if at is not None else params)]
@@ -164,9 +176,8 @@ class Problem:
             text = _lib.take_text(buf, length)
         return PointResult(json.loads(text))
 
-    def plot(self, path, result=None, surfaces_only=False, size=(1400, 800), view=(35, 25),
-             frames=8, chart=True, mesh=36, tol=DEFAULT_TOL, depth=DEFAULT_DEPTH,
-             time_limit=0.0):
+    def plot(self, path, result=None, surfaces_only=False, size=None, view=None, frames=None,
+             chart=True, mesh=None, tol=None, depth=None, time_limit=0.0):
         """Draws the problem, as `intercurve plot`, into `path`; the format
         follows its extension (every format `intercurve plot` writes: .svg,
         .png, .pdf, ...; docs/plots.md). result: a TraceResult of this
@@ -175,7 +186,13 @@ class Problem:
         surfaces_only=True not at all. size (width, height) in pixels (PNG)
         or points, view (azimuth, elevation) in degrees, frames: Frenet
         frames drawn along the curves (0..200), chart: the curvature and
-        torsion panel, mesh: cells per parameter or box axis (4..200)."""
+        torsion panel, mesh: cells per parameter or box axis (4..200). None
+        takes the command's default (default())."""
+        if size is None:
+            size = (int(default("width")), int(default("height")))
+        if view is None:
+            view = (default("azimuth"), default("elevation"))
+        frames, mesh = _or_default(frames, "frames", int), _or_default(mesh, "mesh", int)
         if result is None and not surfaces_only:
             result = self.trace(tol=tol, depth=depth, time_limit=time_limit, fit_tol=0.0)
         handle = None

@@ -10,13 +10,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-/* The ranges of `intercurve trace` and `plot` (src/cli/cmd_trace.c,
- * cmd_plot.c): relative tolerances at most MAX_REL_TOL of the problem's
- * size, frames and mesh cells per axis within these counts. */
-#define MAX_REL_TOL 1e-2
-#define MAX_FRAMES 200
-#define MIN_MESH 4
-#define MAX_MESH 200
+/* The ranges of `intercurve trace` and `plot` (include/intercurve/defaults.h):
+ * relative tolerances at most MAX_REL_TOL of the problem's size, frames and
+ * mesh cells per axis within these counts. */
+#define MAX_REL_TOL IC_TRACE_REL_TOL_MAX
+#define MAX_FRAMES IC_PLOT_FRAMES_MAX
+#define MIN_MESH IC_PLOT_MESH_MIN
+#define MAX_MESH IC_PLOT_MESH_MAX
 
 void ic_free(void *mem) { free(mem); }
 

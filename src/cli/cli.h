@@ -12,6 +12,11 @@
 
 enum { EXIT_INPUT = 1, EXIT_COMPUTE = 2 };
 
+/* A macro's value as the text of a default in an option table ("1e-11"):
+ * the tables take their defaults from include/intercurve/defaults.h. */
+#define IC_CLI_TEXT_OF_TOKENS(x) #x
+#define IC_CLI_TEXT_OF(x) IC_CLI_TEXT_OF_TOKENS(x)
+
 /* Commands */
 int ic_cmd_eval(int argc, char **argv);
 int ic_cmd_point(int argc, char **argv);

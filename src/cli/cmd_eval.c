@@ -21,7 +21,7 @@ static const ic_cli_option EVAL_OPTIONS[NOPTIONS] = {
                    .kind = IC_OPT_INT,
                    .lo = 0,
                    .hi = IC_JET_MAX_ORDER,
-                   .fallback = "4",
+                   .fallback = IC_CLI_TEXT_OF(IC_EVAL_ORDER_DEFAULT),
                    .help = "highest order of the partial derivatives"},
 };
 

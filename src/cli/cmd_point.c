@@ -4,9 +4,6 @@
 #include <math.h>
 #include <string.h>
 
-#define STRINGIFY_(x) #x
-#define STRINGIFY(x) STRINGIFY_(x) /* the constant's value in the help text */
-
 enum { OPT_AT, OPT_PARAMS, OPT_ORDER, OPT_METHOD, OPT_FORMAT, OPT_POINT_TOL, NOPTIONS };
 
 /* The formats, in the order of --format's choices. */
@@ -33,7 +30,7 @@ static const ic_cli_option POINT_OPTIONS[NOPTIONS] = {
                    .kind = IC_OPT_INT,
                    .lo = 1,
                    .hi = IC_LOCAL_MAX_ORDER,
-                   .fallback = "4",
+                   .fallback = IC_CLI_TEXT_OF(IC_POINT_ORDER_DEFAULT),
                    .help = "highest derivative c^(K) (closed-form: up to 3, and 3 when not\n"
                            "given)"},
     [OPT_METHOD] = {.name = "--method",
@@ -62,11 +59,11 @@ static const ic_cli_option POINT_OPTIONS[NOPTIONS] = {
                        .kind = IC_OPT_REAL,
                        .lo = 0,
                        .hi = INFINITY,
-                       .fallback = "1e-6",
+                       .fallback = IC_CLI_TEXT_OF(IC_LOCAL_POINT_TOL_DEFAULT),
                        .help = "how far from either surface the search for the point may\n"
                                "start (a length); farther is an error saying how far. It\n"
                                "widens the search only: the point found must pass the\n"
-                               "surfaces' residual test, at most " STRINGIFY(
+                               "surfaces' residual test, at most " IC_CLI_TEXT_OF(
                                    IC_LOCAL_ON_SURFACE_REL) " (1 + |X|) from both"},
 };
 

@@ -26,10 +26,6 @@ typedef enum {
     FORMAT_IGES
 } out_format;
 
-/* a macro's value as the text of a default ("1e-9") */
-#define TEXT_OF_TOKENS(x) #x
-#define TEXT_OF(x) TEXT_OF_TOKENS(x)
-
 static const ic_cli_option TRACE_OPTIONS[NOPTIONS] = {
     [OPT_FORMAT] = {.name = "--format",
                     .metavar = "F",
@@ -49,30 +45,30 @@ static const ic_cli_option TRACE_OPTIONS[NOPTIONS] = {
                  .metavar = "T",
                  .kind = IC_OPT_REAL,
                  .lo = 0,
-                 .hi = 1e-2,
-                 .fallback = "1e-11",
+                 .hi = IC_TRACE_REL_TOL_MAX,
+                 .fallback = IC_CLI_TEXT_OF(IC_TRACE_TOL_DEFAULT),
                  .help = "truncation error allowed per step, a fraction of the problem's\n"
                          "size (the diagonal of the region searched)"},
     [OPT_DEPTH] = {.name = "--depth",
                    .metavar = "D",
                    .kind = IC_OPT_INT,
                    .lo = 1,
-                   .hi = 9,
-                   .fallback = "6",
+                   .hi = IC_TRACE_MAX_DEPTH,
+                   .fallback = IC_CLI_TEXT_OF(IC_TRACE_DEPTH_DEFAULT),
                    .help = "subdivision depth of the start-point search"},
     [OPT_TIME_LIMIT] = {.name = "--time-limit",
                         .metavar = "SECONDS",
                         .kind = IC_OPT_REAL,
                         .lo = 0,
-                        .hi = 1e6,
+                        .hi = IC_TRACE_TIME_LIMIT_MAX,
                         .help = "stop after this wall time with what was found (complete:\n"
                                 "false); without it the search's own cell budget bounds it"},
     [OPT_FIT_TOL] = {.name = "--fit-tol",
                      .metavar = "T",
                      .kind = IC_OPT_REAL,
                      .lo = 0,
-                     .hi = 1e-2,
-                     .fallback = TEXT_OF(IC_TRACE_FIT_TOL_DEFAULT),
+                     .hi = IC_TRACE_REL_TOL_MAX,
+                     .fallback = IC_CLI_TEXT_OF(IC_TRACE_FIT_TOL_DEFAULT),
                      .help = "the curves' B-splines in the json, vtk, step and iges outputs\n"
                              "(docs/bspline.md): what a pcurve's image may stray from the\n"
                              "curve, a fraction of the problem's size; the json report\n"
@@ -88,7 +84,7 @@ static const ic_cli_option TRACE_OPTIONS[NOPTIONS] = {
                      .kind = IC_OPT_INT,
                      .lo = 0,
                      .hi = IC_TRACE_MAX_THREADS,
-                     .fallback = "0",
+                     .fallback = IC_CLI_TEXT_OF(IC_TRACE_THREADS_DEFAULT),
                      .help = "threads that search at once, 0 for all the machine's cores;\n"
                              "the output is the same whatever N (docs/tracing.md, \"Threads\")"},
 };

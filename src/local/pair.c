@@ -46,7 +46,7 @@ void ic_local_defaults(ic_local_options *opt)
 {
     if (!opt)
         return;
-    opt->point_tol = 1e-6;
+    opt->point_tol = IC_LOCAL_POINT_TOL_DEFAULT; /* include/intercurve/defaults.h */
     opt->newton_tol = 1e-15;
     opt->max_newton = 60;
     opt->grid = 24;

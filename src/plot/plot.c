@@ -18,13 +18,14 @@ void ic_plot_defaults(ic_plot_options *opt)
 {
     if (!opt)
         return;
-    opt->width = 1400;
-    opt->height = 800;
-    opt->azimuth = 35;
-    opt->elevation = 25;
-    opt->frames = 8;
+    /* include/intercurve/defaults.h */
+    opt->width = IC_PLOT_WIDTH_DEFAULT;
+    opt->height = IC_PLOT_HEIGHT_DEFAULT;
+    opt->azimuth = IC_PLOT_AZIMUTH_DEFAULT;
+    opt->elevation = IC_PLOT_ELEVATION_DEFAULT;
+    opt->frames = IC_PLOT_FRAMES_DEFAULT;
     opt->chart = 1;
-    opt->mesh = 36;
+    opt->mesh = IC_PLOT_MESH_DEFAULT;
 }
 
 void ic_plot_scene_of_problem(ic_plot_scene *scene, const ic_problem *problem,
@@ -157,12 +158,13 @@ ic_status ic_plot_write(const char *path, const ic_plot_scene *scene, const ic_p
         return ic_error_set(err, IC_ERR_INVALID, 0,
                             "cannot tell the picture's format from '%s': use .svg, .png, .pdf or .html",
                             path);
-    if (opt->width < 200 || opt->height < 150 || opt->width > 10000 || opt->height > 10000)
-        return ic_error_set(
-            err, IC_ERR_INVALID, 0,
-            "a picture of %d x %d: the width must be in 200..10000 and the height in "
-            "150..10000",
-            opt->width, opt->height);
+    if (opt->width < IC_PLOT_WIDTH_MIN || opt->height < IC_PLOT_HEIGHT_MIN ||
+        opt->width > IC_PLOT_SIZE_MAX || opt->height > IC_PLOT_SIZE_MAX)
+        return ic_error_set(err, IC_ERR_INVALID, 0,
+                            "a picture of %d x %d: the width must be in %d..%d and the height in "
+                            "%d..%d",
+                            opt->width, opt->height, IC_PLOT_WIDTH_MIN, IC_PLOT_SIZE_MAX,
+                            IC_PLOT_HEIGHT_MIN, IC_PLOT_SIZE_MAX);
     if (scene->nsurfaces < 1 || scene->nsurfaces > 2)
         return ic_error_set(err, IC_ERR_INVALID, 0, "a picture shows one or two surfaces");
     if (fmt == FMT_HTML) /* the interactive page (plot_html.c) */

@@ -16,17 +16,17 @@ void ic_trace_defaults(ic_trace_options *opt)
     memset(opt, 0, sizeof *opt);
     /* fractions of the problem's size L (ic_trace_problem_scale): about the
      * absolute values of earlier versions for the bundled examples, whose L
-     * is 3 to 14 */
-    opt->tol = 1e-11;
-    opt->chord = 1e-4;
-    opt->max_step = 0.05;
-    opt->min_step = 1e-13;
-    opt->order = 6;
-    opt->max_points = 100000;
-    opt->depth = 6;
-    opt->shape_tol = 1e-6;
+     * is 3 to 14 (include/intercurve/defaults.h) */
+    opt->tol = IC_TRACE_TOL_DEFAULT;
+    opt->chord = IC_TRACE_CHORD_DEFAULT;
+    opt->max_step = IC_TRACE_MAX_STEP_DEFAULT;
+    opt->min_step = IC_TRACE_MIN_STEP_DEFAULT;
+    opt->order = IC_TRACE_ORDER_DEFAULT;
+    opt->max_points = IC_TRACE_MAX_POINTS_DEFAULT;
+    opt->depth = IC_TRACE_DEPTH_DEFAULT;
+    opt->shape_tol = IC_TRACE_SHAPE_TOL_DEFAULT;
     opt->exact_paths = 1;
-    opt->threads = 0; /* all the cores */
+    opt->threads = IC_TRACE_THREADS_DEFAULT; /* all the cores */
     ic_local_defaults(&opt->local);
 }
 

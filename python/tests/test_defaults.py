@@ -1,0 +1,63 @@
+"""The package's defaults are the library's (include/intercurve/defaults.h,
+through ic_default_value): the same values the command prints in its --help,
+so Python, the command and docs/cli.md cannot drift apart."""
+
+import os
+import re
+import subprocess
+
+import pytest
+
+import intercurve as ic
+
+
+def command_defaults(command):
+    """{option: default text} from `intercurve COMMAND --help`, the command
+    next to the library under test."""
+    lib = os.environ.get("INTERCURVE_LIB")
+    if not lib:
+        pytest.skip("INTERCURVE_LIB not set: no command to ask")
+    exe = os.path.join(os.path.dirname(lib), "intercurve")
+    text = subprocess.run([exe, command, "--help"], capture_output=True, text=True,
+                          check=True).stdout
+    out, option = {}, None
+    for line in text.splitlines():
+        m = re.match(r"  (--[a-z-]+)", line)
+        if m:
+            option = m.group(1)
+        d = re.search(r"default (\S+)$", line)
+        if option and d:
+            out[option] = d.group(1)
+    return out
+
+
+def test_trace_defaults_match_the_command():
+    d = command_defaults("trace")
+    assert float(d["--tol"]) == ic.default("tol") == 1e-11
+    assert int(d["--depth"]) == ic.default("depth") == 6
+    assert float(d["--fit-tol"]) == ic.default("fit_tol") == 1e-9
+    assert int(d["--threads"]) == ic.default("threads") == 0
+
+
+def test_point_and_plot_defaults_match_the_command():
+    p = command_defaults("point")
+    assert int(p["--order"]) == ic.default("point_order") == 4
+    assert float(p["--point-tol"]) == ic.default("point_tol") == 1e-6
+    q = command_defaults("plot")
+    assert q["--view"] == "%g,%g" % (ic.default("azimuth"), ic.default("elevation")) == "35,25"
+    assert q["--size"] == "%gx%g" % (ic.default("width"), ic.default("height")) == "1400x800"
+    assert int(q["--frames"]) == ic.default("frames") == 8
+    assert int(q["--mesh"]) == ic.default("mesh") == 36
+
+
+def test_unknown_default_is_an_error():
+    with pytest.raises(KeyError):
+        ic.default("no-such-option")
+
+
+def test_trace_without_options_uses_the_defaults():
+    p = ic.Problem.load(os.path.join(os.path.dirname(__file__), "..", "..", "examples",
+                                     "viviani-implicit.json"))
+    r = p.trace()
+    assert r.options["tol"] == 1e-11 and r.options["depth"] == 6
+    assert r.options["fit_tol"] == 1e-9 and r.options["threads"] == 0

@@ -164,6 +164,8 @@ static void check_report(const cJSON *ro, const ic_trace_report *rep, const char
                                        "failures",
                                        "fit_tolerance",
                                        "fit_error",
+                                       "search_scale",
+                                       "scale",
                                        NULL};
     const int counts[] = {rep->cells,
                           rep->cells_excluded,
@@ -191,6 +193,8 @@ static void check_report(const cJSON *ro, const ic_trace_report *rep, const char
              cJSON_IsTrue(doc_get(ro, "exclusion_proven")) == !!rep->proven &&
              rep->method && doc_string_is(doc_get(ro, "method"), rep->method) &&
              doc_number_is(doc_get(ro, "smallest_cell"), rep->cell_size) &&
+             doc_number_is(doc_get(ro, "search_scale"), rep->search_scale) &&
+             doc_number_is(doc_get(ro, "scale"), rep->scale) &&
              cJSON_GetArraySize(doc_get(ro, "failures")) == rep->nfailures;
     for (int i = 0; ok && i < 11; i++)
         ok = doc_number_is(doc_get(ro, count_keys[i]), counts[i]);

@@ -2,6 +2,8 @@
 through ic_default_value): the same values the command prints in its --help,
 so Python, the command and docs/cli.md cannot drift apart."""
 
+import json
+import math
 import os
 import re
 import subprocess
@@ -61,3 +63,18 @@ def test_trace_without_options_uses_the_defaults():
     r = p.trace()
     assert r.options["tol"] == 1e-11 and r.options["depth"] == 6
     assert r.options["fit_tol"] == 1e-9 and r.options["threads"] == 0
+
+
+def test_report_says_which_size_each_stage_used():
+    """Two implicit surfaces are searched at the box's diagonal L0 (docs/tracing.md,
+    "Scale"); the rest of the trace and the fit at the found size L1 <= L0."""
+    path = os.path.join(os.path.dirname(__file__), "..", "..", "examples",
+                        "viviani-implicit.json")
+    with open(path) as f:
+        box = json.load(f)["box"]
+    diagonal = math.sqrt(sum((hi - lo) ** 2 for lo, hi in box))  # 5 sqrt(3)
+    rep = ic.Problem.load(path).trace().report
+    # the same few operations in another order: a few ulps
+    assert rep["search_scale"] == pytest.approx(diagonal, rel=1e-15)
+    assert 1e-3 * rep["search_scale"] <= rep["scale"] <= rep["search_scale"]
+    assert rep["fit_tolerance"] == pytest.approx(1e-9 * rep["scale"], rel=1e-15)

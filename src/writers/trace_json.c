@@ -194,6 +194,11 @@ static void report_json(json_out *j, const ic_trace_report *rep)
         ic_json_out_number(j, rep->fit_error);
     else
         ic_json_out_null(j);
+    /* which size L each stage's lengths are fractions of (docs/tracing.md, "Scale") */
+    ic_json_out_key(j, "search_scale");
+    ic_json_out_number(j, rep->search_scale);
+    ic_json_out_key(j, "scale");
+    ic_json_out_number(j, rep->scale);
     ic_json_out_end_object(j);
 }
 

@@ -1,5 +1,6 @@
 /* intercurve plot: the picture of a problem (docs/plots.md). */
 #include "cli/cli.h"
+#include "cli/trace_options.h"
 
 enum {
     OPT_OUTPUT,
@@ -55,28 +56,10 @@ static const ic_cli_option PLOT_OPTIONS[NOPTIONS] = {
                   .fallback = IC_CLI_TEXT_OF(IC_PLOT_MESH_DEFAULT),
                   .help = "mesh cells per parameter or box axis"},
     [OPT_NO_CHART] = {.name = "--no-chart", .kind = IC_OPT_FLAG, .help = "the 3D view only"},
-    [OPT_TOL] = {.name = "--tol",
-                 .metavar = "T",
-                 .kind = IC_OPT_REAL,
-                 .lo = 0,
-                 .hi = IC_TRACE_REL_TOL_MAX,
-                 .fallback = IC_CLI_TEXT_OF(IC_TRACE_TOL_DEFAULT),
-                 .help = "as for 'intercurve trace'"},
-    [OPT_DEPTH] = {.name = "--depth",
-                   .metavar = "D",
-                   .kind = IC_OPT_INT,
-                   .lo = 1,
-                   .hi = IC_TRACE_MAX_DEPTH,
-                   .fallback = IC_CLI_TEXT_OF(IC_TRACE_DEPTH_DEFAULT),
-                   .help = "as for 'intercurve trace'"},
-    [OPT_NO_EXACT] = {.name = "--no-exact", .kind = IC_OPT_FLAG, .help = "as for 'intercurve trace'"},
-    [OPT_THREADS] = {.name = "--threads",
-                     .metavar = "N",
-                     .kind = IC_OPT_INT,
-                     .lo = 0,
-                     .hi = IC_TRACE_MAX_THREADS,
-                     .fallback = IC_CLI_TEXT_OF(IC_TRACE_THREADS_DEFAULT),
-                     .help = "as for 'intercurve trace'"},
+    [OPT_TOL] = IC_CLI_OPTION_TOL("as for 'intercurve trace'"),
+    [OPT_DEPTH] = IC_CLI_OPTION_DEPTH("as for 'intercurve trace'"),
+    [OPT_NO_EXACT] = IC_CLI_OPTION_NO_EXACT("as for 'intercurve trace'"),
+    [OPT_THREADS] = IC_CLI_OPTION_THREADS("as for 'intercurve trace'"),
 };
 
 static const ic_cli_command PLOT = {

@@ -1,5 +1,6 @@
 /* intercurve trace: the whole intersection as JSON (docs/output-formats.md). */
 #include "cli/cli.h"
+#include "cli/trace_options.h"
 
 #include <math.h>
 
@@ -41,21 +42,9 @@ static const ic_cli_option TRACE_OPTIONS[NOPTIONS] = {
                     .metavar = "FILE",
                     .kind = IC_OPT_TEXT,
                     .help = "write to FILE (through a temporary file and a rename)"},
-    [OPT_TOL] = {.name = "--tol",
-                 .metavar = "T",
-                 .kind = IC_OPT_REAL,
-                 .lo = 0,
-                 .hi = IC_TRACE_REL_TOL_MAX,
-                 .fallback = IC_CLI_TEXT_OF(IC_TRACE_TOL_DEFAULT),
-                 .help = "truncation error allowed per step, a fraction of the problem's\n"
-                         "size (the diagonal of the region searched)"},
-    [OPT_DEPTH] = {.name = "--depth",
-                   .metavar = "D",
-                   .kind = IC_OPT_INT,
-                   .lo = 1,
-                   .hi = IC_TRACE_MAX_DEPTH,
-                   .fallback = IC_CLI_TEXT_OF(IC_TRACE_DEPTH_DEFAULT),
-                   .help = "subdivision depth of the start-point search"},
+    [OPT_TOL] = IC_CLI_OPTION_TOL("truncation error allowed per step, a fraction of the problem's\n"
+                                  "size (the diagonal of the region searched)"),
+    [OPT_DEPTH] = IC_CLI_OPTION_DEPTH("subdivision depth of the start-point search"),
     [OPT_TIME_LIMIT] = {.name = "--time-limit",
                         .metavar = "SECONDS",
                         .kind = IC_OPT_REAL,
@@ -73,20 +62,14 @@ static const ic_cli_option TRACE_OPTIONS[NOPTIONS] = {
                              "(docs/bspline.md): what a pcurve's image may stray from the\n"
                              "curve, a fraction of the problem's size; the json report\n"
                              "gives the largest error found"},
-    [OPT_NO_EXACT] = {.name = "--no-exact",
-                      .kind = IC_OPT_FLAG,
-                      .help = "always search and march, even where a closed form applies\n"
-                              "(coaxial surfaces of revolution, a plane's ellipse on a\n"
-                              "quadric, two equal cylinders whose axes meet: docs/tracing.md,\n"
-                              "\"Exact paths\")"},
-    [OPT_THREADS] = {.name = "--threads",
-                     .metavar = "N",
-                     .kind = IC_OPT_INT,
-                     .lo = 0,
-                     .hi = IC_TRACE_MAX_THREADS,
-                     .fallback = IC_CLI_TEXT_OF(IC_TRACE_THREADS_DEFAULT),
-                     .help = "threads that search at once, 0 for all the machine's cores;\n"
-                             "the output is the same whatever N (docs/tracing.md, \"Threads\")"},
+    [OPT_NO_EXACT] =
+        IC_CLI_OPTION_NO_EXACT("always search and march, even where a closed form applies\n"
+                               "(coaxial surfaces of revolution, a plane's ellipse on a\n"
+                               "quadric, two equal cylinders whose axes meet: docs/tracing.md,\n"
+                               "\"Exact paths\")"),
+    [OPT_THREADS] =
+        IC_CLI_OPTION_THREADS("threads that search at once, 0 for all the machine's cores;\n"
+                              "the output is the same whatever N (docs/tracing.md, \"Threads\")"),
 };
 
 static const ic_cli_command TRACE = {

@@ -44,8 +44,7 @@ typedef struct {
     void (*unflatten)(const ic_pairing *p, const double *z, double params[2][2]);
     /* The search coordinates of a point: its parameters, or (x, y, z) for
      * two implicit surfaces. */
-    void (*flatten)(const ic_pairing *p, const double xyz[3], const double params[2][2],
-                    double *z);
+    void (*flatten)(const ic_pairing *p, const double xyz[3], const double params[2][2], double *z);
     /* The Newton system of a point on both surfaces in the plane through
      * X0 normal to t, over the search coordinates z: residuals F (lengths:
      * implicit equations divided by |grad f|), Jacobian J (dim columns),
@@ -85,11 +84,21 @@ typedef struct {
     int (*distinct)(const ic_pairing *p, const double *z, const double band[2]);
 } ic_pairing_kind;
 
+/* The operations of a kind's table, each bound to the kind file's static
+ * function of the same name: every kind file defines them all, so its table
+ * names only what differs (name, dim, nparams, and skip and distinct). */
+#define IC_PAIRING_OPERATIONS                                                                      \
+    .region = region, .enclosable = enclosable, .excluded = excluded, .overflows = overflows,      \
+    .newton = newton, .unflatten = unflatten, .flatten = flatten, .place = place,                  \
+    .contact_residuals = contact_residuals, .section = section, .step = step,                      \
+    .position = position, .loop_free = loop_free, .excluded_centred = excluded_centred,            \
+    .may_degenerate = may_degenerate
+
 struct ic_pairing {
     const ic_pairing_kind *kind;
     ic_surface *S[2];
-    int par[2];    /* which sheets are parametric (the loop tests' interface) */
-    int P, I;      /* parametric/implicit: the parametric and the implicit sheet */
+    int par[2];              /* which sheets are parametric (the loop tests' interface) */
+    int P, I;                /* parametric/implicit: the parametric and the implicit sheet */
     ic_jet_space *sp2, *sp3; /* first-order jets over (u, v) and (x, y, z) */
 };
 

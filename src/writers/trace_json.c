@@ -2,6 +2,7 @@
  * "JSON"): the curves with their points, the special points, the report. */
 #include "common/args.h"
 #include "intercurve/writers.h"
+#include "parametric.h"
 
 #include "json/json_out.h"
 
@@ -209,8 +210,7 @@ ic_status ic_trace_write_json(FILE *f, const ic_trace_result *res, const ic_pair
     IC_ARG_NOT_NULL(res, "res");
     IC_ARG_NOT_NULL(pair, "pair");
     int parametric[2];
-    for (int s = 0; s < 2; s++)
-        parametric[s] = ic_surface_get_kind(ic_pair_surface(pair, s)) == IC_PARAMETRIC;
+    ic_writer_parametric(pair, parametric);
     json_out j;
     ic_json_out_start(&j, f);
     ic_json_out_object(&j);

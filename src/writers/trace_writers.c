@@ -3,6 +3,7 @@
  * that they read back to the same doubles. */
 #include "common/args.h"
 #include "intercurve/writers.h"
+#include "parametric.h"
 
 #include <math.h>
 #include <string.h>
@@ -34,8 +35,7 @@ ic_status ic_trace_write_csv(FILE *f, const ic_trace_result *res, const ic_pair 
     IC_ARG_NOT_NULL(res, "res");
     IC_ARG_NOT_NULL(pair, "pair");
     int parametric[2];
-    for (int s = 0; s < 2; s++)
-        parametric[s] = ic_surface_get_kind(ic_pair_surface(pair, s)) == IC_PARAMETRIC;
+    ic_writer_parametric(pair, parametric);
     fputs("curve,s,x,y,z,u,v,p,q,tx,ty,tz,nx,ny,nz,bx,by,bz,kappa,tau,type\n", f);
     for (int i = 0; i < ic_trace_result_num_curves(res); i++) {
         const ic_trace_curve *c = ic_trace_result_curve(res, i);

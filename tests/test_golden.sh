@@ -8,6 +8,9 @@
 # With "examples", the bundled examples' documents only (capture.sh says why).
 set -uo pipefail
 build="$1" src="$2" only="${3:-}"
+# under the sanitizers, LeakSanitizer's list of the suppressions it used
+# (tests/lsan.supp: cairo's fonts) would join the plot's standard error
+export LSAN_OPTIONS="${LSAN_OPTIONS:+$LSAN_OPTIONS:}print_suppressions=0"
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 bash "$src/tests/golden/capture.sh" "$build" "$src" "$tmp/out" $only || exit 1

@@ -1,6 +1,9 @@
 /**
  * @file defaults.h
- * Every default and every range of the options users set, in one place:
+ * Every default and range of the options users set through the command, the
+ * entry points for other languages and the Python package, in one place
+ * (the bounds that are the library's own limits stay beside their types:
+ * IC_TRACE_MAX_DEPTH, IC_TRACE_MAX_THREADS, IC_LOCAL_MAX_ORDER):
  * the library's ic_trace_defaults, ic_local_defaults and ic_plot_defaults,
  * the checks of the entry points for other languages (bindings.h), the
  * command's option tables and its --help (hence docs/cli.md, which the
@@ -48,8 +51,10 @@ extern "C" {
 /* ic_local_options (ic_local_defaults; `intercurve point` and `eval`) */
 /** length: how far from the surfaces a point search may start (--point-tol) */
 #define IC_LOCAL_POINT_TOL_DEFAULT 1e-6
-/** the highest derivative c^(K) `intercurve point` gives (--order) */
+/** the highest derivative c^(K) `intercurve point` gives (--order); with
+ *  the closed forms, which stop at the third, that one unless told */
 #define IC_POINT_ORDER_DEFAULT 4
+#define IC_POINT_CLOSED_FORM_ORDER_DEFAULT 3
 /** the highest order of the derivative tensor `intercurve eval` gives (--order) */
 #define IC_EVAL_ORDER_DEFAULT 4
 
@@ -74,7 +79,8 @@ extern "C" {
 /**
  * The default or limit called `name`, for languages that cannot read the
  * macros above: "tol", "depth", "fit_tol", "threads", "rel_tol_max",
- * "time_limit_max", "point_tol", "point_order", "width", "height",
+ * "time_limit_max", "point_tol", "point_order", "point_closed_form_order",
+ * "width", "height",
  * "azimuth", "elevation", "frames", "mesh" (the command's option names);
  * NaN for any other name or NULL.
  */

@@ -70,7 +70,7 @@ IC_API int ic_method_from_name(const char *name);
 /** Tolerances of the local computations, with their units. */
 typedef struct {
     /** length: a given point farther than this from either surface is an
-     *  error that says how far (default 1e-6) */
+     *  error that says how far (IC_LOCAL_POINT_TOL_DEFAULT) */
     double point_tol;
     /** dimensionless: refinement stops when the residual is below
      *  newton_tol * (1 + |point|) (default 1e-15) */

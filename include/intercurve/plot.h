@@ -20,11 +20,13 @@ extern "C" {
 #endif
 
 typedef struct {
-    int width, height;         /**< pixels (PNG) or points (SVG, PDF); default 1400 x 800 */
-    double azimuth, elevation; /**< the view, degrees (default 35, 25) */
-    int frames;                /**< Frenet frames drawn along the curves (default 8) */
-    int chart;                 /**< 1: the curvature and torsion panel (default) */
-    int mesh;                  /**< mesh cells per parameter or box axis (default 36) */
+    /** pixels (PNG) or points (SVG, PDF); IC_PLOT_WIDTH_DEFAULT x IC_PLOT_HEIGHT_DEFAULT */
+    int width, height;
+    /** the view, degrees (IC_PLOT_AZIMUTH_DEFAULT, IC_PLOT_ELEVATION_DEFAULT) */
+    double azimuth, elevation;
+    int frames;    /**< Frenet frames drawn along the curves (IC_PLOT_FRAMES_DEFAULT) */
+    int chart;     /**< 1: the curvature and torsion panel (default) */
+    int mesh;      /**< mesh cells per parameter or box axis (IC_PLOT_MESH_DEFAULT) */
 } ic_plot_options;
 
 IC_API void ic_plot_defaults(ic_plot_options *opt);

@@ -39,17 +39,17 @@ typedef struct {
      * box of the parametric surfaces over their domains, cut to the box
      * (docs/tracing.md, "Scale"). A problem scaled by any factor is then
      * traced with the same points and the same relative accuracy. */
-    double tol;      /**< relative: truncation error allowed per step (default 1e-11) */
-    double chord;    /**< relative: chord-height bound of a step (default 1e-4) */
-    double max_step; /**< relative: longest step (default 0.05) */
-    double min_step; /**< relative: a step shorter than this fails (default 1e-13) */
-    int order;       /**< predictor order K, 3..12 (default 6) */
-    int max_points;  /**< point budget of one curve (default 100000) */
+    double tol;      /**< relative: truncation error allowed per step (IC_TRACE_TOL_DEFAULT) */
+    double chord;    /**< relative: chord-height bound of a step (IC_TRACE_CHORD_DEFAULT) */
+    double max_step; /**< relative: longest step (IC_TRACE_MAX_STEP_DEFAULT) */
+    double min_step; /**< relative: a step shorter than this fails (IC_TRACE_MIN_STEP_DEFAULT) */
+    int order;       /**< predictor order K, 3..12 (IC_TRACE_ORDER_DEFAULT) */
+    int max_points;  /**< point budget of one curve (IC_TRACE_MAX_POINTS_DEFAULT) */
     int has_box;     /**< 1: stop when the curve leaves box */
     double box[3][2];
-    int depth;        /**< subdivision depth of the start-point search, 1..IC_TRACE_MAX_DEPTH (default 6:
-                       *   64 cells per axis) */
-    double shape_tol; /**< relative tolerance of the shape tests (default 1e-6) */
+    int depth;        /**< subdivision depth of the start-point search, 1..IC_TRACE_MAX_DEPTH
+                       *   (IC_TRACE_DEPTH_DEFAULT: 2^6 cells per axis) */
+    double shape_tol; /**< relative tolerance of the shape tests (IC_TRACE_SHAPE_TOL_DEFAULT) */
     double time_limit; /**< seconds of wall time for the whole trace; 0: none (default).
                         *   Reaching it stops with what was found, complete = 0 */
     /** called about twice a second during a long trace (NULL: never):
@@ -169,7 +169,7 @@ typedef struct {
 
 #define IC_TRACE_MAX_FAILURES 16
 
-/** What the search proved and what it only sampled (trace.md). */
+/** What the search proved and what it only sampled (docs/tracing.md). */
 typedef struct {
     /** 1 only when every part of the search space was proven free of
      *  curves, proven loop-free and passed near by what was traced, or
@@ -190,7 +190,7 @@ typedef struct {
      *  that nothing found passes near: not proven empty */
     int unproven_cells;
     /** leaf cells not excluded where the normal cones prove that no closed
-     *  curve lies wholly inside (the loop test, trace.md); these two counts
+     *  curve lies wholly inside (the loop test, docs/tracing.md); these two counts
      *  include the leaves of the finer searches */
     int loop_free_cells;
     /** leaf cells not excluded where the loop test fails: the only places a

@@ -11,21 +11,33 @@ from . import _lib
 from ._view import view_html
 from .results import Curve, PointResult, SpecialPoint
 
+# the names ic_default_value knows: the integers, then the reals
+_INT_DEFAULTS = ("depth", "threads", "point_order", "point_closed_form_order", "width",
+                 "height", "frames", "mesh")
+_REAL_DEFAULTS = ("tol", "fit_tol", "rel_tol_max", "time_limit_max", "point_tol", "azimuth",
+                  "elevation")
+
+
 def default(name):
-    """The library's default called `name`, as `intercurve trace`, `point`
-    and `plot` take it (include/intercurve/defaults.h, ic_default_value):
-    "tol", "depth", "fit_tol", "threads", "point_tol", "point_order",
-    "width", "height", "azimuth", "elevation", "frames", "mesh". A
-    parameter given as None below takes it."""
+    """The library's default (or limit) called `name`, as `intercurve trace`,
+    `point` and `plot` take it (include/intercurve/defaults.h,
+    ic_default_value): an int for "depth", "threads", "point_order",
+    "point_closed_form_order", "width", "height", "frames", "mesh", a float
+    for "tol", "fit_tol", "rel_tol_max", "time_limit_max", "point_tol",
+    "azimuth", "elevation". A parameter given as None below takes it.
+    KeyError for any other name."""
+    if name not in _INT_DEFAULTS + _REAL_DEFAULTS:
+        raise KeyError("intercurve has no default called %r; the defaults: %s"
+                       % (name, ", ".join(_INT_DEFAULTS + _REAL_DEFAULTS)))
     value = _lib.library().ic_default_value(name.encode())
-    if value != value:  # NaN: no such default
-        raise KeyError("intercurve has no default called %r" % name)
-    return value
+    if value != value:  # NaN: the library does not know it
+        raise KeyError("the library has no default called %r" % name)
+    return int(value) if name in _INT_DEFAULTS else value
 
 
-def _or_default(value, name, kind=float):
+def _or_default(value, name):
     """value, or the library's default `name` when value is None."""
-    return kind(default(name)) if value is None else value
+    return default(name) if value is None else value
 
 
 # a problem that cannot be read is the caller's input too; only running out
@@ -126,7 +138,7 @@ class Problem:
         Returns a TraceResult; InputError for values out of range,
         ComputationError when the trace fails."""
         tol, fit_tol = _or_default(tol, "tol"), _or_default(fit_tol, "fit_tol")
-        depth, threads = _or_default(depth, "depth", int), _or_default(threads, "threads", int)
+        depth, threads = _or_default(depth, "depth"), _or_default(threads, "threads")
         lib = _lib.library()
         res, pair, err = ctypes.c_void_p(), ctypes.c_void_p(), _lib.new_error()
         with self._lock:
@@ -158,7 +170,9 @@ class Problem:
         the point is not on the intersection (its message starts "not on the
         surfaces"), InputError for wrong values. None takes the command's
         default (default())."""
-        order = _or_default(order, "point_order", int)
+        # the closed forms stop at the third derivative: their default order
+        order = _or_default(order, "point_closed_form_order" if method == "closed-form"
+                            else "point_order")
         point_tol = _or_default(point_tol, "point_tol")
         if (at is None) == (params is None):
             raise _lib.InputError("give the point by `at` or by `params`, not both or neither")
@@ -189,10 +203,10 @@ class Problem:
         torsion panel, mesh: cells per parameter or box axis (4..200). None
         takes the command's default (default())."""
         if size is None:
-            size = (int(default("width")), int(default("height")))
+            size = (default("width"), default("height"))
         if view is None:
             view = (default("azimuth"), default("elevation"))
-        frames, mesh = _or_default(frames, "frames", int), _or_default(mesh, "mesh", int)
+        frames, mesh = _or_default(frames, "frames"), _or_default(mesh, "mesh")
         if result is None and not surfaces_only:
             result = self.trace(tol=tol, depth=depth, time_limit=time_limit, fit_tol=0.0)
         handle = None

@@ -53,8 +53,24 @@ def test_point_and_plot_defaults_match_the_command():
 
 
 def test_unknown_default_is_an_error():
-    with pytest.raises(KeyError):
-        ic.default("no-such-option")
+    for name in ("no-such-option", None, ""):
+        with pytest.raises(KeyError):
+            ic.default(name)
+
+
+def test_integer_defaults_are_ints():
+    assert isinstance(ic.default("depth"), int) and isinstance(ic.default("mesh"), int)
+    assert isinstance(ic.default("tol"), float)
+
+
+def test_closed_form_point_takes_its_order_as_the_command_does():
+    """`intercurve point --method closed-form` without --order gives order 3
+    (the closed forms' highest); so does the package."""
+    p = ic.Problem.load(os.path.join(os.path.dirname(__file__), "..", "..", "examples",
+                                     "viviani.json"))
+    r = p.point(at=(1.5, 0.8660254037844386, 1.0), method="closed-form")
+    assert ic.default("point_closed_form_order") == 3
+    assert r.order == 3
 
 
 def test_trace_without_options_uses_the_defaults():

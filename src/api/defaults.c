@@ -1,6 +1,7 @@
 /* The defaults and limits of include/intercurve/defaults.h by name, for the
  * languages that cannot read its macros (the Python package). */
 #include "intercurve/defaults.h"
+#include "intercurve/local.h"
 
 #include <math.h>
 #include <string.h>
@@ -19,6 +20,7 @@ static const named_default DEFAULTS[] = {
     {"time_limit_max", IC_TRACE_TIME_LIMIT_MAX},
     {"point_tol", IC_LOCAL_POINT_TOL_DEFAULT},
     {"point_order", IC_POINT_ORDER_DEFAULT},
+    {"point_closed_form_order", IC_POINT_CLOSED_FORM_ORDER_DEFAULT},
     {"width", IC_PLOT_WIDTH_DEFAULT},
     {"height", IC_PLOT_HEIGHT_DEFAULT},
     {"azimuth", IC_PLOT_AZIMUTH_DEFAULT},
@@ -34,3 +36,7 @@ double ic_default_value(const char *name)
             return DEFAULTS[i].value;
     return NAN;
 }
+
+/* the closed forms' default order is the highest they give */
+_Static_assert(IC_POINT_CLOSED_FORM_ORDER_DEFAULT == IC_CLOSED_FORM_MAX_ORDER,
+               "the closed-form default order must be the closed forms' highest");

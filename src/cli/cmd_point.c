@@ -114,7 +114,7 @@ static int print_point(const char *name, ic_pair *pair, const ic_local_point *pt
     const ic_method method = (ic_method)ic_method_from_name(v[OPT_METHOD].text);
     /* the closed forms stop at the third derivative: their default order */
     const int order = method == IC_METHOD_CLOSED_FORM && !v[OPT_ORDER].given
-                          ? IC_CLOSED_FORM_MAX_ORDER
+                          ? IC_POINT_CLOSED_FORM_ORDER_DEFAULT
                           : (int)v[OPT_ORDER].integer;
     ic_local_result res;
     ic_status st = ic_local_apparatus(pair, &res, pt, order, method, opt, &err);

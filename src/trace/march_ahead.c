@@ -3,7 +3,7 @@
  * start candidates marched ahead by the trace's threads. A march depends on
  * the pair and its start alone; what the trace makes of it (its ends
  * located and recorded, the curve added, the candidates it covers) stays in
- * the serial order (trace.c), which takes a candidate's marches done ahead
+ * the serial order (candidates.c), which takes a candidate's marches done ahead
  * when it comes to trace that candidate and otherwise marches itself: the
  * result is the same whatever the number of threads. Candidates that the
  * trace skips at their turn (a curve traced meanwhile covers them) were
@@ -40,7 +40,7 @@ static ic_status march_one(ic_tracer *tr, const ic_local_point *pt, int dir, ic_
     if (st == IC_ERR_NOMEM)
         return IC_OK; /* recorded: the trace ends there */
     const int n = ic_tracer_num_points(tr);
-    /* room for one more: the end's tangential point (trace.c) */
+    /* room for one more: the end's tangential point (finish_end, curve_ends.c) */
     if (!(m->pts[k] = malloc((size_t)(n + 1) * sizeof *m->pts[k])))
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
     if (n > 0)
@@ -106,7 +106,7 @@ static void march_candidate(void *ctx, int k, ic_pair *pair)
 }
 
 /* Whether the serial order will likely trace candidate j as things stand:
- * no curve traced covers it (trace.c's tests, less the pole gaps, which
+ * no curve traced covers it (candidates.c's tests, less the pole gaps, which
  * the serial order checks anyway). */
 static int untraced(const ic_trace_result *r, const ic_candidate *c, double radius)
 {

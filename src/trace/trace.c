@@ -1,8 +1,10 @@
 /*
- * The whole intersection (ic_trace): every start candidate not yet covered by
- * a traced curve starts one, traced in both directions; tangential curve ends
- * are located and recorded. The singular points (singular.c), the joining
- * (join.c) and the shapes (shape.c) have their own files.
+ * The whole intersection (ic_trace), the pipeline alone: the exact paths
+ * first (exact/exact.h); else the first search for start candidates and the
+ * scale of what it found, the curves from the candidates (candidates.c), the
+ * tangential points in the open cells and every branch out of the singular
+ * points (singular.c), the refinement of the open cells (resolve.c), the
+ * joining (join.c), and the report's verdict.
  */
 #include "common/args.h"
 #include "core/trace_constants.h"
@@ -10,13 +12,8 @@
 #include "trace_internal.h"
 #include "march_ahead.h"
 #include "workers.h"
-#include "common/vec3.h"
 #include "local/pair_access.h"
 
-#include <float.h>
-#include <math.h>
-#include <stdarg.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 

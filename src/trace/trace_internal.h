@@ -27,15 +27,10 @@ typedef struct {
     double lo[4], hi[4];     /* the cell in the search's coordinates */
 } ic_unresolved;
 
-/* march.c: the options with their lengths made absolute for a problem of
- * size L (tol, chord, max_step, min_step times L; the locators' scale L),
- * and a tracer taking such options. */
-ic_trace_options ic_trace_absolute_options(const ic_trace_options *opt, double L);
+/* march.c: a tracer taking options made absolute (ic_trace_absolute_options,
+ * core/options.h). */
 ic_status ic_tracer_new_absolute(ic_tracer **tr, ic_pair *pair, const ic_trace_options *opt,
                                  ic_error *err);
-
-/* Seconds on the monotonic clock. */
-double ic_trace_now(void);
 /* ic_tracer_run stops a curve (IC_TRACE_BUDGET) past this time (march.c). */
 void ic_tracer_set_deadline(ic_tracer *tr, double deadline);
 

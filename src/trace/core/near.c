@@ -6,8 +6,6 @@
 #include "near.h"
 #include "polyline.h"
 
-#include <math.h>
-
 int ic_trace_curves_near(const ic_trace_result *r, const double *x, double bound)
 {
     const int hit = r->index ? ic_curve_index_near(r->index, r, x, bound) : -1;

@@ -4,7 +4,6 @@
 #include "polyline.h"
 
 #include <math.h>
-#include <string.h>
 
 static double point_segment(const double *p, const double *a, const double *b)
 {

@@ -77,7 +77,7 @@ extern const char ic_trace_method_search[];
 void ic_trace_failure(ic_trace_report *rep, const char *fmt, ...) IC_PRINTF(2, 3);
 
 /* Records a located tangential point (once), classified; *index its slot
- * (trace/core/special.c). */
+ * (result.c). */
 ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local_point *pt,
                                int approximate, const ic_trace_options *opt, int *index);
 

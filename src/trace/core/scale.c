@@ -12,7 +12,6 @@
 #include "surface/surface_access.h"
 
 #include <math.h>
-#include <string.h>
 
 enum { SCALE_GRID = 17 };
 

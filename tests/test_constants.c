@@ -351,6 +351,149 @@ static void test_flat_branch_point(void)
     release(&t);
 }
 
+/* ---- poles and domain edges ---- */
+
+/* A parametric patch over the domain given; NULL on failure. */
+static ic_surface *patch(const char *const xyz[3], const double domain[2][2], const int per[2])
+{
+    ic_surface *s = NULL;
+    if (ic_surface_new_parametric(&s, xyz, NULL, NULL, 0, NULL, NULL) != IC_OK)
+        return NULL;
+    if (ic_surface_set_domain(s, domain, per, NULL) != IC_OK) {
+        ic_surface_free(s);
+        return NULL;
+    }
+    return s;
+}
+
+/* The unit sphere as a patch, u the longitude (wrapping) and v the
+ * latitude: the parametrization degenerates at its poles (0, 0, +-1). */
+static ic_surface *unit_sphere(void)
+{
+    static const char *const xyz[3] = {"cos(u)*cos(v)", "sin(u)*cos(v)", "sin(v)"};
+    static const double domain[2][2] = {{0, 2 * PI}, {-PI / 2, PI / 2}};
+    static const int per[2] = {1, 0};
+    return patch(xyz, domain, per);
+}
+
+/* A parametric surface A and the implicit formula fb traced with the
+ * default options (the search over A's domain). */
+static int trace_on_patch(traced *t, ic_surface *A, const char *fb)
+{
+    memset(t, 0, sizeof *t);
+    t->A = A;
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    ic_error err;
+    ic_status st = A ? ic_surface_new_implicit(&t->B, fb, NULL, 0, &err) : IC_ERR_INVALID;
+    if (st == IC_OK)
+        st = ic_pair_new(&t->pair, t->A, t->B, &err);
+    if (st == IC_OK)
+        st = ic_trace(&t->res, t->pair, &opt, &err);
+    if (st != IC_OK)
+        fprintf(stderr, "trace on a patch / %s: %s\n", fb, A ? err.message : "no patch");
+    return st == IC_OK;
+}
+
+/* IC_TRACE_APPROX_TANGENTIAL_ANGLE /10: the bead x^2 + y^2 + (z - 1.01)^2
+ * = 0.01^2 rests on the unit sphere's pole: the centres are 1.01 apart,
+ * the sum of the radii, so the two touch at (0, 0, 1) only, an isolated
+ * contact (written (z - 1 - 0.01)^2 - 0.01^2, so that they touch in
+ * doubles too: 1.01 rounded parts them by 1e-18). The locator refuses the
+ * pole (no normal there): the point is classified pi 1e-6 beside it (1e-6
+ * of the latitude's range), where the normals, tilting apart by
+ * d (1 + 1/0.01) at a distance d, are 3.2e-4 apart: a contact within 1e-3,
+ * a crossing beyond 1e-4. Its place is the search's Newton point, at most
+ * 1e-10 (L + |x|) from the bead, which lies 50 d^2 from the sphere there:
+ * d < 1e-5. */
+static void test_contact_at_pole(void)
+{
+    traced t;
+    if (!trace_on_patch(&t, unit_sphere(), "x^2 + y^2 + (z - 1 - 0.01)^2 - 0.01^2")) {
+        CHECK(0, "a bead on the pole: traced");
+        release(&t);
+        return;
+    }
+    const ic_trace_special *p = npoints(&t) == 1 ? ic_trace_result_special(t.res, 0) : NULL;
+    CHECK(ncurves(&t) == 0 && p && p->type == IC_POINT_ISOLATED_CONTACT &&
+              hypot(hypot(p->xyz[0], p->xyz[1]), p->xyz[2] - 1) <= 1e-5,
+          "a bead on the pole: %d curves, %d points (want the contact at the pole: %s)",
+          ncurves(&t), npoints(&t), p ? ic_point_type_name(p->type) : "none");
+    CHECK(complete(&t), "a bead on the pole: complete (%s)", first_failure(&t));
+    release(&t);
+}
+
+/* IC_TRACE_APPROX_TANGENTIAL_ANGLE x10: the plane z = 1 + th x, th = 3e-3,
+ * through the unit sphere's pole cuts it in the circle of radius
+ * sin(atan th) = th / sqrt(1 + th^2) through the pole, crossing the sphere
+ * at the constant angle atan th (cos of it: the plane's distance from the
+ * centre) between the normals: no tangential point anywhere. The pole is
+ * classified from beside it at about that angle: a crossing above 1e-3, a
+ * contact (a point on the curve) below 1e-2. */
+static void test_crossing_at_pole(void)
+{
+    const double th = 3e-3;
+    traced t;
+    if (!trace_on_patch(&t, unit_sphere(), "z - 1 - 3e-3*x")) {
+        CHECK(0, "a plane through the pole: traced");
+        release(&t);
+        return;
+    }
+    const double rho = th / sqrt(1 + th * th);
+    CHECK(ncurves(&t) == 1 && npoints(&t) == 0 && complete(&t),
+          "a plane through the pole: %d curves, %d points, complete %d (want 1, 0, 1)", ncurves(&t),
+          npoints(&t), complete(&t));
+    if (ncurves(&t) == 1) {
+        const ic_trace_curve *c = ic_trace_result_curve(t.res, 0);
+        const double L = 2 * PI * rho;
+        CHECK(c->closed && fabs(c->length - L) <= LENGTH_REL * L,
+              "a plane through the pole: closed %d, length %.17g (want %.17g)", c->closed,
+              c->length, L);
+        double worst = 0;
+        for (int i = 0; i < c->npoints; i++) {
+            const double *x = c->points[i].xyz;
+            worst = fmax(worst, fabs(sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) - 1));
+            worst = fmax(worst, fabs(x[2] - 1 - th * x[0]));
+        }
+        CHECK(worst <= 1e-12, "a plane through the pole: a point %.3g off the surfaces", worst);
+    }
+    release(&t);
+}
+
+/* IC_TRACE_POLE_GAP_CHORDS x10: the sheet z = 0 over [-1, 1]^2 against
+ * y ((x + 0.97)^2 + (y - 0.02)^2 - 0.005^2): the line y = 0 across the
+ * sheet (length 2) and the circle of radius 0.005 about (-0.97, 0.02)
+ * (length 0.01 pi), 0.031 to 0.041 from the line's end at (-1, 0, 0),
+ * where it left the domain. A start point within the gap that the joining
+ * bridges at a pole of such an end starts no curve: 50 chord heights
+ * (0.010, L = 2.04 where the first search left the intersection) leave the
+ * circle's start points, 500 (0.10) would drop them all. */
+static void test_loop_beside_edge(void)
+{
+    static const char *const xyz[3] = {"u", "v", "0"};
+    static const double domain[2][2] = {{-1, 1}, {-1, 1}};
+    static const int per[2] = {0, 0};
+    traced t;
+    if (!trace_on_patch(&t, patch(xyz, domain, per), "y*((x + 0.97)^2 + (y - 0.02)^2 - 2.5e-5)")) {
+        CHECK(0, "a loop beside an edge: traced");
+        release(&t);
+        return;
+    }
+    CHECK(ncurves(&t) == 2 && npoints(&t) == 0 && complete(&t),
+          "a loop beside an edge: %d curves, %d points, complete %d (want 2, 0, 1)", ncurves(&t),
+          npoints(&t), complete(&t));
+    int line = 0, loop = 0;
+    for (int i = 0; i < ncurves(&t); i++) {
+        const ic_trace_curve *c = ic_trace_result_curve(t.res, i);
+        line += !c->closed && fabs(c->length - 2) <= LENGTH_REL * 2;
+        loop += c->closed && fabs(c->length - 0.01 * PI) <= LENGTH_REL * 0.01 * PI;
+    }
+    CHECK(line == 1 && loop == 1,
+          "a loop beside an edge: %d lines of length 2, %d circles of length 0.01 pi (want 1, 1)",
+          line, loop);
+    release(&t);
+}
+
 /* ---- coincidence ---- */
 
 /* IC_TRACE_COINCIDENT_TOL: z = a (x^2 + y^2) and z = 0 touch at the origin
@@ -670,6 +813,9 @@ int main(void)
     test_close_branches();
     test_cone_apex();
     test_flat_branch_point();
+    test_contact_at_pole();
+    test_crossing_at_pole();
+    test_loop_beside_edge();
     test_coincidence_tolerance();
     test_coincident_region();
     test_locator_contacts();

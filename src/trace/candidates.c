@@ -232,7 +232,7 @@ ic_status ic_trace_from_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *p
     ic_status st = IC_OK;
     for (int i = 0; st == IC_OK && i < nc; i++) {
         if (cand[i].covered || ic_trace_point_near_found(r, cand[i].xyz, radius) ||
-            in_pole_gap(r, cand[i].xyz, 50 * opt->chord)) {
+            in_pole_gap(r, cand[i].xyz, IC_TRACE_POLE_GAP_CHORDS * opt->chord)) {
             lost += ahead && ahead[i].valid;
             continue;
         }

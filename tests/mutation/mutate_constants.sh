@@ -28,8 +28,10 @@
 # are halvings of a cell, so tenfold is about 3.3 levels: they are moved by 4
 # levels up and down (a factor 16 in cell size; not below 0).
 # The run takes about a minute of build and tests per mutation in a Debug
-# build (one CPU; contact_place alone 25 s), about 75 minutes for all 58
-# (IC_TRACE_MAX_CELLS x10 makes contact_place run 290 s).
+# build (one CPU; contact_place alone 25 s), about 100 minutes for all 76
+# (IC_TRACE_MAX_CELLS x10 makes contact_place run 290 s; IC_TRACE_STEP_ADVANCE
+# x10, where no step is accepted, makes trace run past 2 minutes:
+# TIMEOUT=120 counts it caught sooner).
 set -euo pipefail
 
 TREE=$(cd "$(dirname "$0")/../.." && pwd)

@@ -156,44 +156,92 @@
  * spatial hash of the traced segments. Only speed hangs on it: where the
  * index cannot answer from its cells, ic_curve_index_near says so (-1) and
  * every curve is scanned, so any cell size gives the same answers.
- * Pinned: PINNED_INDEX_CELL. */
+ * Not pinned: only time. A segment is entered in every cell that its box,
+ * widened by its sagitta, meets, and a query visits every cell of its
+ * ball's box (more than 4096: it scans), so a segment within the bound
+ * shares a visited cell. x10 and /10: the 1,378 golden documents
+ * unchanged; the egg-crate of 7,938 loops (eggcrate-k100) takes 39 s of
+ * CPU at x10 and 9 minutes at /10 instead of 15 s. */
 #define IC_TRACE_INDEX_CELL (1.0 / 128)
 
 /* chords (of the absolute chord-height bound, opt.chord): the least gap
  * the joining bridges where two curve ends meet at a degenerate point of a
  * parametrization (a sphere patch's pole: both ends left the domain there);
  * the joining bridges up to two last steps each side as well (join.c), so
- * this floor decides only where the last steps are shorter.
- * Pinned: PINNED_POLE_GAP. */
+ * this floor decides only where the last steps are shorter. A start point
+ * within it of such an end starts no curve (candidates.c: a sliver of the
+ * same curve).
+ * Pinned x10 (a loop 0.03 beside a line's end at a domain edge: its start
+ * points dropped). /10 only moves where a curve starts: no join of the
+ * tests or the bundled cases is decided by the floor (Viviani's gaps at
+ * the poles, 0.028 and 0.004, lie within two last steps, 0.069), and start
+ * points 5 to 50 chords from a pole's curve end start the same curve from
+ * there (golden: 28 documents differ, those of viviani, its NURBS twin and
+ * sphere-cylinder-branch: one curve each, lengths within 8e-12). */
 #define IC_TRACE_POLE_GAP_CHORDS 50.0
 
 /* chords: a start candidate the locator refused (deferred: at a pole, say)
  * is listed as a failure only when no traced curve or recorded point passes
  * within this many chord heights of it, after the joining has bridged the
- * arcs meeting at the pole. Pinned: PINNED_DEFERRED. */
+ * arcs meeting at the pole.
+ * Not pinned: every deferred candidate of the tests and the bundled cases
+ * (the poles of the parametric Viviani spheres and of
+ * sphere-cylinder-branch) lies on the bridge across its pole, 0 from it
+ * once the bridge's sagitta is allowed for, so any radius lists none; it
+ * decides only for another curve or point 0.2 to 20 chords from an
+ * unlocatable point, which no test or bundled case has (golden unchanged
+ * both ways). */
 #define IC_TRACE_DEFERRED_CHORDS 2.0
 
 /* The march's step control (march.c, step). */
 /* count: halvings of a step that failed before the march gives up on it;
  * 2^-60 takes the longest step (0.05 L) below the smallest one (1e-13 L)
- * with room, so min_step ends the halving first. Pinned: PINNED_HALVINGS. */
+ * with room, so min_step ends the halving first.
+ * Pinned /10 (six halvings: the flat saddle, the equal cylinders, the
+ * Whitney umbrella and the tangential arcs of test_trust fail). x10 cannot
+ * matter: h < min_step ends the loop within log2(max_step / min_step) = 39
+ * halvings at the defaults (38 at most tried in every test and bundled
+ * case); only max_step above 2^60 min_step reaches 60 (golden unchanged). */
 #define IC_TRACE_STEP_HALVINGS 60
 /* relative (of L + |x|): near a tangential point a step shorter than this
  * ends the march there (the tangential point is then located) instead of
  * halving on to min_step: steps this short resolve nothing at doubles'
- * precision around |x|. Pinned: PINNED_TANGENTIAL_MIN_STEP. */
+ * precision around |x|.
+ * Pinned x10 (test_trust: the Whitney umbrella's double curve ends short,
+ * 1.4e-9 of its length). /10 only adds points: the march creeps on by
+ * halved steps toward where the normals' angle falls below the local
+ * analysis's threshold, and /10 adds 1 to 9 points, each within 5e-10 of
+ * an old one (3e-7 at the offset 1e3 of viviani-1e3-offset), every other
+ * point within 1e-13 and every length within 2e-16 but the Whitney
+ * umbrella's (6e-11), whose approximate pinch point lands 4e-11 instead of
+ * 1.3e-10 from the origin (golden: 130 documents differ, by these points). */
 #define IC_TRACE_TANGENTIAL_MIN_STEP 1e-10
 /* fraction of the step h: the corrected point must advance at least this
  * far along the tangent, else the step is retried shorter (a corrector that
- * slid back along the curve, or onto another branch). Pinned:
- * PINNED_STEP_ADVANCE. */
+ * slid back along the curve, or onto another branch).
+ * Pinned x10 (no step advances 5 h: every trace test but contact_place
+ * fails or runs past 2 minutes). /10 cannot matter: the predicted point
+ * advances h (1 - kappa^2 h^2 / 6 + ...) and the accepted correction is
+ * below h / 2 but for steps under 2e3 tol (2e-8 L); the tests have five
+ * such, advancing 0.16 h to 0.5 h by tangential points, and accepting them
+ * changes no result (golden unchanged). */
 #define IC_TRACE_STEP_ADVANCE 0.5
 /* The largest correction accepted, max(TOLS tol, OF_STEP h): the predictor
  * of order K errs by about the truncation tolerance tol per step, so a
  * correction a thousand times larger means the corrector jumped (to
- * another branch or sheet); OF_STEP h keeps short steps from failing on
- * rounding. Used by both correctors (the transversal march and a
- * tangential curve's). Pinned: PINNED_CORRECTION. */
+ * another branch or sheet); TOLS tol is the bound of steps below 1e-5 L,
+ * OF_STEP h of longer ones. Used by both correctors (the transversal march
+ * and a tangential curve's).
+ * Not pinned, either, either way: they decide only where the predictor is
+ * poor, and there only the sampling. TOLS x10 and /10: by the Whitney
+ * umbrella's pinch point and in tangent-sphere-cylinder-domain (golden: 17
+ * documents differ, theirs: 4 to 11 points added or moved, lengths within
+ * 6e-11, the approximate pinch point 4e-11 or 1.6e-10 from the origin
+ * instead of 1.3e-10). OF_STEP x10 and /10 (56 and 97 documents): the
+ * Whitney umbrella likewise, and on NURBS patches x10 leaves 1 to 3 points
+ * fewer, /10 adds 1 to 19 or resamples the curve, their lengths within
+ * 3e-16. A case would need a jump to another branch by a correction
+ * between the two bounds; no test or bundled case has one. */
 #define IC_TRACE_CORRECTION_TOLS 1e3
 #define IC_TRACE_CORRECTION_OF_STEP 1e-3
 
@@ -202,7 +250,10 @@
  * (a curve end just off a tangential point, a candidate nudged off a pole;
  * ic_trace_add_special): relaxed from the local analysis's default because
  * such a point lies up to a step off the tangential point, where the angle
- * is already above the default threshold. Pinned: PINNED_APPROX_ANGLE. */
+ * is already above the default threshold.
+ * Pinned both ways (x10: a plane through a sphere patch's pole at 3e-3
+ * rad, taken for a contact there; /10: a bead resting on the pole, whose
+ * normals are 3.2e-4 apart where it is classified, lost). */
 #define IC_TRACE_APPROX_TANGENTIAL_ANGLE 1e-3
 
 #endif

@@ -40,7 +40,7 @@ extern "C" {
 /** threads: 0, all the machine's online cores (--threads) */
 #define IC_TRACE_THREADS_DEFAULT 0
 /** relative: the largest --tol and --fit-tol the command and the bindings
- *  take (a step of 1% of the problem's size resolves little) */
+ *  accept */
 #define IC_TRACE_REL_TOL_MAX 1e-2
 /** seconds: the largest --time-limit (0, the default: none) */
 #define IC_TRACE_TIME_LIMIT_MAX 1e6
@@ -54,6 +54,8 @@ extern "C" {
 /** the highest derivative c^(K) `intercurve point` gives (--order); with
  *  the closed forms, which stop at the third, that one unless told */
 #define IC_POINT_ORDER_DEFAULT 4
+/** the closed forms' default order: their highest, IC_CLOSED_FORM_MAX_ORDER
+ *  (a static assertion in src/api/defaults.c holds the two together) */
 #define IC_POINT_CLOSED_FORM_ORDER_DEFAULT 3
 /** the highest order of the derivative tensor `intercurve eval` gives (--order) */
 #define IC_EVAL_ORDER_DEFAULT 4

@@ -11,11 +11,9 @@ from . import _lib
 from ._view import view_html
 from .results import Curve, PointResult, SpecialPoint
 
-# the names ic_default_value knows: the integers, then the reals
+# the defaults that are counts (ic_default_value gives every value as a double)
 _INT_DEFAULTS = ("depth", "threads", "point_order", "point_closed_form_order", "width",
                  "height", "frames", "mesh")
-_REAL_DEFAULTS = ("tol", "fit_tol", "rel_tol_max", "time_limit_max", "point_tol", "azimuth",
-                  "elevation")
 
 
 def default(name):
@@ -26,12 +24,11 @@ def default(name):
     for "tol", "fit_tol", "rel_tol_max", "time_limit_max", "point_tol",
     "azimuth", "elevation". A parameter given as None below takes it.
     KeyError for any other name."""
-    if name not in _INT_DEFAULTS + _REAL_DEFAULTS:
-        raise KeyError("intercurve has no default called %r; the defaults: %s"
-                       % (name, ", ".join(_INT_DEFAULTS + _REAL_DEFAULTS)))
+    if not isinstance(name, str):
+        raise KeyError("a default's name is a string, not %r" % (name,))
     value = _lib.library().ic_default_value(name.encode())
     if value != value:  # NaN: the library does not know it
-        raise KeyError("the library has no default called %r" % name)
+        raise KeyError("intercurve has no default called %r (docs/python.md lists them)" % name)
     return int(value) if name in _INT_DEFAULTS else value
 
 

@@ -62,7 +62,6 @@ static ic_status first_search(ic_trace_result *r, ic_pair *pair, const ic_trace_
     /* the scale of the rest: where the first search left the intersection
      * (a parametric surface may reach far beyond it) */
     r->scale = ic_trace_found_scale(r->scale, p->cand, p->nc, p->unres, p->nu);
-    r->report.scale = r->scale;
     p->opt = ic_trace_absolute_options(user_opt, r->scale);
     r->index = ic_curve_index_new(IC_TRACE_INDEX_CELL * r->scale);
     if (st == IC_OK && !r->index)
@@ -145,7 +144,7 @@ static ic_status new_result(ic_trace_result **out, ic_pair *pair, const ic_trace
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory tracing");
     r->budget.cells_left = IC_TRACE_MAX_CELLS;
     r->scale = ic_trace_problem_scale(pair, user_opt);
-    r->report.search_scale = r->report.scale = r->scale;
+    r->report.search_scale = r->scale;
     r->report.method = ic_trace_method_search;
     *out = r;
     return IC_OK;
@@ -183,12 +182,12 @@ static ic_status trace(ic_trace_result **out, ic_pair *pair, const ic_trace_opti
     st = ic_trace_exact(r, pair, user_opt, &exact, err);
     if (st == IC_OK && !exact)
         st = general_path(r, pair, user_opt, err);
-    else /* the closed form's size of what it found */
-        r->report.scale = r->scale;
     if (st != IC_OK) {
         ic_trace_result_free(r);
         return st;
     }
+    /* the size the rest used: what the first search, or the closed form, found */
+    r->report.scale = r->scale;
     *out = r;
     return IC_OK;
 }

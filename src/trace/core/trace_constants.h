@@ -232,7 +232,7 @@
  * another branch or sheet); TOLS tol is the bound of steps below 1e-5 L,
  * OF_STEP h of longer ones. Used by both correctors (the transversal march
  * and a tangential curve's).
- * Not pinned, either, either way: they decide only where the predictor is
+ * Not pinned, either way: they decide only where the predictor is
  * poor, and there only the sampling. TOLS x10 and /10: by the Whitney
  * umbrella's pinch point and in tangent-sphere-cylinder-domain (golden: 17
  * documents differ, theirs: 4 to 11 points added or moved, lengths within

@@ -67,7 +67,7 @@ static int trace_implicit(traced *t, const char *fa, const char *fb, const doubl
 
 static int ncurves(const traced *t) { return ic_trace_result_num_curves(t->res); }
 static int npoints(const traced *t) { return ic_trace_result_num_specials(t->res); }
-static int complete(const traced *t) { return ic_trace_result_report(t->res)->complete; }
+static int complete(const traced *t) { return ic_trace_result_report(t->res)->tracer_complete; }
 static const char *first_failure(const traced *t)
 {
     const ic_trace_report *r = ic_trace_result_report(t->res);

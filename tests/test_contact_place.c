@@ -97,7 +97,7 @@ static void check_case(const contact_case *c)
         double d = 0;
         for (int k = 0; k < 3; k++)
             d = fmax(d, fabs(s->xyz[k] - c->truth[k]));
-        const int complete = ic_trace_result_report(r)->complete;
+        const int complete = ic_trace_result_report(r)->tracer_complete;
         if (s->approximate) {
             CHECK(c->may_be_approximate && !complete && d <= APPROX_TOL * L,
                   "%s: approximate (complete %d) %.3g from the contact", c->name, complete, d);

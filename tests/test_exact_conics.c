@@ -506,7 +506,7 @@ static void check_exact(const conic_case *c, const traced_pair *t)
 {
     const ic_trace_result *r = t->res[1];
     const ic_trace_report *rep = ic_trace_result_report(r);
-    CHECK(rep->complete && rep->proven && strcmp(rep->method, CLOSED_FORM) == 0 && rep->cells == 0,
+    CHECK(rep->tracer_complete && rep->proven && strcmp(rep->method, CLOSED_FORM) == 0 && rep->cells == 0,
           "%s: complete, in closed form (%s)", c->name, rep->method);
     const int nc = ic_trace_result_num_curves(r), ns = ic_trace_result_num_specials(r);
     if (!REQUIRE(nc == c->nellipses && ns == c->nbranch, "%s: %d curves, %d points; want %d, %d",
@@ -551,7 +551,7 @@ static void check_exact(const conic_case *c, const traced_pair *t)
 static void check_against_general(const conic_case *c, const traced_pair *t)
 {
     const ic_trace_result *g = t->res[0], *x = t->res[1];
-    CHECK(ic_trace_result_report(g)->complete, "%s: the general path is complete", c->name);
+    CHECK(ic_trace_result_report(g)->tracer_complete, "%s: the general path is complete", c->name);
     const int n = ic_trace_result_num_curves(g);
     if (!REQUIRE(n == ic_trace_result_num_curves(x) &&
                      ic_trace_result_num_specials(g) == ic_trace_result_num_specials(x),
@@ -755,9 +755,9 @@ static void plane_misses(void)
     if (trace_pair_both(&t, &E, &P, 3, "plane missing an ellipsoid")) {
         const ic_trace_result *x = t.res[1], *g = t.res[0];
         CHECK(strcmp(ic_trace_result_report(x)->method, CLOSED_FORM) == 0 &&
-                  ic_trace_result_report(x)->complete && ic_trace_result_num_curves(x) == 0 &&
+                  ic_trace_result_report(x)->tracer_complete && ic_trace_result_num_curves(x) == 0 &&
                   ic_trace_result_num_specials(x) == 0 && ic_trace_result_num_curves(g) == 0 &&
-                  ic_trace_result_num_specials(g) == 0 && ic_trace_result_report(g)->complete,
+                  ic_trace_result_num_specials(g) == 0 && ic_trace_result_report(g)->tracer_complete,
               "plane missing an ellipsoid: nothing, complete, in closed form and by the search");
     }
     release_pair(&t);

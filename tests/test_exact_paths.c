@@ -190,8 +190,8 @@ static void check_exact(traced_pair *t, const exact_case *c)
 {
     const ic_trace_result *r = t->res[1];
     const ic_trace_report *rep = ic_trace_result_report(r);
-    CHECK(rep->complete && rep->method && strcmp(rep->method, CLOSED_FORM) == 0,
-          "%s: complete %d, in closed form (%s)", c->name, rep->complete,
+    CHECK(rep->tracer_complete && rep->method && strcmp(rep->method, CLOSED_FORM) == 0,
+          "%s: complete %d, in closed form (%s)", c->name, rep->tracer_complete,
           rep->method ? rep->method : "null");
     const int nc = ic_trace_result_num_curves(r);
     CHECK(nc == c->ncircles && ic_trace_result_num_specials(r) == c->ncontacts,
@@ -236,8 +236,8 @@ static void check_against_general(traced_pair *t, const exact_case *c)
 {
     const ic_trace_result *g = t->res[0], *x = t->res[1];
     const ic_trace_report *rep = ic_trace_result_report(g);
-    CHECK(rep->complete && strcmp(rep->method, "search") == 0,
-          "%s: the general path is complete (%d) and searched", c->name, rep->complete);
+    CHECK(rep->tracer_complete && strcmp(rep->method, "search") == 0,
+          "%s: the general path is complete (%d) and searched", c->name, rep->tracer_complete);
     const int n = ic_trace_result_num_curves(g);
     CHECK(n == ic_trace_result_num_curves(x) && ic_trace_result_num_specials(g) ==
                                                     ic_trace_result_num_specials(x),

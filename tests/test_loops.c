@@ -166,9 +166,9 @@ static void test_refined_loop(void)
               "the bead's circle found: %d curves, length %.17g of %.17g",
               ic_trace_result_num_curves(res), cv ? cv->length : 0.0, L);
         CHECK(rep->refined_cells >= 1 && rep->uncovered_cells == 0 && rep->nfailures == 0 &&
-                  rep->complete,
+                  rep->tracer_complete,
               "refined %d, uncovered %d, failures %d, complete %d", rep->refined_cells,
-              rep->uncovered_cells, rep->nfailures, rep->complete);
+              rep->uncovered_cells, rep->nfailures, rep->tracer_complete);
         if (cv)
             printf("loop missed at depth 6, found by the finer search: length error %.2g\n",
                    fabs(cv->length - L) / L);

@@ -457,7 +457,7 @@ static void test_enneper_self(const char *dir)
     const double ku[] = {-2, 0, 2.5}, kv[] = {-1, 1.5};
     const int n = ic_trace_result_num_curves(t.res);
     const ic_trace_report *rep = ic_trace_result_report(t.res);
-    CHECK(n == 2 && rep->complete, "%d curves, complete %d", n, rep->complete);
+    CHECK(n == 2 && rep->tracer_complete, "%d curves, complete %d", n, rep->tracer_complete);
     int crossings = 0;
     for (int c = 0; c < n; c++) {
         const ic_trace_curve *curve = ic_trace_result_curve(t.res, c);

@@ -487,8 +487,8 @@ static void check_exact(traced *t, const conic_case *c)
 {
     const ic_trace_result *r = t->res[1];
     const ic_trace_report *rep = ic_trace_result_report(r);
-    CHECK(rep->complete && strcmp(rep->method, NETS) == 0, "%s: complete %d, %s", c->name,
-          rep->complete, rep->method);
+    CHECK(rep->tracer_complete && strcmp(rep->method, NETS) == 0, "%s: complete %d, %s", c->name,
+          rep->tracer_complete, rep->method);
     const int nc = ic_trace_result_num_curves(r), ns = ic_trace_result_num_specials(r);
     if (!REQUIRE(nc == c->nell && ns == c->nbranch, "%s: %d curves, %d points; want %d, %d",
                  c->name, nc, ns, c->nell, c->nbranch))
@@ -560,7 +560,7 @@ static void check_fit(traced *t, const conic_case *c)
 static void check_against_general(traced *t, const conic_case *c)
 {
     const ic_trace_result *g = t->res[0], *x = t->res[1];
-    CHECK(ic_trace_result_report(g)->complete, "%s: the general path is complete", c->name);
+    CHECK(ic_trace_result_report(g)->tracer_complete, "%s: the general path is complete", c->name);
     const int n = ic_trace_result_num_curves(g);
     if (!REQUIRE(n == ic_trace_result_num_curves(x) &&
                      ic_trace_result_num_specials(g) == ic_trace_result_num_specials(x),
@@ -738,7 +738,7 @@ static void off_patch(void)
     traced t;
     if (trace_case(&t, &c)) {
         const ic_trace_report *rep = ic_trace_result_report(t.res[1]);
-        CHECK(rep->complete && strcmp(rep->method, NETS) == 0 &&
+        CHECK(rep->tracer_complete && strcmp(rep->method, NETS) == 0 &&
                   ic_trace_result_num_curves(t.res[1]) == 0 &&
                   ic_trace_result_num_specials(t.res[1]) == 0 &&
                   ic_trace_result_num_curves(t.res[0]) == 0 &&

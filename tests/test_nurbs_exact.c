@@ -456,8 +456,8 @@ static void check_exact(traced *t, const net_case *c)
 {
     const ic_trace_result *r = t->res[1];
     const ic_trace_report *rep = ic_trace_result_report(r);
-    CHECK(rep->complete && strcmp(rep->method, NETS) == 0, "%s: complete %d, %s", c->name,
-          rep->complete, rep->method);
+    CHECK(rep->tracer_complete && strcmp(rep->method, NETS) == 0, "%s: complete %d, %s", c->name,
+          rep->tracer_complete, rep->method);
     const int nc = ic_trace_result_num_curves(r), np = ic_trace_result_num_specials(r);
     CHECK(nc == c->ncircles && np == c->ncontacts, "%s: %d circles and %d points, want %d, %d",
           c->name, nc, np, c->ncircles, c->ncontacts);
@@ -528,8 +528,8 @@ static void check_against_general(traced *t, const net_case *c)
 {
     const ic_trace_result *g = t->res[0], *x = t->res[1];
     const ic_trace_report *rep = ic_trace_result_report(g);
-    CHECK(rep->complete && strcmp(rep->method, "search") == 0,
-          "%s: the general path is complete (%d) and searched", c->name, rep->complete);
+    CHECK(rep->tracer_complete && strcmp(rep->method, "search") == 0,
+          "%s: the general path is complete (%d) and searched", c->name, rep->tracer_complete);
     const int n = ic_trace_result_num_curves(g);
     CHECK(n == ic_trace_result_num_curves(x) &&
               ic_trace_result_num_specials(g) == ic_trace_result_num_specials(x),
@@ -666,12 +666,12 @@ static void circle_off_patch(void)
     traced t;
     if (trace_case(&t, &c, 1)) {
         const ic_trace_report *rep = ic_trace_result_report(t.res[1]);
-        CHECK(strcmp(rep->method, NETS) == 0 && rep->complete &&
+        CHECK(strcmp(rep->method, NETS) == 0 && rep->tracer_complete &&
                   ic_trace_result_num_curves(t.res[1]) == 0 &&
                   ic_trace_result_num_specials(t.res[1]) == 0,
               "%s: nothing, in closed form (%s, %d curves)", c.name, rep->method,
               ic_trace_result_num_curves(t.res[1]));
-        CHECK(ic_trace_result_report(t.res[0])->complete &&
+        CHECK(ic_trace_result_report(t.res[0])->tracer_complete &&
                   ic_trace_result_num_curves(t.res[0]) == 0 &&
                   ic_trace_result_num_specials(t.res[0]) == 0,
               "%s: and nothing by the general path", c.name);

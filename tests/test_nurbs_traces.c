@@ -204,9 +204,9 @@ static void truth_line(problem_check *pc, const char *line)
     const int poles = strcmp(pc->name, "problem-viviani.json") == 0;
     const int pole_contact = strcmp(pc->name, "problem-sphere-plane-contact.json") == 0;
     if (sscanf(line, "curves %d", &n) == 1) {
-        CHECK(ic_trace_result_num_curves(res) == n && ic_trace_result_report(res)->complete,
+        CHECK(ic_trace_result_num_curves(res) == n && ic_trace_result_report(res)->tracer_complete,
               "%s: %d curves (want %d), complete %d", pc->name, ic_trace_result_num_curves(res),
-              n, ic_trace_result_report(res)->complete);
+              n, ic_trace_result_report(res)->tracer_complete);
     } else if (sscanf(line, "length %d %lf", &i, &L) == 2 && i >= 0 && i < 8) {
         const int c = match_curve(res, L, pc->used);
         if (!REQUIRE(c >= 0, "%s: no curve for length %g", pc->name, L))
@@ -366,7 +366,7 @@ static void test_knot_line(const char *file)
     if (!read_knot_truth(&k) || trace_named(&t, file) != 0)
         return;
     const int n = ic_trace_result_num_curves(t.res);
-    if (REQUIRE(n == 1 && ic_trace_result_report(t.res)->complete, "%d curves", n)) {
+    if (REQUIRE(n == 1 && ic_trace_result_report(t.res)->tracer_complete, "%d curves", n)) {
         const ic_trace_curve *c = ic_trace_result_curve(t.res, 0);
         CHECK_CLOSE(c->length, k.length, LENGTH_TOL, "the arc across the knot line");
         check_knot_point(c, &k);
@@ -389,8 +389,8 @@ static void test_viviani_pairings(void)
         if (trace_named(&t, files[k]) != 0)
             continue;
         const int n = ic_trace_result_num_curves(t.res);
-        if (REQUIRE(n == 1 && ic_trace_result_report(t.res)->complete, "%s: %d curves, complete %d",
-                    files[k], n, ic_trace_result_report(t.res)->complete))
+        if (REQUIRE(n == 1 && ic_trace_result_report(t.res)->tracer_complete, "%s: %d curves, complete %d",
+                    files[k], n, ic_trace_result_report(t.res)->tracer_complete))
             CHECK_CLOSE(ic_trace_result_curve(t.res, 0)->length, L, LENGTH_TOL, files[k]);
         check_special(t.res, files[k], "branch", branch, CONTACT_TOL, 0);
         release(&t);
@@ -405,7 +405,7 @@ static void test_with_primitive(void)
     if (trace_named(&t, "problem-cylinder-sphere-primitive.json") != 0)
         return;
     const int n = ic_trace_result_num_curves(t.res);
-    CHECK(n == 2 && ic_trace_result_report(t.res)->complete, "NURBS with a primitive: %d curves",
+    CHECK(n == 2 && ic_trace_result_report(t.res)->tracer_complete, "NURBS with a primitive: %d curves",
           n);
     for (int c = 0; c < n; c++) {
         const ic_trace_curve *curve = ic_trace_result_curve(t.res, c);
@@ -427,9 +427,9 @@ static void test_contact_at_pole(void)
     if (trace_named_with(&t, "problem-sphere-touch-nurbs-nurbs.json", general_path()) != 0)
         return;
     const double origin[3] = {0, 0, 0};
-    CHECK(ic_trace_result_num_curves(t.res) == 0 && ic_trace_result_report(t.res)->complete,
+    CHECK(ic_trace_result_num_curves(t.res) == 0 && ic_trace_result_report(t.res)->tracer_complete,
           "sphere touching a plane at its pole: %d curves, complete %d",
-          ic_trace_result_num_curves(t.res), ic_trace_result_report(t.res)->complete);
+          ic_trace_result_num_curves(t.res), ic_trace_result_report(t.res)->tracer_complete);
     check_special(t.res, "sphere touching a plane at its pole", "contact", origin,
                   CONTACT_POLE_TOL, 1);
     release(&t);
@@ -446,11 +446,11 @@ static void test_contact_at_pole_exact(void)
         return;
     const double origin[3] = {0, 0, 0};
     const ic_trace_report *rep = ic_trace_result_report(t.res);
-    CHECK(ic_trace_result_num_curves(t.res) == 0 && rep->complete && rep->cells == 0 &&
+    CHECK(ic_trace_result_num_curves(t.res) == 0 && rep->tracer_complete && rep->cells == 0 &&
               strcmp(rep->method,
                      "closed form: NURBS nets recognised as coaxial surfaces of revolution") == 0,
           "sphere touching a plane at its pole, nets recognised: %d curves, complete %d, %s",
-          ic_trace_result_num_curves(t.res), rep->complete, rep->method);
+          ic_trace_result_num_curves(t.res), rep->tracer_complete, rep->method);
     check_special(t.res, "sphere touching a plane at its pole, in closed form", "contact", origin,
                   CONTACT_TOL, 0);
     release(&t);
@@ -475,8 +475,8 @@ static void test_polynomial_kinds(const char *dir)
         if (trace_named(&t, cases[k].nurbs) != 0)
             continue;
         const int n = ic_trace_result_num_curves(t.res);
-        CHECK(n == 2 && ic_trace_result_report(t.res)->complete, "%s: %d curves, complete %d",
-              cases[k].nurbs, n, ic_trace_result_report(t.res)->complete);
+        CHECK(n == 2 && ic_trace_result_report(t.res)->tracer_complete, "%s: %d curves, complete %d",
+              cases[k].nurbs, n, ic_trace_result_report(t.res)->tracer_complete);
         int found = 0;
         for (int i = 0; i < ic_trace_result_num_specials(t.res); i++) {
             const ic_trace_special *sp = ic_trace_result_special(t.res, i);
@@ -523,7 +523,7 @@ static void test_freeform_pair(void)
         return;
     }
     const int n = ic_trace_result_num_curves(t.res);
-    CHECK(n == 1 && ic_trace_result_report(t.res)->complete, "free-form pair: %d curves", n);
+    CHECK(n == 1 && ic_trace_result_report(t.res)->tracer_complete, "free-form pair: %d curves", n);
     ic_local_options opt;
     ic_local_defaults(&opt);
     int points = 0;

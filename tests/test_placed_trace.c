@@ -70,8 +70,8 @@ static void check_traced(const traced *t, const char *name, const expected *want
     const ic_trace_report *rep = ic_trace_result_report(t->res);
     const int n = ic_trace_result_num_curves(t->res);
     CHECK(n == want->n, "%s: %d curves, not %d", name, n, want->n);
-    CHECK(rep->complete && rep->proven, "%s: the search is complete %d, proven %d", name,
-          rep->complete, rep->proven);
+    CHECK(rep->tracer_complete && rep->proven, "%s: the search is complete %d, proven %d", name,
+          rep->tracer_complete, rep->proven);
     int branches = 0;
     for (int i = 0; i < ic_trace_result_num_specials(t->res); i++)
         branches += ic_trace_result_special(t->res, i)->type == IC_POINT_BRANCH;

@@ -160,7 +160,7 @@ static void time_limit(const char *src)
         const double took = now() - t0;
         const ic_trace_report *rep = ic_trace_result_report(t.res);
         CHECK(took < 10 * opt.time_limit + 2, "a 0.3 s limit took %.2f s in 2 threads", took);
-        CHECK(!rep->complete, "stopped at the time limit, yet complete");
+        CHECK(!rep->tracer_complete, "stopped at the time limit, yet complete");
         int said = 0;
         for (int i = 0; i < rep->nfailures; i++)
             said |= strstr(rep->failures[i], "time limit") != NULL;

@@ -82,7 +82,7 @@ static double total_length(const ic_trace_result *r)
     return L;
 }
 
-static int complete(const ic_trace_result *r) { return ic_trace_result_report(r)->complete; }
+static int complete(const ic_trace_result *r) { return ic_trace_result_report(r)->tracer_complete; }
 
 static double norm3(const double *x) { return sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]); }
 
@@ -399,10 +399,10 @@ static void test_coincident(void)
     }
     const ic_trace_report *rep = ic_trace_result_report(t.res);
     CHECK(ic_trace_result_num_specials(t.res) == 0 && ic_trace_result_num_curves(t.res) == 0 &&
-              rep->coincident_cells > 0 && !rep->complete,
+              rep->coincident_cells > 0 && !rep->tracer_complete,
           "coincident planes: %d points, %d curves, %d coincident cells, complete %d",
           ic_trace_result_num_specials(t.res), ic_trace_result_num_curves(t.res),
-          rep->coincident_cells, rep->complete);
+          rep->coincident_cells, rep->tracer_complete);
     release(&t);
 }
 

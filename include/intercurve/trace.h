@@ -169,6 +169,21 @@ typedef struct {
 
 #define IC_TRACE_MAX_FAILURES 16
 
+/** The certificate's summary (docs/tracing.md, "The certificate"): the
+ *  independent checker's cover of the search region and its verdict. */
+typedef struct {
+    /** 1: the checker ran (it runs when the tracer found the whole
+     *  intersection by its own account; complete is then its verdict) */
+    int checked;
+    int accepted; /**< 1: every cell proven and every arc traced exactly once */
+    long cells;   /**< cells of the cover, splits included */
+    long empty, outside, diagonal, regular, refused; /**< leaves by kind */
+    long crossings; /**< crossings of the regular cells' faces, each root-isolated */
+    long arcs;      /**< arcs of the regular cells (half the crossings) */
+    double seconds; /**< the checker's wall time */
+    char reason[240]; /**< why it refused ("" when accepted or not run) */
+} ic_trace_certificate;
+
 /** What the search proved and what it only sampled (docs/tracing.md). */
 typedef struct {
     /** 1 only when every part of the search space was proven free of
@@ -176,6 +191,11 @@ typedef struct {
      *  traced, and every curve ended where it should (docs/tracing.md,
      *  "Completeness"); 0 lists in failures every region left undecided */
     int complete;
+    /** the tracer's own account before the checker (the conditions of
+     *  complete above without the certificate): 1 where the tracer believes
+     *  it found everything; complete is 1 only when the certificate also
+     *  accepts (docs/tracing.md, "The certificate") */
+    int tracer_complete;
     int cells;          /**< cells examined by the subdivision */
     int cells_excluded; /**< cells proven empty by interval arithmetic */
     int cells_excluded_centred; /**< of those, leaves cleared by centred forms */
@@ -232,6 +252,8 @@ typedef struct {
      *  refinement's, the singular points' and the fit's lengths (tol, chord,
      *  the steps, fit_tol) are fractions of it */
     double scale;
+    /** the independent checker's verdict on the whole result */
+    ic_trace_certificate certificate;
 } ic_trace_report;
 
 typedef struct ic_trace_result ic_trace_result;

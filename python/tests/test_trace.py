@@ -27,7 +27,13 @@ def cylinder(p):
 
 def test_viviani_one_closed_curve(viviani_trace):
     r = viviani_trace
-    assert r.complete and r.report["complete"] is True
+    # complete by the tracer's account; the branch point has no singular
+    # box in the certificate yet, so it is not proven (docs/tracing.md)
+    assert r.report["tracer_complete"] is True
+    assert not r.complete and r.report["complete"] is False
+    assert r.report["certificate"]["checked"] is True
+    assert r.report["certificate"]["accepted"] is False
+    assert r.report["certificate"]["reason"]
     assert len(r.curves) == 1
     c = r.curves[0]
     assert c.closed and c.type == "transversal" and c.ends == ["closed", "closed"]

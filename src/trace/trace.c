@@ -7,6 +7,7 @@
  * joining (join.c), and the report's verdict.
  */
 #include "common/args.h"
+#include "certify_result.h"
 #include "core/trace_constants.h"
 #include "exact/exact.h"
 #include "trace_internal.h"
@@ -182,6 +183,8 @@ static ic_status trace(ic_trace_result **out, ic_pair *pair, const ic_trace_opti
     st = ic_trace_exact(r, pair, user_opt, &exact, err);
     if (st == IC_OK && !exact)
         st = general_path(r, pair, user_opt, err);
+    if (st == IC_OK) /* the tracer proposes, the checker proves */
+        st = ic_trace_certify(r, pair, user_opt, err);
     if (st != IC_OK) {
         ic_trace_result_free(r);
         return st;

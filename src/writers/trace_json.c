@@ -151,12 +151,40 @@ static void int_member(json_out *j, const char *key, int x)
     ic_json_out_int(j, x);
 }
 
+/* The certificate's summary (docs/output-formats.md, "certificate"); its
+ * wall time stays out, so that a document is the same from run to run. */
+static void write_certificate(json_out *j, const ic_trace_certificate *c)
+{
+    ic_json_out_key(j, "certificate");
+    ic_json_out_object(j);
+    ic_json_out_key(j, "checked");
+    ic_json_out_bool(j, c->checked);
+    ic_json_out_key(j, "accepted");
+    ic_json_out_bool(j, c->accepted);
+    const struct {
+        const char *key;
+        long n;
+    } counts[] = {{"cells", c->cells},       {"empty", c->empty},         {"outside", c->outside},
+                  {"diagonal", c->diagonal}, {"regular", c->regular},     {"refused", c->refused},
+                  {"crossings", c->crossings}, {"arcs", c->arcs}};
+    for (size_t i = 0; i < sizeof counts / sizeof counts[0]; i++)
+        int_member(j, counts[i].key, (int)counts[i].n);
+    ic_json_out_key(j, "reason");
+    if (c->reason[0])
+        ic_json_out_string(j, c->reason);
+    else
+        ic_json_out_null(j);
+    ic_json_out_end_object(j);
+}
+
 /* The report's keys, in the order of docs/output-formats.md's table. */
 static void report_json(json_out *j, const ic_trace_report *rep)
 {
     ic_json_out_object(j);
     ic_json_out_key(j, "complete");
     ic_json_out_bool(j, rep->complete);
+    ic_json_out_key(j, "tracer_complete");
+    ic_json_out_bool(j, rep->tracer_complete);
     ic_json_out_key(j, "method");
     ic_json_out_string(j, rep->method ? rep->method : "search");
     int_member(j, "cells", rep->cells);
@@ -200,6 +228,7 @@ static void report_json(json_out *j, const ic_trace_report *rep)
     ic_json_out_number(j, rep->search_scale);
     ic_json_out_key(j, "scale");
     ic_json_out_number(j, rep->scale);
+    write_certificate(j, &rep->certificate);
     ic_json_out_end_object(j);
 }
 

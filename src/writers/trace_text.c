@@ -41,8 +41,17 @@ static void text_specials(FILE *f, const ic_trace_result *r)
 static void text_report(FILE *f, const ic_trace_report *rep)
 {
     fprintf(f, "result: %s\n",
-            rep->complete ? "complete (every cell of the search was decided)"
-                          : "INCOMPLETE (see the failures: parts of the search were not decided)");
+            rep->complete ? "complete (proven by the certificate)"
+            : rep->tracer_complete
+                ? "INCOMPLETE (complete by the tracer's account, not proven by the certificate)"
+                : "INCOMPLETE (see the failures: parts of the search were not decided)");
+    const ic_trace_certificate *c = &rep->certificate;
+    if (c->checked)
+        fprintf(f,
+                "certificate: %s, %ld cells (%ld empty, %ld outside, %ld diagonal, %ld regular, "
+                "%ld refused), %ld crossings, %ld arcs\n",
+                c->accepted ? "accepted" : "refused", c->cells, c->empty, c->outside, c->diagonal,
+                c->regular, c->refused, c->crossings, c->arcs);
     fprintf(f,
             "search: %d cells, %d excluded by interval arithmetic (%s), %d loop-free, %d where a "
             "small loop is not excluded, %d refined, %d uncovered, %d unproven, %d undecided "

@@ -9,7 +9,9 @@
 # SVG pictures. tests/test_golden.sh compares their hashes with
 # tests/golden/outputs.sha256, made by this script from the tree of issue 22's
 # start (commit 309689a), so that a change of layout shows itself as a change of
-# no output at all.
+# no output at all; made again when issue 23's certificate changed the trace
+# documents (json and text only: the report's tracer_complete and certificate,
+# complete as the checker's verdict).
 #   capture.sh BUILD_DIR SOURCE_DIR OUTDIR [examples]
 # With "examples", only the bundled examples (the sanitized build's run: the
 # whole set takes 20 minutes under AddressSanitizer in a Debug build).

@@ -176,7 +176,10 @@ enum { TT_OK, TT_LOAD_ERROR, TT_PAIR_ERROR, TT_TRACE_ERROR, TT_CRASHED, TT_TIMEO
 
 typedef struct {
     int stage;
-    int complete, nfailures, uncovered, unproven, proven;
+    /* complete: the tracer's own account (tracer_complete); certified: the
+     * report's complete, the checker's verdict (docs/tracing.md, "The
+     * certificate") */
+    int complete, certified, nfailures, uncovered, unproven, proven;
     int ncurves, nspecials;
     double ms; /* wall time of ic_trace */
     char message[300];
@@ -263,7 +266,8 @@ static void tt_child(int fd, const char *path, double time_limit)
     tt_found_point *pt = NULL;
     if (res) {
         const ic_trace_report *rep = ic_trace_result_report(res);
-        s.complete = rep->complete;
+        s.complete = rep->tracer_complete;
+        s.certified = rep->complete;
         s.nfailures = rep->nfailures;
         s.uncovered = rep->uncovered_cells;
         s.unproven = rep->unproven_cells;
@@ -610,7 +614,10 @@ static void tt_judge(const tt_case *c, const tt_result *r, tt_verdict *v)
     v->curves_ok = tt_judge_curves(c, r, v);
     v->points_ok = tt_judge_points(c, r, v);
     const int honest_incomplete = !s->complete && s->nfailures > 0;
-    if (!strcmp(c->verdict, "complete")) {
+    if (s->certified && !(v->curves_ok && v->points_ok && strcmp(c->verdict, "incomplete"))) {
+        v->ok = 0; /* a proof of a wrong answer, whatever the verdict expected */
+        tt_say(v, "the certificate accepted a wrong answer");
+    } else if (!strcmp(c->verdict, "complete")) {
         v->ok = v->curves_ok && v->points_ok && s->complete;
         if (!s->complete)
             tt_say(v, "complete = 0 (expected 1; %d failures listed%s%s)", s->nfailures,

@@ -1,0 +1,113 @@
+/* A certificate's storage, its refusals and its point location
+ * (certificate.h). */
+#include "certificate.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+ic_certificate *ic_certificate_new(const ic_pairing *pg, const double box[3][2], int has_box,
+                                   ic_error *err)
+{
+    ic_certificate *c = calloc(1, sizeof *c);
+    if (!c) {
+        ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");
+        return NULL;
+    }
+    c->pg = pg;
+    c->dim = pg->kind->dim;
+    c->m = c->dim - 1;
+    c->has_box = has_box;
+    if (has_box)
+        memcpy(c->box, box, sizeof c->box);
+    if (pg->kind->region(pg, box, has_box, c->lo, c->hi, c->periodic, err) != IC_OK ||
+        ic_certificate_add_cell(c, c->lo, c->hi) < 0) {
+        if (err && err->code == IC_OK)
+            ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");
+        ic_certificate_free(c);
+        return NULL;
+    }
+    return c;
+}
+
+void ic_certificate_free(ic_certificate *c)
+{
+    if (!c)
+        return;
+    free(c->cells);
+    free(c->cross);
+    free(c->face_stack);
+    free(c);
+}
+
+/* Room for one more element of size `size` in *items (count n, room *cap). */
+static int grow(void **items, long n, long *cap, size_t size)
+{
+    if (n < *cap)
+        return 1;
+    const long room = *cap ? 2 * *cap : 64;
+    void *p = realloc(*items, (size_t)room * size);
+    if (!p)
+        return 0;
+    *items = p;
+    *cap = room;
+    return 1;
+}
+
+long ic_certificate_add_cell(ic_certificate *c, const double *lo, const double *hi)
+{
+    if (!grow((void **)&c->cells, c->ncells, &c->capc, sizeof *c->cells))
+        return -1;
+    ic_cell *cell = &c->cells[c->ncells];
+    memset(cell, 0, sizeof *cell);
+    memcpy(cell->lo, lo, (size_t)c->dim * sizeof *lo);
+    memcpy(cell->hi, hi, (size_t)c->dim * sizeof *hi);
+    cell->kind = IC_CELL_REFUSED;
+    cell->child[0] = cell->child[1] = -1;
+    return c->ncells++;
+}
+
+long ic_certificate_add_crossing(ic_certificate *c, const ic_crossing *x)
+{
+    if (!grow((void **)&c->cross, c->ncross, &c->capx, sizeof *c->cross))
+        return -1;
+    c->cross[c->ncross] = *x;
+    return c->ncross++;
+}
+
+void ic_certificate_refuse(ic_certificate *c, const char *fmt, ...)
+{
+    c->summary.accepted = 0;
+    if (c->summary.reason[0])
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(c->summary.reason, sizeof c->summary.reason, fmt, ap);
+    va_end(ap);
+}
+
+long ic_certificate_locate(const ic_certificate *c, const double *z)
+{
+    double w[4];
+    for (int j = 0; j < c->dim; j++) {
+        w[j] = z[j];
+        if (c->periodic[j]) {
+            const double T = c->hi[j] - c->lo[j];
+            w[j] = c->lo[j] + fmod(w[j] - c->lo[j], T);
+            if (w[j] < c->lo[j])
+                w[j] += T;
+            if (w[j] >= c->hi[j])
+                w[j] = c->lo[j];
+        }
+        if (!(w[j] >= c->lo[j] && w[j] <= c->hi[j]))
+            return -1;
+    }
+    long i = 0;
+    while (c->cells[i].kind == IC_CELL_SPLIT) {
+        const ic_cell *n = &c->cells[i];
+        i = n->child[w[n->axis] < n->at ? 0 : 1];
+    }
+    return i;
+}

@@ -1,0 +1,118 @@
+/*
+ * A certificate of a whole intersection (docs/tracing.md, "The
+ * certificate"): a cover of the search region by a tree of cells, each leaf
+ * proven by interval arithmetic alone to be
+ *   empty    - an enclosure of F excludes 0;
+ *   outside  - the sheet's image misses the box (parametric pairings);
+ *   diagonal - a self-intersection's trivial solutions only: R(a) = R(b)
+ *              forces a = b over the cell;
+ *   regular  - the minor of J without column `axis` is regular over the
+ *              whole cell, so every arc in it is a graph over that
+ *              coordinate; every crossing of the cell's faces is isolated
+ *              by a Krawczyk test on its face, and sorted along `axis` the
+ *              crossings pair up into the cell's arcs;
+ * or refused, with the reason. The checker then holds the traced curves
+ * against the crossings (match.c). It uses the pairing's equations and the
+ * surfaces' enclosures (system.h), never the tracer's decisions.
+ */
+#ifndef IC_CERTIFY_CERTIFICATE_H
+#define IC_CERTIFY_CERTIFICATE_H
+
+#include "imat.h"
+#include "pairing/pairing.h"
+
+typedef enum {
+    IC_CELL_SPLIT,
+    IC_CELL_EMPTY,
+    IC_CELL_OUTSIDE,
+    IC_CELL_DIAGONAL,
+    IC_CELL_REGULAR,
+    IC_CELL_REFUSED
+} ic_cell_kind;
+
+typedef struct {
+    double lo[4], hi[4];
+    ic_cell_kind kind;
+    int axis;        /* split: the coordinate split; regular: the monotone one */
+    double at;       /* split: where */
+    int child[2];    /* split: the two halves (z[axis] < at, and the rest) */
+    int first, ncross; /* regular: its crossings */
+} ic_cell;
+
+/* A crossing of a regular cell's face z[face] = (side ? hi : lo): the one
+ * root of F on that face in X, which lies in K inside X. */
+typedef struct {
+    int cell, face, side;
+    ic_interval X[4], K[4];
+    int mate;   /* the other crossing of its arc in the cell */
+    int events; /* how many traced passages met it (match.c) */
+} ic_crossing;
+
+typedef struct {
+    long cells, empty, outside, diagonal, regular, refused;
+    long crossings, arcs;
+    double seconds;
+    int accepted;
+    char reason[240];
+} ic_certify_summary;
+
+/* The work limits of a certificate: cells, the smallest cell as a fraction
+ * of the region's width, face boxes per face, and a deadline on the
+ * monotonic clock (0: none). */
+typedef struct {
+    long max_cells;
+    double min_width;
+    int face_boxes;
+    double deadline;
+} ic_certify_limits;
+
+typedef struct {
+    const ic_pairing *pg;
+    int dim, m;
+    double lo[4], hi[4];
+    int periodic[4];
+    int has_box;
+    double box[3][2];
+    ic_cell *cells;
+    long ncells, capc;
+    ic_crossing *cross;
+    long ncross, capx;
+    /* work memory of face.c, kept from face to face: boxes of a face */
+    ic_interval (*face_stack)[4];
+    int face_cap;
+    ic_certify_summary summary;
+} ic_certificate;
+
+/* A new certificate over the pairing's search region (box: the problem's,
+ * has_box 0 when it has none); NULL out of memory or when the region has
+ * no finite box (err says). */
+ic_certificate *ic_certificate_new(const ic_pairing *pg, const double box[3][2], int has_box,
+                                   ic_error *err);
+void ic_certificate_free(ic_certificate *c);
+
+/* Appends a cell (its box) or a crossing: the index, or -1 out of memory. */
+long ic_certificate_add_cell(ic_certificate *c, const double *lo, const double *hi);
+long ic_certificate_add_crossing(ic_certificate *c, const ic_crossing *x);
+
+/* Refuses: the first reason is kept. */
+void ic_certificate_refuse(ic_certificate *c, const char *fmt, ...) IC_PRINTF(2, 3);
+
+/* The leaf holding z (periodic coordinates brought into the region); -1
+ * when z is outside the region. */
+long ic_certificate_locate(const ic_certificate *c, const double *z);
+
+/* The cover (cover.c): the tree grown from the region, every leaf proven
+ * on the spot (leaf.c); stops at the first refusal. IC_OK, or an error out
+ * of memory. */
+ic_status ic_certify_cover(ic_certificate *c, const ic_certify_limits *lim, ic_error *err);
+
+/* One leaf (leaf.c): labels cell i and isolates its crossings; 1 decided,
+ * 0 undecided (split it), -1 out of memory. */
+int ic_certify_leaf(ic_certificate *c, long i, const ic_certify_limits *lim);
+
+/* The roots of F on face z[j] = v of the box lo..hi (face.c), appended as
+ * crossings of cell `cell`: 1 when the whole face was decided, 0 when
+ * some part of it could not be within `max_boxes`, -1 out of memory. */
+int ic_certify_face(ic_certificate *c, long cell, int j, int side, int max_boxes);
+
+#endif

@@ -1,0 +1,151 @@
+/*
+ * The cover (certificate.h): the search region split into a tree of cells
+ * until every leaf is proven (leaf.c), depth first. A cell is split across
+ * its widest coordinate (relative to the region's width) a little off its
+ * middle, alternately below and above it, so that the faces of the cover
+ * rarely fall on a symmetry plane of the problem, where a curve could lie
+ * in a face or cross it at an edge. The first leaf that cannot be proven
+ * ends the cover: the certificate is refused with the reason.
+ */
+#include "certificate.h"
+
+#include <stdlib.h>
+#include <time.h>
+
+/* The split's offset from the middle, as a fraction of the cell's width
+ * (irrational-looking numbers: no symmetric problem puts a curve there),
+ * and its change from one coordinate to the next: two coordinates with the
+ * same range are never split at the same value, or a curve along their
+ * diagonal (u = p of two patches over one plane, say) would cross both
+ * splits at once, at an edge of a cell, where no crossing can be isolated. */
+#define IC_CERTIFY_SPLIT_OFFSET 0.0295
+#define IC_CERTIFY_SPLIT_OFFSET_STEP 0.0173
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* The widest coordinate of cell i relative to the region, and that width. */
+static int widest(const ic_certificate *c, long i, double *rel)
+{
+    const ic_cell *cl = &c->cells[i];
+    int best = 0;
+    *rel = -1.0;
+    for (int k = 0; k < c->dim; k++) {
+        const double w = (cl->hi[k] - cl->lo[k]) / (c->hi[k] - c->lo[k]);
+        if (w > *rel)
+            best = k, *rel = w;
+    }
+    return best;
+}
+
+/* Splits cell i across k into two new cells pushed on the stack. */
+static int split(ic_certificate *c, long i, int k, int depth, long *stack, int *n)
+{
+    ic_cell *cl = &c->cells[i];
+    const double off = IC_CERTIFY_SPLIT_OFFSET + k * IC_CERTIFY_SPLIT_OFFSET_STEP;
+    const double f = 0.5 + (depth % 2 ? off : -off);
+    const double at = cl->lo[k] + f * (cl->hi[k] - cl->lo[k]);
+    double lo[4], hi[4];
+    for (int j = 0; j < c->dim; j++)
+        lo[j] = cl->lo[j], hi[j] = cl->hi[j];
+    hi[k] = at;
+    const long a = ic_certificate_add_cell(c, lo, hi);
+    lo[k] = at, hi[k] = c->cells[i].hi[k];
+    const long b = a < 0 ? -1 : ic_certificate_add_cell(c, lo, hi);
+    if (b < 0)
+        return -1;
+    cl = &c->cells[i];
+    cl->kind = IC_CELL_SPLIT, cl->axis = k, cl->at = at;
+    cl->child[0] = (int)a, cl->child[1] = (int)b;
+    stack[(*n)++] = b;
+    stack[(*n)++] = a;
+    return 0;
+}
+
+static void count(ic_certificate *c, ic_cell_kind kind)
+{
+    ic_certify_summary *s = &c->summary;
+    s->empty += kind == IC_CELL_EMPTY;
+    s->outside += kind == IC_CELL_OUTSIDE;
+    s->diagonal += kind == IC_CELL_DIAGONAL;
+    s->regular += kind == IC_CELL_REGULAR;
+    s->refused += kind == IC_CELL_REFUSED;
+}
+
+/* Decides leaf i or splits it: 1 decided or split, 0 refused, -1 out of
+ * memory. */
+static int grow_leaf(ic_certificate *c, long i, int depth, const ic_certify_limits *lim,
+                     long *stack, int *n)
+{
+    const int rc = ic_certify_leaf(c, i, lim);
+    if (rc != 0) {
+        if (rc > 0)
+            count(c, c->cells[i].kind);
+        return rc;
+    }
+    double rel;
+    const int k = widest(c, i, &rel);
+    const ic_cell *cl = &c->cells[i];
+    if (rel < lim->min_width) {
+        count(c, IC_CELL_REFUSED);
+        ic_certificate_refuse(c, "a cell of width %.3g of the region at [%.17g, %.17g] x [%.17g, "
+                                 "%.17g] (first two coordinates) is neither empty nor regular: a "
+                                 "singular or tangential point, or surfaces too close to tell",
+                              rel, cl->lo[0], cl->hi[0], cl->lo[1], cl->hi[1]);
+        return 0;
+    }
+    if (c->ncells + 2 > lim->max_cells) {
+        count(c, IC_CELL_REFUSED);
+        ic_certificate_refuse(c, "the cover needs more than %ld cells", lim->max_cells);
+        return 0;
+    }
+    return split(c, i, k, depth, stack, n) < 0 ? -1 : 1;
+}
+
+ic_status ic_certify_cover(ic_certificate *c, const ic_certify_limits *lim, ic_error *err)
+{
+    const double start = now();
+    /* depth first: the stack never holds more than two cells per level */
+    enum { MAX_STACK = 4096 };
+    long *stack = malloc(MAX_STACK * sizeof *stack);
+    int *depth = malloc(MAX_STACK * sizeof *depth);
+    if (!stack || !depth) {
+        free(stack), free(depth);
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");
+    }
+    int n = 1, rc = 1;
+    stack[0] = 0, depth[0] = 0;
+    c->summary.accepted = 1;
+    while (n > 0 && rc == 1) {
+        if (lim->deadline > 0 && now() > lim->deadline) {
+            ic_certificate_refuse(c, "the time limit ran out certifying");
+            rc = 0;
+            break;
+        }
+        const long i = stack[--n];
+        const int d = depth[n];
+        const int before = n;
+        if (n + 2 > MAX_STACK) {
+            ic_certificate_refuse(c, "the cover is deeper than %d levels", MAX_STACK / 2);
+            rc = 0;
+            break;
+        }
+        rc = grow_leaf(c, i, d, lim, stack, &n);
+        for (int k = before; k < n; k++)
+            depth[k] = d + 1;
+    }
+    free(stack), free(depth);
+    c->summary.cells = c->ncells;
+    c->summary.crossings = c->ncross;
+    c->summary.arcs = c->ncross / 2;
+    c->summary.seconds = now() - start;
+    if (rc < 0)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");
+    if (rc == 0)
+        c->summary.accepted = 0;
+    return IC_OK;
+}

@@ -1,0 +1,210 @@
+/*
+ * One leaf of the cover proven (certificate.h): empty, outside the box,
+ * diagonal (self-intersections), or regular with its crossings and arcs;
+ * else undecided, to be split.
+ *
+ * Why a regular cell's arcs are its crossings paired along `axis`: the
+ * minor of J without column `axis` is regular at every point of the cell,
+ * so on each slice z[axis] = const, a convex box, F is one-to-one (the mean
+ * value theorem) and has at most one zero. Each component of the zero set
+ * in the cell is then an arc monotone in z[axis] (no loop can be), and with
+ * every face crossing transversal (face.c) its two ends are two crossings;
+ * different arcs occupy disjoint ranges of z[axis]. Sorted along axis, the
+ * crossings therefore pair up: (1st, 2nd), (3rd, 4th), ...
+ */
+#include "certificate.h"
+#include "system.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void cell_box(const ic_cell *cl, int dim, ic_interval *X)
+{
+    for (int k = 0; k < dim; k++)
+        X[k] = (ic_interval){cl->lo[k], cl->hi[k]};
+}
+
+/* 1: the sheet's image over X misses the box; 0: it lies inside; -1:
+ * straddles it or cannot be enclosed. */
+static int against_box(const ic_certificate *c, const ic_interval *X)
+{
+    ic_interval xyz[3];
+    if (!ic_certify_image(c->pg, X, xyz))
+        return -1;
+    int inside = 1;
+    for (int k = 0; k < 3; k++) {
+        if (xyz[k].hi < c->box[k][0] || xyz[k].lo > c->box[k][1])
+            return 1;
+        if (xyz[k].lo < c->box[k][0] || xyz[k].hi > c->box[k][1])
+            inside = 0;
+    }
+    return inside ? 0 : -1;
+}
+
+/* The (u, v) and (p, q) boxes of a self-intersection cell overlap, once a
+ * periodic parameter is shifted by `shift` periods: *shift receives it. */
+static int near_diagonal(const ic_certificate *c, const ic_interval *X, double shift[2])
+{
+    for (int k = 0; k < 2; k++) {
+        const double T = c->periodic[k] ? c->hi[k] - c->lo[k] : 0.0;
+        int found = 0;
+        for (int s = -1; s <= 1 && !found; s++) {
+            if (s != 0 && T == 0.0)
+                continue;
+            if (X[k].lo <= X[k + 2].hi + s * T && X[k + 2].lo + s * T <= X[k].hi)
+                found = 1, shift[k] = s * T;
+        }
+        if (!found)
+            return 0;
+    }
+    return 1;
+}
+
+/* R(a) - R(b) = M (a - b) with M in J_R over the hull of both boxes: when
+ * two rows of it form a regular 2 x 2 interval matrix, R(a) = R(b) forces
+ * a = b (the trivial solutions of a self-intersection). */
+static int only_diagonal(const ic_certificate *c, const ic_interval *X, const double shift[2])
+{
+    ic_interval H[2];
+    for (int k = 0; k < 2; k++)
+        H[k] = (ic_interval){fmin(X[k].lo, X[k + 2].lo + shift[k]),
+                             fmax(X[k].hi, X[k + 2].hi + shift[k])};
+    ic_interval_grad R[3];
+    if (ic_surface_eval_interval_grad(c->pg->S[0], R, H, NULL) != IC_OK)
+        return 0;
+    static const int rows[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+    for (int r = 0; r < 3; r++) {
+        ic_interval M[4][4];
+        for (int i = 0; i < 2; i++)
+            for (int k = 0; k < 2; k++)
+                M[i][k] = R[rows[r][i]].d[k];
+        if (ic_imat_regular(M, 2))
+            return 1;
+    }
+    return 0;
+}
+
+/* The minor of J without column k is regular over the cell. */
+static int monotone_along(const ic_certificate *c, const ic_certify_eval *e, int k)
+{
+    ic_interval M[4][4];
+    for (int i = 0; i < c->m; i++)
+        for (int j = 0, col = 0; j < c->dim; j++)
+            if (j != k)
+                M[i][col++] = e->J[i][j];
+    return ic_imat_regular(M, c->m);
+}
+
+/* Sorted along axis, the crossings first..first+n-1 pair up as arcs:
+ * their ranges along axis are disjoint and their number is even. */
+static int pair_arcs(ic_certificate *c, long first, long n, int axis)
+{
+    if (n % 2 != 0)
+        return 0;
+    ic_crossing *x = c->cross + first;
+    for (long a = 1; a < n; a++) /* insertion sort: a cell has few crossings */
+        for (long b = a; b > 0 && x[b].K[axis].lo < x[b - 1].K[axis].lo; b--) {
+            const ic_crossing t = x[b];
+            x[b] = x[b - 1], x[b - 1] = t;
+        }
+    for (long a = 1; a < n; a++)
+        if (!(x[a - 1].K[axis].hi < x[a].K[axis].lo))
+            return 0;
+    for (long a = 0; a < n; a += 2) {
+        x[a].mate = (int)(first + a + 1);
+        x[a + 1].mate = (int)(first + a);
+    }
+    return 1;
+}
+
+/* The cofactors of J at the cell's centre (the curve's tangent there, up to
+ * a factor), to try the most promising axis first. */
+static void axis_order(const ic_certificate *c, const ic_cell *cl, int order[4])
+{
+    double z[4], F[3], J[3][4], T[4] = {0, 0, 0, 0};
+    for (int k = 0; k < c->dim; k++)
+        z[k] = 0.5 * cl->lo[k] + 0.5 * cl->hi[k], order[k] = k;
+    if (ic_certify_at(c->pg, z, F, J))
+        for (int k = 0; k < c->dim; k++) {
+            double M[4][4], Y[4][4];
+            for (int i = 0; i < c->m; i++)
+                for (int j = 0, col = 0; j < c->dim; j++)
+                    if (j != k)
+                        M[i][col++] = J[i][j] * (c->hi[j] - c->lo[j]);
+            /* a regular minor's inverse is small where the tangent's k-component is large */
+            if (ic_imat_point_inverse(M, c->m, Y)) {
+                double s = 0.0;
+                for (int i = 0; i < c->m; i++)
+                    for (int j = 0; j < c->m; j++)
+                        s += fabs(Y[i][j]);
+                T[k] = 1.0 / s;
+            }
+        }
+    for (int a = 1; a < c->dim; a++)
+        for (int b = a; b > 0 && T[order[b]] > T[order[b - 1]]; b--) {
+            const int t = order[b];
+            order[b] = order[b - 1], order[b - 1] = t;
+        }
+}
+
+/* Regular along some axis, with every face's crossings isolated and paired:
+ * 1, 0 undecided, -1 out of memory. */
+static int regular(ic_certificate *c, long i, const ic_certify_eval *e,
+                   const ic_certify_limits *lim)
+{
+    int order[4];
+    axis_order(c, &c->cells[i], order);
+    for (int a = 0; a < c->dim; a++) {
+        const int k = order[a];
+        if (!monotone_along(c, e, k))
+            continue;
+        const long first = c->ncross;
+        int rc = 1;
+        for (int j = 0; j < c->dim && rc == 1; j++)
+            for (int side = 0; side < 2 && rc == 1; side++)
+                rc = ic_certify_face(c, i, j, side, lim->face_boxes);
+        if (rc < 0)
+            return -1;
+        if (rc == 1 && pair_arcs(c, first, c->ncross - first, k)) {
+            ic_cell *cl = &c->cells[i];
+            cl->kind = IC_CELL_REGULAR, cl->axis = k;
+            cl->first = (int)first, cl->ncross = (int)(c->ncross - first);
+            return 1;
+        }
+        c->ncross = first;
+        return 0;
+    }
+    return 0;
+}
+
+int ic_certify_leaf(ic_certificate *c, long i, const ic_certify_limits *lim)
+{
+    ic_interval X[4];
+    cell_box(&c->cells[i], c->dim, X);
+    ic_certify_eval e;
+    if (!ic_certify_enclose(c->pg, X, &e))
+        return 0;
+    ic_cell *cl = &c->cells[i];
+    if (ic_certify_excludes(&e, c->m)) {
+        cl->kind = IC_CELL_EMPTY;
+        return 1;
+    }
+    if (c->has_box && c->dim != 3) {
+        const int side = against_box(c, X);
+        if (side == 1) {
+            cl->kind = IC_CELL_OUTSIDE;
+            return 1;
+        }
+        if (side < 0)
+            return 0;
+    }
+    double shift[2];
+    if (c->pg->kind == &ic_pairing_self && near_diagonal(c, X, shift)) {
+        if (!only_diagonal(c, X, shift))
+            return 0;
+        cl->kind = IC_CELL_DIAGONAL;
+        return 1;
+    }
+    return regular(c, i, &e, lim);
+}

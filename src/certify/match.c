@@ -1,0 +1,580 @@
+/*
+ * The traced curves held against the cover (match.h). Each curve is walked
+ * through the cells: between two of its points the chord is followed, and
+ * where it leaves a cell the true crossing of that face is found by Newton's
+ * method on the face (the curve itself, not the chord) and must be one of
+ * the crossings the cover proved there. A chord longer than a quarter of the
+ * cells it joins is first halved at a point put back on the curve, so the
+ * walk sees every cell the curve passes through.
+ */
+#include "match.h"
+#include "system.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Newton's steps and the step, relative to the region's width, at which a
+ * projection has converged. */
+#define IC_CERTIFY_NEWTON_STEPS 30
+#define IC_CERTIFY_NEWTON_DONE 1e-14
+/* A curve end on the region's boundary: within this fraction of the
+ * region's width of it. */
+#define IC_CERTIFY_END_REACH 1e-6
+/* A projected point belongs to a crossing's face box grown by this fraction
+ * of the region's width (rounding only: the box holds the root strictly). */
+#define IC_CERTIFY_MATCH_SLACK 1e-12
+/* A chord is followed directly when shorter than this fraction of the cells
+ * at its two ends; most halvings of one chord. */
+#define IC_CERTIFY_CHORD_OF_CELL 0.25
+#define IC_CERTIFY_MAX_HALVINGS 40
+/* The chord across a face, found by halving along the curve, is shorter
+ * than this fraction of the cell it leaves. */
+#define IC_CERTIFY_EXIT_CHORD 1e-3
+
+typedef struct {
+    ic_certificate *c;
+    int curve;
+    long leaf;        /* the cell the walk is in */
+    long entry;       /* the crossing it came in by, or -1 (the curve's start) */
+    long first_exit;  /* a closed curve: the crossing its first passage left by */
+    long events;
+    int failed;
+} walker;
+
+static double width(const ic_certificate *c, int k) { return c->hi[k] - c->lo[k]; }
+
+/* z brought into the region's period on periodic coordinates (a point on
+ * the region's upper face stays there: the walk may stand on it). */
+static void wrap(const ic_certificate *c, const double *z, double *w)
+{
+    for (int k = 0; k < c->dim; k++) {
+        w[k] = z[k];
+        if (c->periodic[k] && !(z[k] >= c->lo[k] && z[k] <= c->hi[k])) {
+            const double T = width(c, k);
+            w[k] = c->lo[k] + fmod(z[k] - c->lo[k], T);
+            if (w[k] < c->lo[k])
+                w[k] += T;
+            if (w[k] >= c->hi[k])
+                w[k] = c->lo[k];
+        }
+    }
+}
+
+/* The leaf holding z, ties on coordinate j broken towards dir (+1, -1). */
+static long locate_towards(const ic_certificate *c, const double *z, int j, int dir)
+{
+    for (int k = 0; k < c->dim; k++)
+        if (!(z[k] >= c->lo[k] && z[k] <= c->hi[k]))
+            return -1;
+    long i = 0;
+    while (c->cells[i].kind == IC_CELL_SPLIT) {
+        const ic_cell *n = &c->cells[i];
+        const int upper = n->axis == j && z[j] == n->at ? dir > 0 : z[n->axis] >= n->at;
+        i = n->child[upper];
+    }
+    return i;
+}
+
+/* Newton's method for F = 0 with z[j] fixed (j = -1: the least-norm step
+ * onto the curve). 1 when it converged. */
+static int project(const ic_certificate *c, double *z, int j)
+{
+    const int m = c->m, dim = c->dim;
+    for (int it = 0; it < IC_CERTIFY_NEWTON_STEPS; it++) {
+        double F[3], J[3][4], A[4][4], Y[4][4], step[4] = {0, 0, 0, 0}, zw[4];
+        wrap(c, z, zw); /* a periodic sheet evaluated in its period */
+        if (!ic_certify_at(c->pg, zw, F, J))
+            return 0;
+        if (j >= 0) { /* the face's square system */
+            for (int i = 0; i < m; i++)
+                for (int k = 0, col = 0; k < dim; k++)
+                    if (k != j)
+                        A[i][col++] = J[i][k];
+            if (!ic_imat_point_inverse(A, m, Y))
+                return 0;
+            for (int k = 0, col = 0; k < dim; k++)
+                if (k != j) {
+                    for (int i = 0; i < m; i++)
+                        step[k] += Y[col][i] * F[i];
+                    col++;
+                }
+        } else { /* J^T (J J^T)^-1 F */
+            double g[3] = {0, 0, 0};
+            for (int a = 0; a < m; a++)
+                for (int b = 0; b < m; b++) {
+                    A[a][b] = 0.0;
+                    for (int k = 0; k < dim; k++)
+                        A[a][b] += J[a][k] * J[b][k];
+                }
+            if (!ic_imat_point_inverse(A, m, Y))
+                return 0;
+            for (int a = 0; a < m; a++)
+                for (int b = 0; b < m; b++)
+                    g[a] += Y[a][b] * F[b];
+            for (int k = 0; k < dim; k++)
+                for (int a = 0; a < m; a++)
+                    step[k] += J[a][k] * g[a];
+        }
+        double big = 0.0;
+        for (int k = 0; k < dim; k++) {
+            z[k] -= step[k];
+            big = fmax(big, fabs(step[k]) / width(c, k));
+        }
+        if (!isfinite(big))
+            return 0;
+        if (big < IC_CERTIFY_NEWTON_DONE)
+            return 1;
+    }
+    return 0;
+}
+
+/* The crossing of leaf i on face (j, side) whose box holds q (region
+ * coordinates but j), or -1. */
+static long crossing_at(const ic_certificate *c, long i, int j, int side, const double *q)
+{
+    const ic_cell *cl = &c->cells[i];
+    if (cl->kind != IC_CELL_REGULAR)
+        return -1;
+    for (long x = cl->first; x < cl->first + cl->ncross; x++) {
+        const ic_crossing *r = &c->cross[x];
+        int in = r->face == j && r->side == side;
+        for (int k = 0; in && k < c->dim; k++) {
+            const double slack = IC_CERTIFY_MATCH_SLACK * width(c, k);
+            in = k == j || (q[k] >= r->X[k].lo - slack && q[k] <= r->X[k].hi + slack);
+        }
+        if (in)
+            return x;
+    }
+    return -1;
+}
+
+/* "(z0, z1, ...)" of a point in search coordinates. */
+static void format_point(const ic_certificate *c, const double *z, char *out, size_t size)
+{
+    int at = snprintf(out, size, "(");
+    for (int k = 0; k < c->dim && at > 0 && (size_t)at < size; k++)
+        at += snprintf(out + at, size - (size_t)at, "%s%.9g", k ? ", " : "", z[k]);
+    if (at > 0 && (size_t)at < size)
+        snprintf(out + at, size - (size_t)at, ")");
+}
+
+static void refuse_at(walker *w, const char *what, const double *z)
+{
+    char where[120];
+    format_point(w->c, z, where, sizeof where);
+    if (!w->failed)
+        ic_certificate_refuse(w->c, "curve %d %s near %s (search coordinates)", w->curve, what,
+                              where);
+    w->failed = 1;
+}
+
+/* The walk leaves its cell by crossing x: the passage in from w->entry must
+ * be one of the cell's arcs. */
+static void leave_by(walker *w, long x, const double *q)
+{
+    w->c->cross[x].events++;
+    w->events++;
+    if (w->entry < 0 && w->first_exit == -2)
+        w->first_exit = x;
+    else if (w->entry < 0 || w->c->cross[w->entry].mate != x)
+        refuse_at(w, "passes through a cell other than along one of its arcs", q);
+}
+
+static void enter_by(walker *w, long x)
+{
+    w->c->cross[x].events++;
+    w->entry = x;
+}
+
+/* The largest width of leaf i relative to the region. */
+static double leaf_size(const ic_certificate *c, long i, int k)
+{
+    return c->cells[i].hi[k] - c->cells[i].lo[k];
+}
+
+/* The chord a..b is short next to the cells at both ends (a, b wrapped). */
+static int short_chord(const ic_certificate *c, const double *a, const double *b)
+{
+    double wa[4], wb[4];
+    wrap(c, a, wa), wrap(c, b, wb);
+    const long la = locate_towards(c, wa, -1, 0), lb = locate_towards(c, wb, -1, 0);
+    if (la < 0 || lb < 0)
+        return 1; /* the walk says where it left the region */
+    if (la == lb)
+        return 1;
+    for (int k = 0; k < c->dim; k++) {
+        const double d = fabs(b[k] - a[k]);
+        if (d > IC_CERTIFY_CHORD_OF_CELL * fmin(leaf_size(c, la, k), leaf_size(c, lb, k)))
+            return 0;
+    }
+    return 1;
+}
+
+/* Where the chord from cw to tw (both in the frame of leaf L, tw outside
+ * it) leaves L: the point p, the face j and its side. */
+static void chord_exit(const ic_certificate *c, long L, const double *cw, const double *tw,
+                       double *p, int *j, int *side)
+{
+    const ic_cell *cl = &c->cells[L];
+    double t = 1.0;
+    *j = 0, *side = 1;
+    for (int k = 0; k < c->dim; k++) {
+        double tk = 2.0;
+        if (tw[k] > cl->hi[k])
+            tk = (cl->hi[k] - cw[k]) / (tw[k] - cw[k]);
+        else if (tw[k] < cl->lo[k])
+            tk = (cl->lo[k] - cw[k]) / (tw[k] - cw[k]);
+        if (tk < t)
+            t = tk, *j = k, *side = tw[k] > cl->hi[k];
+    }
+    for (int k = 0; k < c->dim; k++)
+        p[k] = cw[k] + t * (tw[k] - cw[k]);
+    p[*j] = *side ? cl->hi[*j] : cl->lo[*j];
+}
+
+static int inside_leaf(const ic_certificate *c, long L, const double *z)
+{
+    const ic_cell *cl = &c->cells[L];
+    for (int k = 0; k < c->dim; k++)
+        if (!(z[k] >= cl->lo[k] && z[k] <= cl->hi[k]))
+            return 0;
+    return 1;
+}
+
+/* Where the curve from cw (in leaf L) to tw (outside it) leaves L: the
+ * two are brought together by halving along the curve (each midpoint put
+ * back on it) until their chord is short next to L, then that chord's exit
+ * face gives j and side and Newton's method on the face the crossing q. */
+static int bracket_exit(const ic_certificate *c, long L, const double *cw, const double *tw,
+                        double *q, int *j, int *side)
+{
+    double a[4], b[4];
+    memcpy(a, cw, sizeof a), memcpy(b, tw, sizeof b);
+    for (int it = 0; it < IC_CERTIFY_MAX_HALVINGS; it++) {
+        int near = 1;
+        for (int k = 0; k < c->dim; k++)
+            near = near && fabs(b[k] - a[k]) <= IC_CERTIFY_EXIT_CHORD * leaf_size(c, L, k);
+        if (near)
+            break;
+        double m[4];
+        for (int k = 0; k < c->dim; k++)
+            m[k] = 0.5 * (a[k] + b[k]);
+        if (!project(c, m, -1))
+            return 0;
+        memcpy(inside_leaf(c, L, m) ? a : b, m, sizeof m);
+    }
+    chord_exit(c, L, a, b, q, j, side);
+    return project(c, q, *j);
+}
+
+/* The point q on face (j, side) of leaf L lies on that face's part. */
+static int on_face(const ic_certificate *c, long L, const double *q, int j)
+{
+    const ic_cell *cl = &c->cells[L];
+    for (int k = 0; k < c->dim; k++) {
+        const double slack = IC_CERTIFY_MATCH_SLACK * width(c, k);
+        if (k != j && !(q[k] >= cl->lo[k] - slack && q[k] <= cl->hi[k] + slack))
+            return 0;
+    }
+    return 1;
+}
+
+/* One step of the walk: from cur (on the curve) towards target, across the
+ * face where the chord leaves the current cell. 1: target reached, 0: a
+ * face crossed (cur, target moved on), -1: refused. */
+static int cross_face(walker *w, double *cur, double *target)
+{
+    const ic_certificate *c = w->c;
+    double cw[4], tw[4], q[4];
+    wrap(c, cur, cw);
+    for (int k = 0; k < c->dim; k++)
+        tw[k] = target[k] + (cw[k] - cur[k]);
+    const ic_cell *cl = &c->cells[w->leaf];
+    int inside = 1;
+    for (int k = 0; k < c->dim; k++)
+        inside = inside && tw[k] >= cl->lo[k] && tw[k] <= cl->hi[k];
+    if (inside)
+        return 1;
+    int j, side;
+    if (!bracket_exit(c, w->leaf, cw, tw, q, &j, &side) || !on_face(c, w->leaf, q, j)) {
+        refuse_at(w, "cannot be followed across a cell's face", q);
+        return -1;
+    }
+    const long xa = crossing_at(c, w->leaf, j, side, q);
+    if (xa < 0) {
+        refuse_at(w, "crosses a cell's face where no crossing is proven", q);
+        return -1;
+    }
+    leave_by(w, xa, q);
+    const int dir = side ? 1 : -1;
+    double qn[4];
+    wrap(c, q, qn);
+    if (c->periodic[j] && side && q[j] >= c->hi[j])
+        qn[j] = c->lo[j]; /* across the seam, upwards */
+    else if (c->periodic[j] && !side && q[j] <= c->lo[j])
+        qn[j] = c->hi[j]; /* across the seam, downwards */
+    const long next = locate_towards(c, qn, j, dir);
+    if (next < 0) {
+        refuse_at(w, "leaves the region where it does not end", q);
+        return -1;
+    }
+    const long xb = crossing_at(c, next, j, !side, qn);
+    if (xb < 0) {
+        refuse_at(w, "enters a cell where no crossing is proven", qn);
+        return -1;
+    }
+    enter_by(w, xb);
+    w->leaf = next;
+    for (int k = 0; k < c->dim; k++) { /* continue in the frame of qn */
+        target[k] = tw[k] + (qn[k] - q[k]);
+        cur[k] = qn[k];
+    }
+    return w->failed ? -1 : 0;
+}
+
+/* The walk along the chord a..b of a curve, halved until short. */
+static void walk_chord(walker *w, const double *a, const double *b, int halvings)
+{
+    if (w->failed)
+        return;
+    if (!short_chord(w->c, a, b)) {
+        double m[4];
+        for (int k = 0; k < w->c->dim; k++)
+            m[k] = 0.5 * (a[k] + b[k]);
+        if (halvings >= IC_CERTIFY_MAX_HALVINGS || !project(w->c, m, -1)) {
+            refuse_at(w, "has a chord that cannot be put back on the curve", a);
+            return;
+        }
+        walk_chord(w, a, m, halvings + 1);
+        walk_chord(w, m, b, halvings + 1);
+        return;
+    }
+    double cur[4], target[4];
+    memcpy(cur, a, sizeof cur), memcpy(target, b, sizeof target);
+    for (int step = 0; step < 64; step++) {
+        const int rc = cross_face(w, cur, target);
+        if (rc != 0)
+            return;
+    }
+    refuse_at(w, "crosses too many cells along one chord", a);
+}
+
+/* An open curve's end z: on a face of its cell that is the region's
+ * boundary, at one of the crossings proven there: that crossing, or -1. */
+static long end_crossing(walker *w, const double *z, long *leaf)
+{
+    const ic_certificate *c = w->c;
+    double zw[4];
+    wrap(c, z, zw);
+    *leaf = locate_towards(c, zw, -1, 0);
+    if (*leaf < 0)
+        return -1;
+    const ic_cell *cl = &c->cells[*leaf];
+    for (int j = 0; j < c->dim; j++)
+        for (int side = 0; side < 2; side++) {
+            const double v = side ? cl->hi[j] : cl->lo[j];
+            const double edge = side ? c->hi[j] : c->lo[j];
+            if (c->periodic[j] || v != edge ||
+                fabs(zw[j] - v) > IC_CERTIFY_END_REACH * width(c, j))
+                continue;
+            double q[4];
+            memcpy(q, zw, sizeof q);
+            q[j] = v;
+            if (!project(w->c, q, j))
+                continue;
+            const long x = crossing_at(c, *leaf, j, side, q);
+            if (x >= 0)
+                return x;
+        }
+    return -1;
+}
+
+/* Walks curve k (its points z, continuous across seams). */
+static void walk_curve(walker *w, const double *z, int n, int closed)
+{
+    const int dim = w->c->dim;
+    w->entry = -1, w->first_exit = closed ? -2 : -1, w->events = 0;
+    if (!closed) {
+        const long x = end_crossing(w, z, &w->leaf);
+        if (x < 0) {
+            refuse_at(w, "starts inside the region, not at a crossing of its boundary", z);
+            return;
+        }
+        enter_by(w, x);
+    } else {
+        double zw[4];
+        wrap(w->c, z, zw);
+        w->leaf = locate_towards(w->c, zw, -1, 0);
+        if (w->leaf < 0) {
+            refuse_at(w, "lies outside the region", z);
+            return;
+        }
+    }
+    for (int i = 0; i + 1 < n && !w->failed; i++)
+        walk_chord(w, z + (size_t)i * dim, z + (size_t)(i + 1) * dim, 0);
+    if (w->failed)
+        return;
+    if (closed) { /* back to the start, continuous across the seams */
+        const double *last = z + (size_t)(n - 1) * dim;
+        double first[4];
+        for (int k = 0; k < dim; k++) {
+            const double T = w->c->periodic[k] ? width(w->c, k) : 0.0;
+            first[k] = z[k] + (T > 0 ? T * nearbyint((last[k] - z[k]) / T) : 0.0);
+        }
+        walk_chord(w, last, first, 0);
+        if (!w->failed && (w->events == 0 || w->entry < 0 ||
+                           w->c->cross[w->entry].mate != w->first_exit))
+            refuse_at(w, "closes other than along an arc of a cell", z);
+        return;
+    }
+    long leaf;
+    const double *end = z + (size_t)(n - 1) * dim;
+    const long x = end_crossing(w, end, &leaf);
+    if (x < 0 || leaf != w->leaf) {
+        refuse_at(w, "ends inside the region, not at a crossing of its boundary", end);
+        return;
+    }
+    leave_by(w, x, end);
+}
+
+/* Consecutive points a, b of a curve lie on opposite edges of a domain that
+ * is not periodic (a closed curve through the seam of a sphere's net, say):
+ * farther apart than this fraction of its width. */
+#define IC_CERTIFY_JUMP 0.5
+
+static int jump(const ic_certificate *c, const double *a, const double *b)
+{
+    for (int k = 0; k < c->dim; k++)
+        if (!c->periodic[k] && fabs(b[k] - a[k]) > IC_CERTIFY_JUMP * width(c, k))
+            return 1;
+    return 0;
+}
+
+/* The first point of a closed curve that lies strictly inside its cell
+ * (a walk started on a face would leave the first cell unpaired). */
+static int strictly_inside_from(const ic_certificate *c, const double *z, int n)
+{
+    for (int i = 0; i < n; i++) {
+        double zw[4];
+        wrap(c, z + (size_t)i * c->dim, zw);
+        const long L = locate_towards(c, zw, -1, 0);
+        int in = L >= 0;
+        for (int k = 0; in && k < c->dim; k++)
+            in = zw[k] > c->cells[L].lo[k] && zw[k] < c->cells[L].hi[k];
+        if (in)
+            return i;
+    }
+    return 0;
+}
+
+/* The closed curve z started at point i0 instead, continuous across the
+ * seams. */
+static void rotated(const ic_certificate *c, const double *z, int n, int i0, double *out)
+{
+    const int dim = c->dim;
+    for (int s = 0; s < n; s++) {
+        double *o = out + (size_t)s * dim;
+        memcpy(o, z + (size_t)((i0 + s) % n) * dim, (size_t)dim * sizeof *o);
+        for (int k = 0; s > 0 && k < dim; k++)
+            if (c->periodic[k]) {
+                const double T = width(c, k);
+                o[k] += T * nearbyint((o[k - dim] - o[k]) / T);
+            }
+    }
+}
+
+/* Walks a curve (z: n points, continuous across periodic seams) as the
+ * pieces its jumps across a domain cut it into: a closed curve that jumps
+ * is open pieces from edge to edge of the search region. */
+static void walk_pieces(walker *w, const double *z, int n, int closed, double *buf)
+{
+    const int dim = w->c->dim;
+    int start = -1;
+    for (int i = 0; i + 1 < n && start < 0; i++)
+        if (jump(w->c, z + (size_t)i * dim, z + (size_t)(i + 1) * dim))
+            start = i + 1;
+    const int closing = closed && jump(w->c, z + (size_t)(n - 1) * dim, z);
+    if (closed && start < 0 && !closing) {
+        rotated(w->c, z, n, strictly_inside_from(w->c, z, n), buf);
+        walk_curve(w, buf, n, 1);
+        return;
+    }
+    if (!closed || closing)
+        start = 0;
+    int m = 0;
+    for (int step = 0; step < n && !w->failed; step++) {
+        const double *p = z + (size_t)((start + step) % n) * dim;
+        double *out = buf + (size_t)m * dim;
+        memcpy(out, p, (size_t)dim * sizeof *p);
+        for (int k = 0; m > 0 && k < dim; k++)
+            if (w->c->periodic[k]) { /* continuous across the rotation too */
+                const double T = width(w->c, k);
+                out[k] += T * nearbyint((out[k - dim] - out[k]) / T);
+            }
+        m++;
+        const double *next = z + (size_t)((start + step + 1) % n) * dim;
+        const int last = step + 1 == n;
+        if (last || jump(w->c, p, next)) {
+            if (m >= 2)
+                walk_curve(w, buf, m, 0);
+            else
+                refuse_at(w, "has a piece of one point between two edges of the domain", p);
+            m = 0;
+        }
+    }
+}
+
+/* The curve's points made continuous across the seams of periodic
+ * coordinates (a point may have been brought into the period). */
+static void unwrap(const ic_certificate *c, const double *z, int n, double *out, int mirror)
+{
+    const int dim = c->dim;
+    for (int i = 0; i < n; i++)
+        for (int k = 0; k < dim; k++) {
+            /* a self-intersection's mirror: (u, v, p, q) read as (p, q, u, v) */
+            const int src = mirror ? (k + 2) % 4 : k;
+            double v = z[(size_t)i * dim + src];
+            if (i > 0 && c->periodic[k]) {
+                const double T = width(c, k), prev = out[(size_t)(i - 1) * dim + k];
+                v += T * nearbyint((prev - v) / T);
+            }
+            out[(size_t)i * dim + k] = v;
+        }
+}
+
+ic_status ic_certify_curves(ic_certificate *c, const ic_certify_curve *curves, int ncurves,
+                            ic_error *err)
+{
+    for (long x = 0; x < c->ncross; x++)
+        c->cross[x].events = 0;
+    const int mirrors = c->pg->kind == &ic_pairing_self ? 2 : 1;
+    for (int k = 0; k < ncurves && c->summary.accepted; k++)
+        for (int mir = 0; mir < mirrors && c->summary.accepted; mir++) {
+            const ic_certify_curve *cv = &curves[k];
+            if (cv->npoints < 2) {
+                ic_certificate_refuse(c, "curve %d has fewer than two points", k);
+                break;
+            }
+            double *z = malloc(2 * (size_t)cv->npoints * (size_t)c->dim * sizeof *z);
+            if (!z)
+                return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");
+            unwrap(c, cv->z, cv->npoints, z, mir);
+            walker w = {.c = c, .curve = k};
+            walk_pieces(&w, z, cv->npoints, cv->closed, z + (size_t)cv->npoints * c->dim);
+            free(z);
+        }
+    for (long x = 0; x < c->ncross && c->summary.accepted; x++) {
+        const ic_crossing *r = &c->cross[x];
+        double q[4];
+        char where[120];
+        for (int k = 0; k < c->dim; k++)
+            q[k] = 0.5 * r->K[k].lo + 0.5 * r->K[k].hi;
+        format_point(c, q, where, sizeof where);
+        if (r->events != 1)
+            ic_certificate_refuse(c, "the arc of cell %d through %s is %s", r->cell, where,
+                                  r->events == 0 ? "not traced" : "traced more than once");
+    }
+    return IC_OK;
+}

@@ -1,0 +1,25 @@
+/*
+ * The traced curves held against a proven cover (match.c): every arc of
+ * every regular cell is traced by exactly one curve, every curve crosses the
+ * cells' faces only at proven crossings, passes through a cell from one end
+ * of one of its arcs to the other, and ends only where a crossing of the
+ * region's boundary is (or closes on itself).
+ */
+#ifndef IC_CERTIFY_MATCH_H
+#define IC_CERTIFY_MATCH_H
+
+#include "certificate.h"
+
+/* A traced curve in search coordinates: npoints x dim values. */
+typedef struct {
+    const double *z;
+    int npoints, closed;
+} ic_certify_curve;
+
+/* Holds the curves against the cover c (whose summary must say accepted):
+ * on a mismatch the certificate is refused with the reason. IC_OK, or an
+ * error out of memory. */
+ic_status ic_certify_curves(ic_certificate *c, const ic_certify_curve *curves, int ncurves,
+                            ic_error *err);
+
+#endif

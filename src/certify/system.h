@@ -1,0 +1,42 @@
+/*
+ * The pairing's equations over a cell of its search space, as the checker
+ * sees them: F (m = dim - 1 components, zero exactly on the intersection)
+ * and its Jacobian J (m x dim), enclosed with interval arithmetic over a box,
+ * from the surfaces' own enclosures alone (docs/tracing.md, "The
+ * certificate"):
+ *   implicit/implicit (x, y, z):      F = (f_A(X), f_B(X));
+ *   parametric/implicit (u, v):       F = f_I(R_P(u, v)), J by the chain rule;
+ *   two parametric sheets (u,v,p,q):  F = R_A(u, v) - R_B(p, q) (also a
+ *                                     self-intersection, B = A).
+ */
+#ifndef IC_CERTIFY_SYSTEM_H
+#define IC_CERTIFY_SYSTEM_H
+
+#include "pairing/pairing.h"
+
+typedef struct {
+    ic_interval F[3];
+    ic_interval J[3][4];
+} ic_certify_eval;
+
+/* The equations' count m of a pairing (its dimension less one). */
+int ic_certify_equations(const ic_pairing *pg);
+
+/* Encloses F and J over the box X (dim intervals); 0 when a surface has no
+ * enclosure there (a callback, a formula undefined somewhere in the box, an
+ * overflow): the box then proves nothing. */
+int ic_certify_enclose(const ic_pairing *pg, const ic_interval *X, ic_certify_eval *out);
+
+/* F and J at the point z (midpoints of the enclosures at z itself); 0 where
+ * they cannot be evaluated. */
+int ic_certify_at(const ic_pairing *pg, const double *z, double F[3], double J[3][4]);
+
+/* 1 when some component of F excludes 0 over X. */
+int ic_certify_excludes(const ic_certify_eval *e, int m);
+
+/* The box of parametric sheet `sheet`'s image over X (two parametric kinds
+ * and the mixed one; the implicit pairing's X is the point itself). 0 when
+ * it has no enclosure. */
+int ic_certify_image(const ic_pairing *pg, const ic_interval *X, ic_interval xyz[3]);
+
+#endif

@@ -1,0 +1,130 @@
+/*
+ * The tracer proposes, the checker proves (docs/tracing.md, "The
+ * certificate"): when the tracer found the whole intersection by its own
+ * account, the certify layer covers the search region with proven cells and
+ * holds the traced curves against them; complete is its verdict.
+ */
+#include "certify_result.h"
+#include "certify/match.h"
+#include "core/options.h"
+#include "local/pair_access.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* The checker's work limits: cells of the cover, the smallest cell as a
+ * fraction of the region's width, boxes per face isolation. */
+#define IC_CERTIFY_MAX_CELLS 200000
+#define IC_CERTIFY_MIN_WIDTH 1e-6
+#define IC_CERTIFY_FACE_BOXES 256
+
+/* Every curve's points in the pairing's search coordinates (freed by the
+ * caller, one block): NULL out of memory. */
+static double *search_points(const ic_trace_result *r, const ic_pairing *pg,
+                             ic_certify_curve *curves)
+{
+    const int dim = pg->kind->dim;
+    size_t total = 0;
+    for (int k = 0; k < r->ncurves; k++)
+        total += (size_t)r->curves[k].npoints;
+    double *z = malloc((total ? total : 1) * (size_t)dim * sizeof *z);
+    if (!z)
+        return NULL;
+    size_t at = 0;
+    for (int k = 0; k < r->ncurves; k++) {
+        const ic_trace_curve *c = &r->curves[k];
+        curves[k] = (ic_certify_curve){z + at * (size_t)dim, c->npoints, c->closed};
+        for (int i = 0; i < c->npoints; i++, at++) {
+            double p[2][2];
+            memcpy(p, c->points[i].params, sizeof p);
+            pg->kind->flatten(pg, c->points[i].xyz, p, z + at * (size_t)dim);
+        }
+    }
+    return z;
+}
+
+static void summarise(ic_trace_certificate *out, const ic_certify_summary *s)
+{
+    out->checked = 1;
+    out->accepted = s->accepted;
+    out->cells = s->cells, out->empty = s->empty, out->outside = s->outside;
+    out->diagonal = s->diagonal, out->regular = s->regular, out->refused = s->refused;
+    out->crossings = s->crossings, out->arcs = s->arcs;
+    out->seconds = s->seconds;
+    memcpy(out->reason, s->reason, sizeof out->reason);
+}
+
+/* Lengths and arc lengths are finite, or nothing is proven. */
+static int finite_lengths(const ic_trace_result *r)
+{
+    for (int k = 0; k < r->ncurves; k++) {
+        const ic_trace_curve *c = &r->curves[k];
+        if (!isfinite(c->length))
+            return 0;
+        for (int i = 0; i < c->npoints; i++)
+            if (!isfinite(c->points[i].s))
+                return 0;
+    }
+    return 1;
+}
+
+/* What the cover cannot prove yet, known before it is grown: a singular
+ * point found (its cells are neither empty nor regular), a tangential curve
+ * (the surfaces' normals are parallel all along it). *n counts them. A
+ * refusal needs no proof: the cover would refuse there at its finest cells,
+ * after far more work. */
+static int unprovable(const ic_trace_result *r, int *n)
+{
+    *n = r->nspecials;
+    for (int k = 0; k < r->ncurves; k++)
+        *n += r->curves[k].tangential;
+    return *n > 0;
+}
+
+ic_status ic_trace_certify(ic_trace_result *r, ic_pair *pair, const ic_trace_options *opt,
+                           ic_error *err)
+{
+    ic_trace_report *rep = &r->report;
+    rep->tracer_complete = rep->complete;
+    if (!rep->complete)
+        return IC_OK;
+    if (!finite_lengths(r)) {
+        rep->complete = 0;
+        ic_trace_failure(rep, "a curve's length is not a finite number: doubles cannot resolve it");
+        return IC_OK;
+    }
+    int singular = 0;
+    if (unprovable(r, &singular)) {
+        rep->certificate.checked = 1;
+        snprintf(rep->certificate.reason, sizeof rep->certificate.reason,
+                 "the certificate has no singular or tangential cells yet: %d singular points "
+                 "or tangential curves",
+                 singular);
+        rep->complete = 0;
+        ic_trace_failure(rep, "not proven by the certificate: %s", rep->certificate.reason);
+        return IC_OK;
+    }
+    const ic_pairing *pg = ic_pair_pairing(pair);
+    ic_certificate *c = ic_certificate_new(pg, opt->box, opt->has_box, err);
+    if (!c)
+        return err ? err->code : IC_ERR_NOMEM;
+    const ic_certify_limits lim = {IC_CERTIFY_MAX_CELLS, IC_CERTIFY_MIN_WIDTH,
+                                   IC_CERTIFY_FACE_BOXES, r->budget.deadline};
+    ic_status st = ic_certify_cover(c, &lim, err);
+    if (st == IC_OK && c->summary.accepted) {
+        ic_certify_curve *curves = malloc((size_t)(r->ncurves + 1) * sizeof *curves);
+        double *z = curves ? search_points(r, pg, curves) : NULL;
+        st = z ? ic_certify_curves(c, curves, r->ncurves, err)
+               : ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");
+        free(z);
+        free(curves);
+    }
+    summarise(&rep->certificate, &c->summary);
+    ic_certificate_free(c);
+    rep->complete = st == IC_OK && rep->certificate.accepted;
+    if (st == IC_OK && !rep->complete)
+        ic_trace_failure(rep, "not proven by the certificate: %s", rep->certificate.reason);
+    return st;
+}

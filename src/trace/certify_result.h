@@ -1,0 +1,13 @@
+/* The checker's verdict on a trace (certify_result.c). */
+#ifndef IC_TRACE_CERTIFY_RESULT_H
+#define IC_TRACE_CERTIFY_RESULT_H
+
+#include "core/result.h"
+
+/* When r claims the whole intersection, certifies it: r->report.complete
+ * becomes the checker's verdict and the report's certificate its summary
+ * (a refusal also goes to the failures). IC_OK, or an error out of memory. */
+ic_status ic_trace_certify(ic_trace_result *r, ic_pair *pair, const ic_trace_options *opt,
+                           ic_error *err);
+
+#endif

@@ -94,7 +94,8 @@ static int grow_leaf(ic_certificate *c, long i, int depth, const ic_certify_limi
         count(c, IC_CELL_REFUSED);
         ic_certificate_refuse(c, "a cell of width %.3g of the region at [%.17g, %.17g] x [%.17g, "
                                  "%.17g] (first two coordinates) is neither empty nor regular: a "
-                                 "singular or tangential point, or surfaces too close to tell",
+                                 "singular or tangential point, the box's boundary across a "
+                                 "parametric sheet, or surfaces too close to tell",
                               rel, cl->lo[0], cl->hi[0], cl->lo[1], cl->hi[1]);
         return 0;
     }

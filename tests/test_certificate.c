@@ -1,0 +1,327 @@
+/*
+ * The certificate (issue 23, docs/tracing.md "The certificate"): complete is
+ * the independent checker's verdict. Sweeps of the classes the issue names
+ * where the certificate can speak today (transversal curves clipped by a
+ * box or a domain edge, loops across a seam, tiny features far from the
+ * origin): every case is right and complete, or honestly incomplete; never
+ * complete and wrong. And mutations: the checker, given a true trace with a
+ * curve dropped, doubled or cut short, or a cover with a crossing taken
+ * away, refuses.
+ *
+ * Truth: the box-clipped circle's arcs in closed form (below); the seam
+ * loops' lengths from tests/truth/gen_certificate_truth.py (mpmath, 40
+ * digits) in tests/truth/certificate_seam_loops.txt.
+ *
+ * usage: test_certificate SOURCE_DIR
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "certify/match.h"
+#include "harness.h"
+#include "intercurve.h"
+#include "local/pair_access.h"
+
+#define PI 3.14159265358979323846
+
+typedef struct {
+    ic_problem *problem;
+    ic_pair *pair;
+    ic_trace_result *res;
+    ic_trace_options opt;
+} traced;
+
+static void release(traced *t)
+{
+    ic_trace_result_free(t->res);
+    ic_pair_free(t->pair);
+    ic_problem_free(t->problem);
+    memset(t, 0, sizeof *t);
+}
+
+static int trace_json(traced *t, const char *name, const char *json)
+{
+    ic_error err;
+    memset(t, 0, sizeof *t);
+    ic_trace_defaults(&t->opt);
+    ic_status st = ic_problem_parse(&t->problem, json, strlen(json), &err);
+    if (st == IC_OK) {
+        t->opt.has_box = ic_problem_box(t->problem, t->opt.box);
+        st = ic_pair_new(&t->pair, ic_problem_surface(t->problem, 0),
+                         ic_problem_surface(t->problem, 1), &err);
+    }
+    if (st == IC_OK)
+        st = ic_trace(&t->res, t->pair, &t->opt, &err);
+    return REQUIRE(st == IC_OK, "%s: %s", name, err.message) ? 0 : -1;
+}
+
+/* The verdicts of a sweep: `right` counts the tracer's right answers,
+ * `missed` the right answers the certificate did not prove. */
+typedef struct {
+    int cases, proven, honest, right, missed;
+} tally;
+
+/* Every curve open (or closed: want_closed), of length want each within
+ * TIER_LENGTH, n of them. */
+static int curves_right(const ic_trace_result *r, int n, double want, int want_closed)
+{
+    if (ic_trace_result_num_curves(r) != n)
+        return 0;
+    for (int k = 0; k < n; k++) {
+        const ic_trace_curve *c = ic_trace_result_curve(r, k);
+        if (c->closed != want_closed || !harness_close(c->length, want, TIER_LENGTH, 1))
+            return 0;
+    }
+    return 1;
+}
+
+/* complete and right, or incomplete with the reason listed: never complete
+ * and wrong. */
+static void judge(tally *t, const traced *tr, const char *name, int right)
+{
+    const ic_trace_report *rep = ic_trace_result_report(tr->res);
+    t->cases++;
+    t->right += right;
+    t->missed += right && !rep->complete;
+    if (rep->complete) {
+        t->proven++;
+        CHECK(right, "%s: complete, and wrong", name);
+    } else {
+        t->honest++;
+        CHECK(rep->nfailures > 0, "%s: incomplete with no failure listed", name);
+    }
+    printf("%s: %s%s%s\n", name, rep->complete ? "proven" : "not proven: ",
+           rep->complete ? "" : rep->certificate.reason,
+           rep->complete || rep->certificate.checked ? "" : rep->nfailures ? rep->failures[0] : "");
+}
+
+static const double CLIP[] = {0.9, 0.99, 0.9999, 0.99999, 0.999999, 0.9999999};
+#define NCLIP (int)(sizeof CLIP / sizeof CLIP[0])
+
+/* The unit circle z = 0 cut by |x| <= b, |y| <= b: the four caps about the
+ * axes, |theta - k pi/2| < acos b, go; four arcs of length pi/2 - 2 acos b
+ * remain. First the sphere and the plane as implicit surfaces in the box
+ * [-b, b]^2 x [-1/2, 1/2]; then the plane as a parametric patch over the
+ * domain [-b, b]^2 against the implicit sphere (the domain's edges cut). */
+static void sweep_clipped_circle(void)
+{
+    tally box = {0}, domain = {0};
+    for (int i = 0; i < NCLIP; i++) {
+        const double b = CLIP[i], arc = PI / 2 - 2 * acos(b);
+        char json[1024], name[80];
+        snprintf(json, sizeof json,
+                 "{\"surfaces\": [{\"type\": \"implicit\", \"f\": \"x^2+y^2+z^2-1\"},"
+                 "{\"type\": \"implicit\", \"f\": \"z\"}],"
+                 "\"box\": [[%.17g, %.17g], [%.17g, %.17g], [-0.5, 0.5]]}",
+                 -b, b, -b, b);
+        snprintf(name, sizeof name, "circle in the box b = %.7f", b);
+        traced t;
+        if (trace_json(&t, name, json) == 0)
+            judge(&box, &t, name, curves_right(t.res, 4, arc, 0));
+        release(&t);
+        snprintf(json, sizeof json,
+                 "{\"surfaces\": [{\"type\": \"parametric\", \"xyz\": [\"u\", \"v\", \"0\"],"
+                 "\"domain\": [[%.17g, %.17g], [%.17g, %.17g]]},"
+                 "{\"type\": \"implicit\", \"f\": \"x^2+y^2+z^2-1\"}]}",
+                 -b, b, -b, b);
+        snprintf(name, sizeof name, "circle on the patch b = %.7f", b);
+        if (trace_json(&t, name, json) == 0)
+            judge(&domain, &t, name, curves_right(t.res, 4, arc, 0));
+        release(&t);
+    }
+    /* Where the tracer is wrong (two arcs joined across a cap outside the
+     * box, the whole circle) the certificate refuses (judge); where it is
+     * right the certificate proves it: a refusal would be honest, but then
+     * it would say nothing on the class it was made for. */
+    printf("clipped circles: the tracer right on %d and %d of %d, proven %d and %d\n",
+           box.right, domain.right, NCLIP, box.proven, domain.proven);
+    CHECK(box.missed == 0 && domain.missed == 0,
+          "clipped circles: %d and %d right answers not proven", box.missed, domain.missed);
+}
+
+/* The seam loops' lengths (gen_certificate_truth.py). */
+static int read_seam_truth(const char *src, double r[6], double L[6])
+{
+    char path[1024], line[256];
+    snprintf(path, sizeof path, "%s/tests/truth/certificate_seam_loops.txt", src);
+    FILE *f = fopen(path, "r");
+    if (!REQUIRE(f, "cannot read %s", path))
+        return 0;
+    int n = 0;
+    while (n < 6 && fgets(line, sizeof line, f))
+        if (line[0] != '#' && sscanf(line, "%lf %lf", &r[n], &L[n]) == 2)
+            n++;
+    fclose(f);
+    return REQUIRE(n == 6, "%s: %d of 6 radii", path, n);
+}
+
+/* The curves' lengths add up to want (TIER_LENGTH), in at most n curves. */
+static int total_right(const ic_trace_result *r, int n, double want)
+{
+    double sum = 0.0;
+    for (int k = 0; k < ic_trace_result_num_curves(r); k++)
+        sum += ic_trace_result_curve(r, k)->length;
+    const int m = ic_trace_result_num_curves(r);
+    return m >= 1 && m <= n && harness_close(sum, want, TIER_LENGTH, 1);
+}
+
+/* A sphere of radius r about (1, 0, 0) and the unit cylinder, its u domain
+ * [0, 2 pi] periodic or not: one loop across the seam u = 0, all of it
+ * (the issue's class lost half of it where the domain is not periodic): one
+ * closed curve, or on a domain not marked periodic one or two curves ending
+ * at the domain's edges, of the loop's length together. */
+static void sweep_seam_loops(const char *src)
+{
+    double r[6], L[6];
+    if (!read_seam_truth(src, r, L))
+        return;
+    tally open = {0}, closed = {0};
+    for (int i = 0; i < 6; i++)
+        for (int periodic = 0; periodic < 2; periodic++) {
+            char json[1024], name[80];
+            snprintf(json, sizeof json,
+                     "{\"surfaces\": [{\"type\": \"parametric\","
+                     "\"xyz\": [\"cos(u)\", \"sin(u)\", \"v\"],"
+                     "\"domain\": [[0, \"2*pi\"], [-2, 2]], \"periodic\": [%s, false]},"
+                     "{\"type\": \"implicit\", \"f\": \"(x-1)^2+y^2+z^2-%.17g\"}]}",
+                     periodic ? "true" : "false", r[i] * r[i]);
+            snprintf(name, sizeof name, "seam loop r = %.1f, %s", r[i],
+                     periodic ? "periodic" : "not periodic");
+            traced t;
+            if (trace_json(&t, name, json) == 0)
+                judge(periodic ? &closed : &open, &t, name,
+                      periodic ? curves_right(t.res, 1, L[i], 1) : total_right(t.res, 2, L[i]));
+            release(&t);
+        }
+    CHECK(open.proven == 6 && closed.proven == 6 && open.missed == 0 && closed.missed == 0,
+          "seam loops: %d and %d of 6 proven", open.proven, closed.proven);
+}
+
+/* Tiny features far out: two placed cylinders of radii rho and 0.7 rho
+ * about perpendicular axes through (s, s, s): two loops. A length that is
+ * not a finite number is never complete (the tracer still makes NaN lengths
+ * there: issue 23's item 5, not done). */
+static void sweep_tiny_far(void)
+{
+    static const double SCALE[][2] = {{1e-4, 1000}, {1e-4, 1e4}, {1e-3, 1e5},
+                                      {1e-2, 1e6},  {1e-5, 10},  {1e-4, -1000}};
+    tally t6 = {0};
+    for (int i = 0; i < 6; i++) {
+        const double rho = SCALE[i][0], s = SCALE[i][1];
+        char json[1024], name[80];
+        snprintf(json, sizeof json,
+                 "{\"surfaces\": [{\"type\": \"cylinder\", \"center\": [%.17g, %.17g, %.17g],"
+                 "\"axis\": [0, 0, 1], \"radius\": %.17g},"
+                 "{\"type\": \"cylinder\", \"center\": [%.17g, %.17g, %.17g],"
+                 "\"axis\": [1, 0, 0], \"radius\": %.17g}],"
+                 "\"box\": [[%.17g, %.17g], [%.17g, %.17g], [%.17g, %.17g]]}",
+                 s, s, s, rho, s, s, s, 0.7 * rho, s - 2 * rho, s + 2 * rho, s - 2 * rho,
+                 s + 2 * rho, s - 2 * rho, s + 2 * rho);
+        snprintf(name, sizeof name, "cylinders of radius %g at %g", rho, s);
+        traced t;
+        if (trace_json(&t, name, json) == 0) {
+            int finite = 1;
+            for (int k = 0; k < ic_trace_result_num_curves(t.res); k++)
+                finite = finite && isfinite(ic_trace_result_curve(t.res, k)->length);
+            CHECK(finite || !ic_trace_result_report(t.res)->complete,
+                  "%s: complete with a length that is not finite", name);
+            judge(&t6, &t, name, finite && ic_trace_result_num_curves(t.res) == 2);
+        }
+        release(&t);
+    }
+}
+
+/* The curves of a result in search coordinates (one block, freed by the
+ * caller). */
+static double *search_curves(const traced *t, const ic_pairing *pg, ic_certify_curve *cv)
+{
+    const int n = ic_trace_result_num_curves(t->res), dim = pg->kind->dim;
+    size_t total = 0;
+    for (int k = 0; k < n; k++)
+        total += (size_t)ic_trace_result_curve(t->res, k)->npoints;
+    double *z = malloc(total * (size_t)dim * sizeof *z);
+    size_t at = 0;
+    for (int k = 0; z && k < n; k++) {
+        const ic_trace_curve *c = ic_trace_result_curve(t->res, k);
+        cv[k] = (ic_certify_curve){z + at * (size_t)dim, c->npoints, c->closed};
+        for (int i = 0; i < c->npoints; i++, at++) {
+            double p[2][2];
+            memcpy(p, c->points[i].params, sizeof p);
+            pg->kind->flatten(pg, c->points[i].xyz, p, z + at * (size_t)dim);
+        }
+    }
+    return z;
+}
+
+/* The checker's verdict on the cover of t's region and the curves cv. With
+ * `drop_crossing`, the cover loses one crossing of its first regular cell
+ * that has any (a crossing count off by one). */
+static int verdict(const traced *t, const ic_certify_curve *cv, int n, int drop_crossing,
+                   char *reason)
+{
+    const ic_pairing *pg = ic_pair_pairing(t->pair);
+    ic_error err;
+    ic_certificate *c = ic_certificate_new(pg, t->opt.box, t->opt.has_box, &err);
+    if (!REQUIRE(c, "certificate: %s", err.message))
+        return -1;
+    const ic_certify_limits lim = {200000, 1e-6, 256, 0};
+    int ok = ic_certify_cover(c, &lim, &err) == IC_OK && c->summary.accepted;
+    for (long i = 0; ok && drop_crossing && i < c->ncells; i++) {
+        ic_cell *cl = &c->cells[i];
+        if (cl->kind == IC_CELL_REGULAR && cl->ncross > 0) {
+            cl->ncross--; /* its last crossing is no longer the cell's */
+            drop_crossing = 0;
+        }
+    }
+    if (ok)
+        ok = ic_certify_curves(c, cv, n, &err) == IC_OK && c->summary.accepted;
+    snprintf(reason, 240, "%s", c->summary.reason);
+    ic_certificate_free(c);
+    return ok;
+}
+
+/* Mutations of a proven trace: the circle in the box b = 0.99 (four arcs). */
+static void mutations(void)
+{
+    const char *json = "{\"surfaces\": [{\"type\": \"implicit\", \"f\": \"x^2+y^2+z^2-1\"},"
+                       "{\"type\": \"implicit\", \"f\": \"z\"}],"
+                       "\"box\": [[-0.99, 0.99], [-0.99, 0.99], [-0.5, 0.5]]}";
+    traced t;
+    if (trace_json(&t, "mutations", json) != 0) {
+        release(&t);
+        return;
+    }
+    const int n = ic_trace_result_num_curves(t.res);
+    ic_certify_curve cv[8];
+    double *z = n == 4 ? search_curves(&t, ic_pair_pairing(t.pair), cv) : NULL;
+    if (REQUIRE(z, "mutations: %d curves (want 4)", n)) {
+        char why[240];
+        CHECK(verdict(&t, cv, 4, 0, why) == 1, "the true trace is refused: %s", why);
+        CHECK(verdict(&t, cv, 3, 0, why) == 0 && strstr(why, "not traced"),
+              "a curve dropped is not refused as untraced: '%s'", why);
+        cv[4] = cv[0];
+        CHECK(verdict(&t, cv, 5, 0, why) == 0 && strstr(why, "more than once"),
+              "a curve doubled is not refused: '%s'", why);
+        ic_certify_curve cut[4] = {cv[0], cv[1], cv[2], cv[3]};
+        cut[2].npoints = cut[2].npoints * 2 / 3;
+        CHECK(verdict(&t, cut, 4, 0, why) == 0 && strstr(why, "ends inside"),
+              "a curve cut short is not refused: '%s'", why);
+        CHECK(verdict(&t, cv, 4, 1, why) == 0,
+              "a cover with a crossing taken away accepts the trace");
+        printf("mutations: dropped, doubled, cut short and a crossing less all refused\n");
+    }
+    free(z);
+    release(&t);
+}
+
+int main(int argc, char **argv)
+{
+    const char *src = argc > 1 ? argv[1] : ".";
+    sweep_clipped_circle();
+    sweep_seam_loops(src);
+    sweep_tiny_far();
+    mutations();
+    return harness_finish("test_certificate");
+}

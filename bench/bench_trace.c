@@ -89,9 +89,12 @@ static int whole_example(const char *dir, const char *file, double tol)
             int points = 0;
             for (int i = 0; i < ic_trace_result_num_curves(r); i++)
                 points += ic_trace_result_curve(r, i)->npoints;
-            printf("%-26s %6.0e %6d %6d %6d %10.1f %10.1e\n", file, tol,
+            /* the certificate's share of the trace (docs/performance.md) */
+            const ic_trace_certificate *c = &ic_trace_result_report(r)->certificate;
+            printf("%-26s %6.0e %6d %6d %6d %10.1f %10.1e %9.1f %s\n", file, tol,
                    ic_trace_result_num_curves(r), points, ic_trace_result_num_specials(r), ms,
-                   worst_distance(r, pair));
+                   worst_distance(r, pair), c->seconds * 1e3,
+                   c->accepted ? "proven" : c->checked ? "refused" : "-");
             rc = 0;
         }
     }
@@ -232,15 +235,16 @@ int main(int argc, char **argv)
     }
     /* the whole intersection of the bundled examples (every pairing):
      * start-point search, every curve, the report */
-    printf("\n%-26s %6s %6s %6s %6s %10s %10s\n", "whole intersection (depth 6)", "tol", "curves",
-           "points", "special", "ms", "max dist");
+    printf("\n%-26s %6s %6s %6s %6s %10s %10s %9s %s\n", "whole intersection (depth 6)", "tol",
+           "curves", "points", "special", "ms", "max dist", "cert ms", "certificate");
     const char *files[] = {"viviani-implicit.json",       "viviani.json",
                            "ellipsoids.json",             "enneper-self.json",
                            "sphere-cylinder-branch.json", "sphere-plane-contact.json",
                            "torus-sphere.json",           "torus-plane-tangential.json",
                            "cylinders.json",              "cylinders-equal.json",
                            "small-loop.json",             "tacnode.json",
-                           "nurbs-patch-sphere.json",     "placed-cylinders.json"};
+                           "nurbs-patch-sphere.json",     "placed-cylinders.json",
+                           "paraboloid-cubic.json"};
     for (size_t c = 0; c < sizeof files / sizeof files[0]; c++)
         for (int k = 0; k < 3; k++)
             if (whole_example(dir, files[c], tols[k]) != 0)

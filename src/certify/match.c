@@ -352,7 +352,8 @@ static void walk_chord(walker *w, const double *a, const double *b, int halvings
         return;
     }
     double cur[4], target[4];
-    memcpy(cur, a, sizeof cur), memcpy(target, b, sizeof target);
+    memcpy(cur, a, (size_t)w->c->dim * sizeof *a);
+    memcpy(target, b, (size_t)w->c->dim * sizeof *b);
     for (int step = 0; step < 64; step++) {
         const int rc = cross_face(w, cur, target);
         if (rc != 0)

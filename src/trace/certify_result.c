@@ -14,8 +14,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The checker's work limits: cells of the cover, the smallest cell as a
- * fraction of the region's width, boxes per face isolation. */
+/* The checker's work limits: cells of the cover (as many as the tracer's
+ * search examined, between the two bounds: the cost of the proof follows
+ * the cost of the trace, and the limit, unlike a clock, gives the same
+ * verdict on every machine), the smallest cell as a fraction of the
+ * region's width, boxes per face isolation. */
+#define IC_CERTIFY_MIN_CELLS 20000
 #define IC_CERTIFY_MAX_CELLS 200000
 #define IC_CERTIFY_MIN_WIDTH 1e-6
 #define IC_CERTIFY_FACE_BOXES 256
@@ -110,8 +114,11 @@ ic_status ic_trace_certify(ic_trace_result *r, ic_pair *pair, const ic_trace_opt
     ic_certificate *c = ic_certificate_new(pg, opt->box, opt->has_box, err);
     if (!c)
         return err ? err->code : IC_ERR_NOMEM;
-    const ic_certify_limits lim = {IC_CERTIFY_MAX_CELLS, IC_CERTIFY_MIN_WIDTH,
-                                   IC_CERTIFY_FACE_BOXES, r->budget.deadline};
+    const long cells = rep->cells < IC_CERTIFY_MIN_CELLS   ? IC_CERTIFY_MIN_CELLS
+                       : rep->cells > IC_CERTIFY_MAX_CELLS ? IC_CERTIFY_MAX_CELLS
+                                                           : rep->cells;
+    const ic_certify_limits lim = {cells, IC_CERTIFY_MIN_WIDTH, IC_CERTIFY_FACE_BOXES,
+                                   r->budget.deadline};
     ic_status st = ic_certify_cover(c, &lim, err);
     if (st == IC_OK && c->summary.accepted) {
         ic_certify_curve *curves = malloc((size_t)(r->ncurves + 1) * sizeof *curves);

@@ -20,7 +20,7 @@ trap 'rm -rf "$tmp"' EXIT
 
 # From each help: "cmd|option|range|default" (range and default may be
 # empty); the range without its value's name ("K in ", "one of ").
-for cmd in eval point trace plot surfaces; do
+for cmd in eval point trace plot surfaces verify; do
     "$bin" $cmd --help >"$tmp/help.$cmd"
     check "$cmd --help exits 0" $?
     opt="" meta="" range="" default=""

@@ -36,4 +36,13 @@ ic_status ic_api_trace_problem(ic_trace_result **res, ic_pair **pair, const ic_p
 ic_status ic_api_list_surfaces(FILE *f, const char *path, int json, int *read_failed,
                                ic_error *err);
 
+/* The trace document doc_text (named `name` in messages) checked against
+ * the problem without the tracer (docs/tracing.md, "The certificate"): its
+ * curves held against a cover grown afresh; *out the verdict. IC_OK when the
+ * check ran (accepted or refused: out says), IC_ERR_INVALID for a document
+ * that is not a trace of curves (the message names the JSON path), the
+ * pair's or the region's errors, IC_ERR_NOMEM. */
+ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const char *name,
+                        ic_trace_certificate *out, ic_error *err);
+
 #endif

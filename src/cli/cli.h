@@ -23,6 +23,7 @@ int ic_cmd_point(int argc, char **argv);
 int ic_cmd_trace(int argc, char **argv);
 int ic_cmd_plot(int argc, char **argv);
 int ic_cmd_surfaces(int argc, char **argv);
+int ic_cmd_verify(int argc, char **argv);
 /* `intercurve plot`: runs intercurve-plot with the command's own argv
  * (plot_exec.c); returns only when it cannot, with EXIT_COMPUTE after the
  * reason. */

@@ -20,6 +20,8 @@ static const char USAGE[] =
     "  surfaces\n"
     "          list the surfaces of a STEP or IGES file (intercurve surfaces\n"
     "          FILE.step|FILE.igs), so that a problem file can name them\n"
+    "  verify  check a saved trace against its problem without the tracer (intercurve\n"
+    "          verify PROBLEM.json --trace TRACE.json): proven or not, and why\n"
     "\n"
     "example:\n"
     "  intercurve eval examples/viviani.json --surface sphere --at 0.3,0.4\n"
@@ -51,6 +53,8 @@ int main(int argc, char **argv)
         return ic_cli_exec_plot(argv);
     if (strcmp(argv[1], "surfaces") == 0)
         return ic_cmd_surfaces(argc - 1, argv + 1);
+    if (strcmp(argv[1], "verify") == 0)
+        return ic_cmd_verify(argc - 1, argv + 1);
     fprintf(stderr, "intercurve: unknown command '%s' (try 'intercurve --help')\n", argv[1]);
     return EXIT_INPUT;
 }

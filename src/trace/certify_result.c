@@ -14,15 +14,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The checker's work limits: cells of the cover (as many as the tracer's
- * search examined, between the two bounds: the cost of the proof follows
- * the cost of the trace, and the limit, unlike a clock, gives the same
- * verdict on every machine), the smallest cell as a fraction of the
- * region's width, boxes per face isolation. */
-#define IC_CERTIFY_MIN_CELLS 20000
-#define IC_CERTIFY_MAX_CELLS 200000
-#define IC_CERTIFY_MIN_WIDTH 1e-6
-#define IC_CERTIFY_FACE_BOXES 256
 
 /* Every curve's points in the pairing's search coordinates (freed by the
  * caller, one block): NULL out of memory. */
@@ -111,25 +102,17 @@ ic_status ic_trace_certify(ic_trace_result *r, ic_pair *pair, const ic_trace_opt
         return IC_OK;
     }
     const ic_pairing *pg = ic_pair_pairing(pair);
-    ic_certificate *c = ic_certificate_new(pg, opt->box, opt->has_box, err);
-    if (!c)
-        return err ? err->code : IC_ERR_NOMEM;
-    const long cells = rep->cells < IC_CERTIFY_MIN_CELLS   ? IC_CERTIFY_MIN_CELLS
-                       : rep->cells > IC_CERTIFY_MAX_CELLS ? IC_CERTIFY_MAX_CELLS
-                                                           : rep->cells;
-    const ic_certify_limits lim = {cells, IC_CERTIFY_MIN_WIDTH, IC_CERTIFY_FACE_BOXES,
-                                   r->budget.deadline};
-    ic_status st = ic_certify_cover(c, &lim, err);
-    if (st == IC_OK && c->summary.accepted) {
-        ic_certify_curve *curves = malloc((size_t)(r->ncurves + 1) * sizeof *curves);
-        double *z = curves ? search_points(r, pg, curves) : NULL;
-        st = z ? ic_certify_curves(c, curves, r->ncurves, err)
-               : ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");
-        free(z);
-        free(curves);
-    }
-    summarise(&rep->certificate, &c->summary);
-    ic_certificate_free(c);
+    const ic_certify_limits lim = ic_certify_limits_for(rep->cells, r->budget.deadline);
+    ic_certify_curve *curves = malloc((size_t)(r->ncurves + 1) * sizeof *curves);
+    double *z = curves ? search_points(r, pg, curves) : NULL;
+    ic_certify_summary sum;
+    ic_status st = z ? ic_certify_run(pg, opt->box, opt->has_box, &lim, curves, r->ncurves,
+                                      &sum, err)
+                     : ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");
+    free(z);
+    free(curves);
+    if (st == IC_OK)
+        summarise(&rep->certificate, &sum);
     rep->complete = st == IC_OK && rep->certificate.accepted;
     if (st == IC_OK && !rep->complete)
         ic_trace_failure(rep, "not proven by the certificate: %s", rep->certificate.reason);

@@ -1,0 +1,122 @@
+/*
+ * `intercurve verify` (api.h): a saved trace document checked again without
+ * the tracer (docs/tracing.md, "The certificate"). Its curves are read from
+ * the document, put in the pairing's search coordinates, and held against a
+ * cover grown afresh from the problem's surfaces: the certify layer's check,
+ * with the document's own search size as its work limit.
+ */
+#include "api/api.h"
+#include "certify/match.h"
+#include "local/pair_access.h"
+
+#include <cjson/cJSON.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* A number array of n numbers into out; 0 when it is not one. */
+static int numbers(const cJSON *a, double *out, int n)
+{
+    if (!cJSON_IsArray(a) || cJSON_GetArraySize(a) != n)
+        return 0;
+    int i = 0;
+    for (const cJSON *x = a->child; x; x = x->next, i++) {
+        if (!cJSON_IsNumber(x))
+            return 0;
+        out[i] = x->valuedouble;
+    }
+    return 1;
+}
+
+/* One point's xyz and params (null for an implicit sheet). */
+static int read_point(const cJSON *p, double xyz[3], double params[2][2])
+{
+    memset(params, 0, 4 * sizeof(double));
+    if (!numbers(cJSON_GetObjectItemCaseSensitive(p, "xyz"), xyz, 3))
+        return 0;
+    const cJSON *pr = cJSON_GetObjectItemCaseSensitive(p, "params");
+    if (!cJSON_IsArray(pr) || cJSON_GetArraySize(pr) != 2)
+        return 0;
+    for (int s = 0; s < 2; s++) {
+        const cJSON *uv = cJSON_GetArrayItem(pr, s);
+        if (!cJSON_IsNull(uv) && !numbers(uv, params[s], 2))
+            return 0;
+    }
+    return 1;
+}
+
+/* The document's curves in search coordinates: curves[] and one block of
+ * points (*z, the caller's to free). */
+static ic_status read_curves(const cJSON *doc, const ic_pairing *pg, const char *name,
+                             ic_certify_curve **curves, int *n, double **z, ic_error *err)
+{
+    const cJSON *cs = cJSON_GetObjectItemCaseSensitive(doc, "curves");
+    if (!cJSON_IsArray(cs))
+        return ic_error_set(err, IC_ERR_INVALID, 0, "%s: curves: not an array", name);
+    const int dim = pg->kind->dim;
+    size_t total = 0;
+    *n = cJSON_GetArraySize(cs);
+    for (const cJSON *c = cs->child; c; c = c->next)
+        total += (size_t)cJSON_GetArraySize(cJSON_GetObjectItemCaseSensitive(c, "points"));
+    *curves = calloc((size_t)*n + 1, sizeof **curves);
+    *z = malloc((total + 1) * (size_t)dim * sizeof **z);
+    if (!*curves || !*z)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory reading %s", name);
+    size_t at = 0;
+    int k = 0;
+    for (const cJSON *c = cs->child; c; c = c->next, k++) {
+        const cJSON *pts = cJSON_GetObjectItemCaseSensitive(c, "points");
+        if (!cJSON_IsArray(pts))
+            return ic_error_set(err, IC_ERR_INVALID, 0, "%s: curves[%d].points: not an array",
+                                name, k);
+        (*curves)[k] = (ic_certify_curve){*z + at * (size_t)dim, cJSON_GetArraySize(pts),
+                                          cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(c, "closed"))};
+        int i = 0;
+        for (const cJSON *p = pts->child; p; p = p->next, i++, at++) {
+            double xyz[3], params[2][2];
+            if (!read_point(p, xyz, params))
+                return ic_error_set(err, IC_ERR_INVALID, 0,
+                                    "%s: curves[%d].points[%d]: xyz must be 3 numbers and "
+                                    "params two [u, v] pairs or null",
+                                    name, k, i);
+            pg->kind->flatten(pg, xyz, params, *z + at * (size_t)dim);
+        }
+    }
+    return IC_OK;
+}
+
+ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const char *name,
+                        ic_trace_certificate *out, ic_error *err)
+{
+    memset(out, 0, sizeof *out);
+    cJSON *doc = cJSON_Parse(doc_text);
+    if (!doc)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "%s: not a JSON document", name);
+    ic_pair *pair = NULL;
+    ic_certify_curve *curves = NULL;
+    double *z = NULL;
+    int n = 0;
+    ic_status st = ic_api_problem_pair(&pair, problem, err);
+    if (st == IC_OK)
+        st = read_curves(doc, ic_pair_pairing(pair), name, &curves, &n, &z, err);
+    if (st == IC_OK) {
+        const cJSON *cells = cJSON_GetObjectItemCaseSensitive(
+            cJSON_GetObjectItemCaseSensitive(doc, "report"), "cells");
+        double box[3][2];
+        const int has_box = ic_problem_box(problem, box);
+        const ic_certify_limits lim =
+            ic_certify_limits_for(cJSON_IsNumber(cells) ? (long)cells->valuedouble : 0, 0);
+        ic_certify_summary s;
+        st = ic_certify_run(ic_pair_pairing(pair), box, has_box, &lim, curves, n, &s, err);
+        out->checked = 1;
+        out->accepted = st == IC_OK && s.accepted;
+        out->cells = s.cells, out->empty = s.empty, out->outside = s.outside;
+        out->diagonal = s.diagonal, out->regular = s.regular, out->refused = s.refused;
+        out->crossings = s.crossings, out->arcs = s.arcs, out->seconds = s.seconds;
+        memcpy(out->reason, s.reason, sizeof out->reason);
+    }
+    free(curves);
+    free(z);
+    ic_pair_free(pair);
+    cJSON_Delete(doc);
+    return st;
+}

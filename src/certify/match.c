@@ -71,7 +71,8 @@ static long locate_towards(const ic_certificate *c, const double *z, int j, int 
     long i = 0;
     while (c->cells[i].kind == IC_CELL_SPLIT) {
         const ic_cell *n = &c->cells[i];
-        const int upper = n->axis == j && z[j] == n->at ? dir > 0 : z[n->axis] >= n->at;
+        const double x = z[n->axis];
+        const int upper = n->axis == j && x == n->at ? dir > 0 : x >= n->at;
         i = n->child[upper];
     }
     return i;

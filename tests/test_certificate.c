@@ -6,7 +6,7 @@
  * origin): every case is right and complete, or honestly incomplete; never
  * complete and wrong. And mutations: the checker, given a true trace with a
  * curve dropped, doubled or cut short, or a cover with a crossing taken
- * away, refuses.
+ * away, or two arcs swapped inside one cell, refuses.
  *
  * Truth: the box-clipped circle's arcs in closed form (below); the seam
  * loops' lengths from tests/truth/gen_certificate_truth.py (mpmath, 40
@@ -316,6 +316,107 @@ static void mutations(void)
     release(&t);
 }
 
+/* The point of arc cv nearest to (x, y): its index, and *d the distance. */
+static int nearest(const ic_certify_curve *cv, double x, double y, double *d)
+{
+    int best = 0;
+    *d = INFINITY;
+    for (int i = 0; i < cv->npoints; i++) {
+        const double e = hypot(cv->z[3 * i] - x, cv->z[3 * i + 1] - y);
+        if (e < *d)
+            *d = e, best = i;
+    }
+    return best;
+}
+
+/* Arc cv as an array of points in search coordinates (3 each), reversed
+ * when `flip`: a copy to free. */
+static double *oriented(const ic_certify_curve *cv, int flip)
+{
+    double *z = malloc((size_t)cv->npoints * 3 * sizeof *z);
+    for (int i = 0; z && i < cv->npoints; i++)
+        memcpy(z + 3 * i, cv->z + 3 * (flip ? cv->npoints - 1 - i : i), 3 * sizeof *z);
+    return z;
+}
+
+/* Two curves swapped between two arcs inside one cell: P ends at the box
+ * face x = b below the axis, Q starts there above it, and both ends lie in
+ * one cell. F1 follows P into that cell and leaves along Q; F2 comes in
+ * along Q and leaves along P. Every crossing is still met exactly once: only
+ * the rule that a passage follows one arc of the cell (match.c) refuses. */
+static void swapped_arcs(void)
+{
+    const double b = 0.9999, s = sqrt(1 - b * b);
+    char json[512];
+    snprintf(json, sizeof json,
+             "{\"surfaces\": [{\"type\": \"implicit\", \"f\": \"x^2+y^2+z^2-1\"},"
+             "{\"type\": \"implicit\", \"f\": \"z\"}],"
+             "\"box\": [[%.17g, %.17g], [%.17g, %.17g], [-0.5, 0.5]]}",
+             -b, b, -b, b);
+    traced t;
+    ic_certify_curve cv[4];
+    double *z = NULL, *P = NULL, *Q = NULL, *f1 = NULL, *f2 = NULL;
+    if (trace_json(&t, "swapped arcs", json) != 0 ||
+        !REQUIRE(ic_trace_result_num_curves(t.res) == 4, "swapped arcs: 4 curves"))
+        goto done;
+    z = search_curves(&t, ic_pair_pairing(t.pair), cv);
+    int p = -1, q = -1, pflip = 0, qflip = 0;
+    for (int k = 0; k < 4; k++) {
+        double d;
+        const int i = nearest(&cv[k], b, -s, &d);
+        if (d < 1e-6 && (i == 0 || i == cv[k].npoints - 1))
+            p = k, pflip = i == 0; /* P must end there */
+        const int j = nearest(&cv[k], b, s, &d);
+        if (d < 1e-6 && (j == 0 || j == cv[k].npoints - 1))
+            q = k, qflip = j != 0; /* Q must start there */
+    }
+    if (!REQUIRE(p >= 0 && q >= 0 && p != q, "swapped arcs: the arcs at the cap not found"))
+        goto done;
+    P = oriented(&cv[p], pflip), Q = oriented(&cv[q], qflip);
+    const int np = cv[p].npoints, nq = cv[q].npoints;
+    ic_error err;
+    ic_certificate *c = ic_certificate_new(ic_pair_pairing(t.pair), t.opt.box, 1, &err);
+    const ic_certify_limits lim = {200000, 1e-6, 256, 0};
+    if (!REQUIRE(c && ic_certify_cover(c, &lim, &err) == IC_OK && c->summary.accepted,
+                 "swapped arcs: the cover"))
+        goto free_cert;
+    /* k: P's first point from which it stays in the cell of its end; j: Q's
+     * last point up to which it is in the cell of its start */
+    const long L = ic_certificate_locate(c, P + 3 * (np - 1));
+    int k = np - 1, j = 0;
+    while (k > 0 && ic_certificate_locate(c, P + 3 * (k - 1)) == L)
+        k--;
+    while (j + 1 < nq && ic_certificate_locate(c, Q + 3 * (j + 1)) == L)
+        j++;
+    if (!REQUIRE(ic_certificate_locate(c, Q) == L && k > 0 && k < np - 1 && j > 0 && j < nq - 1,
+                 "swapped arcs: the cap's two ends are not in one cell with points inside"))
+        goto free_cert;
+    f1 = malloc((size_t)(np + nq) * 3 * sizeof *f1);
+    f2 = malloc((size_t)(np + nq) * 3 * sizeof *f2);
+    if (!REQUIRE(f1 && f2, "out of memory"))
+        goto free_cert;
+    memcpy(f1, P, (size_t)(k + 1) * 3 * sizeof *f1); /* P[0..k], Q[j..] */
+    memcpy(f1 + 3 * (k + 1), Q + 3 * j, (size_t)(nq - j) * 3 * sizeof *f1);
+    memcpy(f2, Q, (size_t)(j + 1) * 3 * sizeof *f2); /* Q[0..j], P[k..] */
+    memcpy(f2 + 3 * (j + 1), P + 3 * k, (size_t)(np - k) * 3 * sizeof *f2);
+    ic_certify_curve mix[4];
+    int m = 0;
+    for (int a = 0; a < 4; a++)
+        if (a != p && a != q)
+            mix[m++] = cv[a];
+    mix[m++] = (ic_certify_curve){f1, k + 1 + nq - j, 0};
+    mix[m++] = (ic_certify_curve){f2, j + 1 + np - k, 0};
+    CHECK(ic_certify_curves(c, mix, 4, &err) == IC_OK && !c->summary.accepted &&
+              strstr(c->summary.reason, "other than along one of its arcs"),
+          "two arcs swapped inside a cell are not refused: '%s'", c->summary.reason);
+    printf("swapped arcs: refused (%s)\n", c->summary.reason);
+free_cert:
+    ic_certificate_free(c);
+done:
+    free(f1), free(f2), free(P), free(Q), free(z);
+    release(&t);
+}
+
 int main(int argc, char **argv)
 {
     const char *src = argc > 1 ? argv[1] : ".";
@@ -323,5 +424,6 @@ int main(int argc, char **argv)
     sweep_seam_loops(src);
     sweep_tiny_far();
     mutations();
+    swapped_arcs();
     return harness_finish("test_certificate");
 }

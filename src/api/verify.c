@@ -68,8 +68,8 @@ static ic_status read_curves(const cJSON *doc, const ic_pairing *pg, const char 
         if (!cJSON_IsArray(pts))
             return ic_error_set(err, IC_ERR_INVALID, 0, "%s: curves[%d].points: not an array",
                                 name, k);
-        (*curves)[k] = (ic_certify_curve){*z + at * (size_t)dim, cJSON_GetArraySize(pts),
-                                          cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(c, "closed"))};
+        const int closed = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(c, "closed"));
+        (*curves)[k] = (ic_certify_curve){*z + at * (size_t)dim, cJSON_GetArraySize(pts), closed};
         int i = 0;
         for (const cJSON *p = pts->child; p; p = p->next, i++, at++) {
             double xyz[3], params[2][2];

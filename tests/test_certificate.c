@@ -382,13 +382,14 @@ static void swapped_arcs(void)
         goto free_cert;
     /* k: P's first point from which it stays in the cell of its end; j: Q's
      * last point up to which it is in the cell of its start */
-    const long L = ic_certificate_locate(c, P + 3 * (np - 1));
+    const long L = ic_certificate_locate(c, P + 3 * (np - 1), -1, 0);
     int k = np - 1, j = 0;
-    while (k > 0 && ic_certificate_locate(c, P + 3 * (k - 1)) == L)
+    while (k > 0 && ic_certificate_locate(c, P + 3 * (k - 1), -1, 0) == L)
         k--;
-    while (j + 1 < nq && ic_certificate_locate(c, Q + 3 * (j + 1)) == L)
+    while (j + 1 < nq && ic_certificate_locate(c, Q + 3 * (j + 1), -1, 0) == L)
         j++;
-    if (!REQUIRE(ic_certificate_locate(c, Q) == L && k > 0 && k < np - 1 && j > 0 && j < nq - 1,
+    if (!REQUIRE(ic_certificate_locate(c, Q, -1, 0) == L && k > 0 && k < np - 1 && j > 0 &&
+                     j < nq - 1,
                  "swapped arcs: the cap's two ends are not in one cell with points inside"))
         goto free_cert;
     f1 = malloc((size_t)(np + nq) * 3 * sizeof *f1);
@@ -417,6 +418,36 @@ done:
     release(&t);
 }
 
+/* Two free-form bicubic patches over one plane (tests/truth/gen_nurbs_freeform.py):
+ * their curve has u = p and v = q, so a cover that split two coordinates of
+ * the same range at the same value would meet it at cells' edges, where no
+ * crossing can be isolated (cover.c, IC_CERTIFY_SPLIT_OFFSET_STEP). Proven,
+ * one closed curve. */
+static void diagonal_patches(const char *src)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/tests/data/nurbs/problem-freeform-bicubic.json", src);
+    ic_problem *pb = NULL;
+    ic_pair *pair = NULL;
+    ic_trace_result *r = NULL;
+    ic_error err;
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    ic_status st = ic_problem_load(&pb, path, &err);
+    if (st == IC_OK)
+        st = ic_pair_new(&pair, ic_problem_surface(pb, 0), ic_problem_surface(pb, 1), &err);
+    if (st == IC_OK)
+        st = ic_trace(&r, pair, &opt, &err);
+    if (REQUIRE(st == IC_OK, "%s: %s", path, err.message))
+        CHECK(ic_trace_result_report(r)->complete && ic_trace_result_num_curves(r) == 1 &&
+                  ic_trace_result_curve(r, 0)->closed,
+              "free-form patches over one plane: not proven (%s)",
+              ic_trace_result_report(r)->certificate.reason);
+    ic_trace_result_free(r);
+    ic_pair_free(pair);
+    ic_problem_free(pb);
+}
+
 int main(int argc, char **argv)
 {
     const char *src = argc > 1 ? argv[1] : ".";
@@ -425,5 +456,6 @@ int main(int argc, char **argv)
     sweep_tiny_far();
     mutations();
     swapped_arcs();
+    diagonal_patches(src);
     return harness_finish("test_certificate");
 }

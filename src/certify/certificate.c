@@ -88,26 +88,32 @@ void ic_certificate_refuse(ic_certificate *c, const char *fmt, ...)
     va_end(ap);
 }
 
-long ic_certificate_locate(const ic_certificate *c, const double *z)
+void ic_certificate_wrap(const ic_certificate *c, const double *z, double *w)
 {
-    double w[4];
-    for (int j = 0; j < c->dim; j++) {
-        w[j] = z[j];
-        if (c->periodic[j]) {
-            const double T = c->hi[j] - c->lo[j];
-            w[j] = c->lo[j] + fmod(w[j] - c->lo[j], T);
-            if (w[j] < c->lo[j])
-                w[j] += T;
-            if (w[j] >= c->hi[j])
-                w[j] = c->lo[j];
+    for (int k = 0; k < c->dim; k++) {
+        w[k] = z[k];
+        if (c->periodic[k] && !(z[k] >= c->lo[k] && z[k] <= c->hi[k])) {
+            const double T = c->hi[k] - c->lo[k];
+            w[k] = c->lo[k] + fmod(z[k] - c->lo[k], T);
+            if (w[k] < c->lo[k])
+                w[k] += T;
+            if (w[k] >= c->hi[k])
+                w[k] = c->lo[k];
         }
-        if (!(w[j] >= c->lo[j] && w[j] <= c->hi[j]))
-            return -1;
     }
+}
+
+long ic_certificate_locate(const ic_certificate *c, const double *z, int j, int dir)
+{
+    for (int k = 0; k < c->dim; k++)
+        if (!(z[k] >= c->lo[k] && z[k] <= c->hi[k]))
+            return -1;
     long i = 0;
     while (c->cells[i].kind == IC_CELL_SPLIT) {
         const ic_cell *n = &c->cells[i];
-        i = n->child[w[n->axis] < n->at ? 0 : 1];
+        const double x = z[n->axis];
+        const int upper = n->axis == j && x == n->at ? dir > 0 : x >= n->at;
+        i = n->child[upper];
     }
     return i;
 }

@@ -97,9 +97,15 @@ long ic_certificate_add_crossing(ic_certificate *c, const ic_crossing *x);
 /* Refuses: the first reason is kept. */
 void ic_certificate_refuse(ic_certificate *c, const char *fmt, ...) IC_PRINTF(2, 3);
 
-/* The leaf holding z (periodic coordinates brought into the region); -1
+/* z brought into the region's period on periodic coordinates; a point on
+ * the region's upper face stays there (a walk may stand on it). */
+void ic_certificate_wrap(const ic_certificate *c, const double *z, double *w);
+
+/* The leaf holding z (in the region, as ic_certificate_wrap leaves it), a
+ * tie on coordinate j (a point on a split across j) broken towards dir
+ * (+1 the upper cell, -1 the lower; j = -1: no tie, the upper cell); -1
  * when z is outside the region. */
-long ic_certificate_locate(const ic_certificate *c, const double *z);
+long ic_certificate_locate(const ic_certificate *c, const double *z, int j, int dir);
 
 /* The cover (cover.c): the tree grown from the region, every leaf proven
  * on the spot (leaf.c); stops at the first refusal. IC_OK, or an error out

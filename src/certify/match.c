@@ -45,39 +45,6 @@ typedef struct {
 
 static double width(const ic_certificate *c, int k) { return c->hi[k] - c->lo[k]; }
 
-/* z brought into the region's period on periodic coordinates (a point on
- * the region's upper face stays there: the walk may stand on it). */
-static void wrap(const ic_certificate *c, const double *z, double *w)
-{
-    for (int k = 0; k < c->dim; k++) {
-        w[k] = z[k];
-        if (c->periodic[k] && !(z[k] >= c->lo[k] && z[k] <= c->hi[k])) {
-            const double T = width(c, k);
-            w[k] = c->lo[k] + fmod(z[k] - c->lo[k], T);
-            if (w[k] < c->lo[k])
-                w[k] += T;
-            if (w[k] >= c->hi[k])
-                w[k] = c->lo[k];
-        }
-    }
-}
-
-/* The leaf holding z, ties on coordinate j broken towards dir (+1, -1). */
-static long locate_towards(const ic_certificate *c, const double *z, int j, int dir)
-{
-    for (int k = 0; k < c->dim; k++)
-        if (!(z[k] >= c->lo[k] && z[k] <= c->hi[k]))
-            return -1;
-    long i = 0;
-    while (c->cells[i].kind == IC_CELL_SPLIT) {
-        const ic_cell *n = &c->cells[i];
-        const double x = z[n->axis];
-        const int upper = n->axis == j && x == n->at ? dir > 0 : x >= n->at;
-        i = n->child[upper];
-    }
-    return i;
-}
-
 /* Newton's method for F = 0 with z[j] fixed (j = -1: the least-norm step
  * onto the curve). 1 when it converged. */
 static int project(const ic_certificate *c, double *z, int j)
@@ -85,7 +52,7 @@ static int project(const ic_certificate *c, double *z, int j)
     const int m = c->m, dim = c->dim;
     for (int it = 0; it < IC_CERTIFY_NEWTON_STEPS; it++) {
         double F[3], J[3][4], A[4][4], Y[4][4], step[4] = {0, 0, 0, 0}, zw[4];
-        wrap(c, z, zw); /* a periodic sheet evaluated in its period */
+        ic_certificate_wrap(c, z, zw); /* a periodic sheet evaluated in its period */
         if (!ic_certify_at(c->pg, zw, F, J))
             return 0;
         if (j >= 0) { /* the face's square system */
@@ -199,8 +166,9 @@ static double leaf_size(const ic_certificate *c, long i, int k)
 static int short_chord(const ic_certificate *c, const double *a, const double *b)
 {
     double wa[4], wb[4];
-    wrap(c, a, wa), wrap(c, b, wb);
-    const long la = locate_towards(c, wa, -1, 0), lb = locate_towards(c, wb, -1, 0);
+    ic_certificate_wrap(c, a, wa), ic_certificate_wrap(c, b, wb);
+    const long la = ic_certificate_locate(c, wa, -1, 0);
+    const long lb = ic_certificate_locate(c, wb, -1, 0);
     if (la < 0 || lb < 0)
         return 1; /* the walk says where it left the region */
     if (la == lb)
@@ -289,7 +257,7 @@ static int cross_face(walker *w, double *cur, double *target)
 {
     const ic_certificate *c = w->c;
     double cw[4], tw[4], q[4];
-    wrap(c, cur, cw);
+    ic_certificate_wrap(c, cur, cw);
     for (int k = 0; k < c->dim; k++)
         tw[k] = target[k] + (cw[k] - cur[k]);
     const ic_cell *cl = &c->cells[w->leaf];
@@ -311,12 +279,12 @@ static int cross_face(walker *w, double *cur, double *target)
     leave_by(w, xa, q);
     const int dir = side ? 1 : -1;
     double qn[4];
-    wrap(c, q, qn);
+    ic_certificate_wrap(c, q, qn);
     if (c->periodic[j] && side && q[j] >= c->hi[j])
         qn[j] = c->lo[j]; /* across the seam, upwards */
     else if (c->periodic[j] && !side && q[j] <= c->lo[j])
         qn[j] = c->hi[j]; /* across the seam, downwards */
-    const long next = locate_towards(c, qn, j, dir);
+    const long next = ic_certificate_locate(c, qn, j, dir);
     if (next < 0) {
         refuse_at(w, "leaves the region where it does not end", q);
         return -1;
@@ -369,8 +337,8 @@ static long end_crossing(walker *w, const double *z, long *leaf)
 {
     const ic_certificate *c = w->c;
     double zw[4];
-    wrap(c, z, zw);
-    *leaf = locate_towards(c, zw, -1, 0);
+    ic_certificate_wrap(c, z, zw);
+    *leaf = ic_certificate_locate(c, zw, -1, 0);
     if (*leaf < 0)
         return -1;
     const ic_cell *cl = &c->cells[*leaf];
@@ -407,8 +375,8 @@ static void walk_curve(walker *w, const double *z, int n, int closed)
         enter_by(w, x);
     } else {
         double zw[4];
-        wrap(w->c, z, zw);
-        w->leaf = locate_towards(w->c, zw, -1, 0);
+        ic_certificate_wrap(w->c, z, zw);
+        w->leaf = ic_certificate_locate(w->c, zw, -1, 0);
         if (w->leaf < 0) {
             refuse_at(w, "lies outside the region", z);
             return;
@@ -460,8 +428,8 @@ static int strictly_inside_from(const ic_certificate *c, const double *z, int n)
 {
     for (int i = 0; i < n; i++) {
         double zw[4];
-        wrap(c, z + (size_t)i * c->dim, zw);
-        const long L = locate_towards(c, zw, -1, 0);
+        ic_certificate_wrap(c, z + (size_t)i * c->dim, zw);
+        const long L = ic_certificate_locate(c, zw, -1, 0);
         int in = L >= 0;
         for (int k = 0; in && k < c->dim; k++)
             in = zw[k] > c->cells[L].lo[k] && zw[k] < c->cells[L].hi[k];

@@ -55,7 +55,8 @@ static char *read_text(const char *path)
     const int bad = ferror(f);
     fclose(f);
     if (!s || bad) {
-        fprintf(stderr, "intercurve verify: cannot read %s\n", path);
+        fprintf(stderr, "intercurve verify: cannot read %s: %s\n", path,
+                s ? "a read error" : "out of memory");
         free(s);
         return NULL;
     }

@@ -15,53 +15,10 @@
  * usage: test_certificate SOURCE_DIR
  */
 #include <math.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
 
-#include "certify/match.h"
-#include "harness.h"
-#include "intercurve.h"
-#include "local/pair_access.h"
+#include "certify_harness.h"
 
 #define PI 3.14159265358979323846
-
-typedef struct {
-    ic_problem *problem;
-    ic_pair *pair;
-    ic_trace_result *res;
-    ic_trace_options opt;
-} traced;
-
-static void release(traced *t)
-{
-    ic_trace_result_free(t->res);
-    ic_pair_free(t->pair);
-    ic_problem_free(t->problem);
-    memset(t, 0, sizeof *t);
-}
-
-static int trace_json(traced *t, const char *name, const char *json)
-{
-    ic_error err;
-    memset(t, 0, sizeof *t);
-    ic_trace_defaults(&t->opt);
-    ic_status st = ic_problem_parse(&t->problem, json, strlen(json), &err);
-    if (st == IC_OK) {
-        t->opt.has_box = ic_problem_box(t->problem, t->opt.box);
-        st = ic_pair_new(&t->pair, ic_problem_surface(t->problem, 0),
-                         ic_problem_surface(t->problem, 1), &err);
-    }
-    if (st == IC_OK)
-        st = ic_trace(&t->res, t->pair, &t->opt, &err);
-    return REQUIRE(st == IC_OK, "%s: %s", name, err.message) ? 0 : -1;
-}
-
-/* The verdicts of a sweep: `right` counts the tracer's right answers,
- * `missed` the right answers the certificate did not prove. */
-typedef struct {
-    int cases, proven, honest, right, missed;
-} tally;
 
 /* Every curve open (or closed: want_closed), of length want each within
  * TIER_LENGTH, n of them. */
@@ -75,26 +32,6 @@ static int curves_right(const ic_trace_result *r, int n, double want, int want_c
             return 0;
     }
     return 1;
-}
-
-/* complete and right, or incomplete with the reason listed: never complete
- * and wrong. */
-static void judge(tally *t, const traced *tr, const char *name, int right)
-{
-    const ic_trace_report *rep = ic_trace_result_report(tr->res);
-    t->cases++;
-    t->right += right;
-    t->missed += right && !rep->complete;
-    if (rep->complete) {
-        t->proven++;
-        CHECK(right, "%s: complete, and wrong", name);
-    } else {
-        t->honest++;
-        CHECK(rep->nfailures > 0, "%s: incomplete with no failure listed", name);
-    }
-    printf("%s: %s%s%s\n", name, rep->complete ? "proven" : "not proven: ",
-           rep->complete ? "" : rep->certificate.reason,
-           rep->complete || rep->certificate.checked ? "" : rep->nfailures ? rep->failures[0] : "");
 }
 
 static const double CLIP[] = {0.9, 0.99, 0.9999, 0.99999, 0.999999, 0.9999999};
@@ -233,53 +170,13 @@ static void sweep_tiny_far(void)
     }
 }
 
-/* The curves of a result in search coordinates (one block, freed by the
- * caller). */
-static double *search_curves(const traced *t, const ic_pairing *pg, ic_certify_curve *cv)
-{
-    const int n = ic_trace_result_num_curves(t->res), dim = pg->kind->dim;
-    size_t total = 0;
-    for (int k = 0; k < n; k++)
-        total += (size_t)ic_trace_result_curve(t->res, k)->npoints;
-    double *z = malloc(total * (size_t)dim * sizeof *z);
-    size_t at = 0;
-    for (int k = 0; z && k < n; k++) {
-        const ic_trace_curve *c = ic_trace_result_curve(t->res, k);
-        cv[k] = (ic_certify_curve){z + at * (size_t)dim, c->npoints, c->closed};
-        for (int i = 0; i < c->npoints; i++, at++) {
-            double p[2][2];
-            memcpy(p, c->points[i].params, sizeof p);
-            pg->kind->flatten(pg, c->points[i].xyz, p, z + at * (size_t)dim);
-        }
-    }
-    return z;
-}
-
-/* The checker's verdict on the cover of t's region and the curves cv. With
- * `drop_crossing`, the cover loses one crossing of its first regular cell
- * that has any (a crossing count off by one). */
+/* The checker's verdict on the cover of t's region and the curves cv (no
+ * singular points). */
 static int verdict(const traced *t, const ic_certify_curve *cv, int n, int drop_crossing,
                    char *reason)
 {
-    const ic_pairing *pg = ic_pair_pairing(t->pair);
-    ic_error err;
-    ic_certificate *c = ic_certificate_new(pg, t->opt.box, t->opt.has_box, &err);
-    if (!REQUIRE(c, "certificate: %s", err.message))
-        return -1;
-    const ic_certify_limits lim = {200000, 1e-6, 256, 0};
-    int ok = ic_certify_cover(c, &lim, &err) == IC_OK && c->summary.accepted;
-    for (long i = 0; ok && drop_crossing && i < c->ncells; i++) {
-        ic_cell *cl = &c->cells[i];
-        if (cl->kind == IC_CELL_REGULAR && cl->ncross > 0) {
-            cl->ncross--; /* its last crossing is no longer the cell's */
-            drop_crossing = 0;
-        }
-    }
-    if (ok)
-        ok = ic_certify_curves(c, cv, n, &err) == IC_OK && c->summary.accepted;
-    snprintf(reason, 240, "%s", c->summary.reason);
-    ic_certificate_free(c);
-    return ok;
+    const ic_certify_claim claim = {cv, n, NULL, 0};
+    return verdict_of(t, &claim, drop_crossing, reason);
 }
 
 /* Mutations of a proven trace: the circle in the box b = 0.99 (four arcs). */

@@ -533,14 +533,14 @@ static void check_contact(const ic_trace_result *r, ic_status st, const double w
           want[0], want[1], want[2]);
     /* every other cell proven empty (plain or centred interval forms, and
      * the finer search of the few cells beside the contact): nothing is
-     * left uncovered, nothing listed as a failure by the tracer (the one
-     * failure is the certificate's: a contact point has no singular box yet) */
+     * left uncovered, nothing listed as a failure, and the certificate
+     * proves it (the contact's singular box and empty cells all round) */
     const ic_trace_report *rep = ic_trace_result_report(r);
-    const int refused = rep->certificate.checked && !rep->certificate.accepted;
-    CHECK(rep->uncovered_cells == 0 && rep->unproven_cells == 0 &&
-              rep->nfailures == refused && refused && !rep->complete,
-          "%s: %d uncovered, %d unproven cells, %d failures, certificate refused %d", what,
-          rep->uncovered_cells, rep->unproven_cells, rep->nfailures, refused);
+    CHECK(rep->uncovered_cells == 0 && rep->unproven_cells == 0 && rep->nfailures == 0 &&
+              rep->complete && rep->certificate.accepted && rep->certificate.singular > 0,
+          "%s: %d uncovered, %d unproven cells, %d failures, certificate: %s", what,
+          rep->uncovered_cells, rep->unproven_cells, rep->nfailures,
+          rep->certificate.accepted ? "accepted" : rep->certificate.reason);
     printf("%s: isolated contact located to %.2g, every other cell cleared\n", what, d);
 }
 

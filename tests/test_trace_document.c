@@ -248,19 +248,21 @@ static void check_viviani(const traced *t)
     const cJSON *rep = doc_get(doc, "report");
     CHECK(doc_string_is(doc_get(p, "type"), "branch-point") && near &&
               cJSON_IsTrue(doc_get(rep, "tracer_complete")) &&
-              !cJSON_IsTrue(doc_get(rep, "complete")) &&
-              !cJSON_IsTrue(doc_get(doc_get(rep, "certificate"), "accepted")) &&
-              cJSON_IsString(doc_get(doc_get(rep, "certificate"), "reason")),
-          "Viviani: the branch point (2, 0, 0), complete by the tracer, not proven");
+              cJSON_IsTrue(doc_get(rep, "complete")) &&
+              cJSON_IsTrue(doc_get(doc_get(rep, "certificate"), "accepted")) &&
+              cJSON_IsNumber(doc_get(doc_get(rep, "certificate"), "singular")) &&
+              doc_get(doc_get(rep, "certificate"), "singular")->valuedouble > 0 &&
+              cJSON_IsNull(doc_get(doc_get(rep, "certificate"), "reason")),
+          "Viviani: the branch point (2, 0, 0) in its singular box, proven");
     cJSON_Delete(doc);
     ic_error err;
     ic_status st;
     char *text = doc_text(write_text, (void *)t, &st, &err);
     CHECK(st == IC_OK && text && strstr(text, "\ncurves: 1\n") && strstr(text, "15.2807911561") &&
               strstr(text, "\nsingular points: 1\n") && strstr(text, "branch-point") &&
-              strstr(text, "\nresult: INCOMPLETE (complete by the tracer's account") &&
-              strstr(text, "\ncertificate: refused"),
-          "Viviani's text: one curve of its length, the branch point, not proven");
+              strstr(text, "\nresult: complete (proven by the certificate)") &&
+              strstr(text, "\ncertificate: accepted"),
+          "Viviani's text: one curve of its length, the branch point, proven");
     free(text);
     FILE *full = fopen("/dev/full", "w");
     if (full) {

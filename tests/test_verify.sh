@@ -41,6 +41,22 @@ echo '{"curves": [{"points": [{"xyz": [1, 2]}]}]}' >"$tmp/bad.json"
 err="$("$bin" verify "$problem" --trace "$tmp/bad.json" 2>&1)"
 [ $? -eq 1 ] && [[ "$err" == *"curves[0].points[0]"* ]]
 check "a bad document: exit 1, its JSON path ($err)" $?
+# singular points: the branch points of two equal cylinders are in the
+# document's points; without them the cells there cannot be proven
+branch="$src/examples/cylinders-equal.json"
+"$bin" trace "$branch" -o "$tmp/b.json"
+out="$("$bin" verify "$branch" --trace "$tmp/b.json")"
+[ $? -eq 0 ] && [[ "$out" == proven:* ]] && [[ "$out" != *" 0 singular"* ]]
+check "verify of the branch points' trace: proven, with singular cells ($out)" $?
+cp "$tmp/b.json" "$tmp/t.json"
+edit "d['points'] = []" "$tmp/nopoints.json"
+out="$("$bin" verify "$branch" --trace "$tmp/nopoints.json")"
+[ $? -eq 2 ] && [[ "$out" == *"nor by a singular point found"* ]]
+check "the branch points dropped: exit 2, the cell named ($out)" $?
+edit "d['points'][0]['xyz'] = [0, 0]" "$tmp/badpoint.json"
+err="$("$bin" verify "$branch" --trace "$tmp/badpoint.json" 2>&1)"
+[ $? -eq 1 ] && [[ "$err" == *"points[0].xyz"* ]]
+check "a bad point: exit 1, its JSON path ($err)" $?
 "$bin" verify "$problem" >/dev/null 2>&1
 [ $? -eq 1 ]
 check "no --trace: exit 1" $?

@@ -178,6 +178,9 @@ typedef struct {
     int accepted; /**< 1: every cell proven and every arc traced exactly once */
     long cells;   /**< cells of the cover, splits included */
     long empty, outside, diagonal, regular, refused; /**< leaves by kind */
+    /** leaves in the box of a singular point the result reports (half width
+     *  1e-5 of the region's size): not examined (docs/tracing.md) */
+    long singular;
     long crossings; /**< crossings of the regular cells' faces, each root-isolated */
     long arcs;      /**< arcs of the regular cells (half the crossings) */
     double seconds; /**< the checker's wall time */

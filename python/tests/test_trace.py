@@ -27,13 +27,14 @@ def cylinder(p):
 
 def test_viviani_one_closed_curve(viviani_trace):
     r = viviani_trace
-    # complete by the tracer's account; the branch point has no singular
-    # box in the certificate yet, so it is not proven (docs/tracing.md)
+    # complete by the tracer's account and proven by the certificate, the
+    # branch point in its singular box (docs/tracing.md)
     assert r.report["tracer_complete"] is True
-    assert not r.complete and r.report["complete"] is False
+    assert r.complete and r.report["complete"] is True
     assert r.report["certificate"]["checked"] is True
-    assert r.report["certificate"]["accepted"] is False
-    assert r.report["certificate"]["reason"]
+    assert r.report["certificate"]["accepted"] is True
+    assert r.report["certificate"]["singular"] > 0
+    assert r.report["certificate"]["reason"] is None
     assert len(r.curves) == 1
     c = r.curves[0]
     assert c.closed and c.type == "transversal" and c.ends == ["closed", "closed"]

@@ -84,6 +84,26 @@ static ic_status read_curves(const cJSON *doc, const ic_pairing *pg, const char 
     return IC_OK;
 }
 
+/* The document's singular points (points[].xyz): *p, the caller's to
+ * free, and their number. */
+static ic_status read_singular(const cJSON *doc, const char *name, double (**p)[3], int *n,
+                               ic_error *err)
+{
+    const cJSON *ps = cJSON_GetObjectItemCaseSensitive(doc, "points");
+    if (ps && !cJSON_IsArray(ps))
+        return ic_error_set(err, IC_ERR_INVALID, 0, "%s: points: not an array", name);
+    *n = ps ? cJSON_GetArraySize(ps) : 0;
+    *p = malloc((size_t)(*n + 1) * sizeof **p);
+    if (!*p)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory reading %s", name);
+    int k = 0;
+    for (const cJSON *q = ps ? ps->child : NULL; q; q = q->next, k++)
+        if (!numbers(cJSON_GetObjectItemCaseSensitive(q, "xyz"), (*p)[k], 3))
+            return ic_error_set(err, IC_ERR_INVALID, 0, "%s: points[%d].xyz: must be 3 numbers",
+                                name, k);
+    return IC_OK;
+}
+
 ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const char *name,
                         ic_trace_certificate *out, ic_error *err)
 {
@@ -94,10 +114,13 @@ ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const c
     ic_pair *pair = NULL;
     ic_certify_curve *curves = NULL;
     double *z = NULL;
-    int n = 0;
+    double(*sing)[3] = NULL;
+    int n = 0, nsing = 0;
     ic_status st = ic_api_problem_pair(&pair, problem, err);
     if (st == IC_OK)
         st = read_curves(doc, ic_pair_pairing(pair), name, &curves, &n, &z, err);
+    if (st == IC_OK)
+        st = read_singular(doc, name, &sing, &nsing, err);
     if (st == IC_OK) {
         const cJSON *cells = cJSON_GetObjectItemCaseSensitive(
             cJSON_GetObjectItemCaseSensitive(doc, "report"), "cells");
@@ -106,16 +129,19 @@ ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const c
         const ic_certify_limits lim =
             ic_certify_limits_for(cJSON_IsNumber(cells) ? (long)cells->valuedouble : 0, 0);
         ic_certify_summary s;
-        st = ic_certify_run(ic_pair_pairing(pair), box, has_box, &lim, curves, n, &s, err);
+        const ic_certify_claim claim = {curves, n, (const double(*)[3])sing, nsing};
+        st = ic_certify_run(ic_pair_pairing(pair), box, has_box, &lim, &claim, &s, err);
         out->checked = 1;
         out->accepted = st == IC_OK && s.accepted;
         out->cells = s.cells, out->empty = s.empty, out->outside = s.outside;
-        out->diagonal = s.diagonal, out->regular = s.regular, out->refused = s.refused;
+        out->diagonal = s.diagonal, out->regular = s.regular, out->singular = s.singular;
+        out->refused = s.refused;
         out->crossings = s.crossings, out->arcs = s.arcs, out->seconds = s.seconds;
         memcpy(out->reason, s.reason, sizeof out->reason);
     }
     free(curves);
     free(z);
+    free(sing);
     ic_pair_free(pair);
     cJSON_Delete(doc);
     return st;

@@ -1,6 +1,7 @@
 /* A certificate's storage, its refusals and its point location
  * (certificate.h). */
 #include "certificate.h"
+#include "system.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -54,6 +55,45 @@ static int grow(void **items, long n, long *cap, size_t size)
     *items = p;
     *cap = room;
     return 1;
+}
+
+int ic_certificate_set_singular(ic_certificate *c, const double (*xyz)[3], int n)
+{
+    c->singular = xyz, c->nsingular = 0, c->singular_half = 0.0;
+    ic_interval X[4], img[3];
+    for (int k = 0; k < c->dim; k++)
+        X[k] = (ic_interval){c->lo[k], c->hi[k]};
+    if (n > 0 && !ic_certify_image(c->pg, X, img))
+        return 0;
+    double d = 0.0;
+    for (int k = 0; k < 3 && n > 0; k++)
+        d = hypot(d, img[k].hi - img[k].lo);
+    if (n > 0 && !(d > 0.0 && isfinite(d)))
+        return 0;
+    c->nsingular = n;
+    c->singular_half = IC_CERTIFY_SINGULAR_HALF * d;
+    return 1;
+}
+
+int ic_certificate_in_singular_box(const ic_certificate *c, long i)
+{
+    if (c->nsingular == 0)
+        return 0;
+    ic_interval X[4], img[3];
+    for (int k = 0; k < c->dim; k++)
+        X[k] = (ic_interval){c->cells[i].lo[k], c->cells[i].hi[k]};
+    if (!ic_certify_image(c->pg, X, img))
+        return 0;
+    const double h = c->singular_half;
+    for (int s = 0; s < c->nsingular; s++) {
+        const double *p = c->singular[s];
+        int in = 1;
+        for (int k = 0; k < 3 && in; k++)
+            in = img[k].lo >= p[k] - h && img[k].hi <= p[k] + h;
+        if (in)
+            return 1;
+    }
+    return 0;
 }
 
 long ic_certificate_add_cell(ic_certificate *c, const double *lo, const double *hi)

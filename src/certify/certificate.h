@@ -11,6 +11,11 @@
  *              coordinate; every crossing of the cell's faces is isolated
  *              by a Krawczyk test on its face, and sorted along `axis` the
  *              crossings pair up into the cell's arcs;
+ *   singular - neither of those, but the cell's image lies within the
+ *              singular box of a singular point the result reports (half
+ *              width IC_CERTIFY_SINGULAR_HALF of the region's size): what
+ *              the cell holds is not proven, only the crossings of the
+ *              regular cells around it;
  * or refused, with the reason. The checker then holds the traced curves
  * against the crossings (match.c). It uses the pairing's equations and the
  * surfaces' enclosures (system.h), never the tracer's decisions.
@@ -27,6 +32,7 @@ typedef enum {
     IC_CELL_OUTSIDE,
     IC_CELL_DIAGONAL,
     IC_CELL_REGULAR,
+    IC_CELL_SINGULAR,
     IC_CELL_REFUSED
 } ic_cell_kind;
 
@@ -49,7 +55,7 @@ typedef struct {
 } ic_crossing;
 
 typedef struct {
-    long cells, empty, outside, diagonal, regular, refused;
+    long cells, empty, outside, diagonal, regular, singular, refused;
     long crossings, arcs;
     double seconds;
     int accepted;
@@ -77,6 +83,11 @@ typedef struct {
     long ncells, capc;
     ic_crossing *cross;
     long ncross, capx;
+    /* the singular points the result reports, and their boxes' half width
+     * (a length: IC_CERTIFY_SINGULAR_HALF of the region's image diagonal) */
+    const double (*singular)[3];
+    int nsingular;
+    double singular_half;
     /* work memory of face.c, kept from face to face: boxes of a face */
     ic_interval (*face_stack)[4];
     int face_cap;
@@ -89,6 +100,16 @@ typedef struct {
 ic_certificate *ic_certificate_new(const ic_pairing *pg, const double box[3][2], int has_box,
                                    ic_error *err);
 void ic_certificate_free(ic_certificate *c);
+
+/* The singular half width: of the region's image diagonal (a fraction). */
+#define IC_CERTIFY_SINGULAR_HALF 1e-5
+
+/* The result's singular points (kept by reference: they must outlive c);
+ * 0 when the region's image cannot be enclosed (then no box is given). */
+int ic_certificate_set_singular(ic_certificate *c, const double (*xyz)[3], int n);
+
+/* 1 when cell i's image lies within the box of a singular point. */
+int ic_certificate_in_singular_box(const ic_certificate *c, long i);
 
 /* Appends a cell (its box) or a crossing: the index, or -1 out of memory. */
 long ic_certificate_add_cell(ic_certificate *c, const double *lo, const double *hi);

@@ -73,6 +73,7 @@ static void count(ic_certificate *c, ic_cell_kind kind)
     s->outside += kind == IC_CELL_OUTSIDE;
     s->diagonal += kind == IC_CELL_DIAGONAL;
     s->regular += kind == IC_CELL_REGULAR;
+    s->singular += kind == IC_CELL_SINGULAR;
     s->refused += kind == IC_CELL_REFUSED;
 }
 
@@ -87,15 +88,20 @@ static int grow_leaf(ic_certificate *c, long i, int depth, const ic_certify_limi
             count(c, c->cells[i].kind);
         return rc;
     }
+    if (ic_certificate_in_singular_box(c, i)) {
+        c->cells[i].kind = IC_CELL_SINGULAR;
+        count(c, IC_CELL_SINGULAR);
+        return 1;
+    }
     double rel;
     const int k = widest(c, i, &rel);
     const ic_cell *cl = &c->cells[i];
     if (rel < lim->min_width) {
         count(c, IC_CELL_REFUSED);
-        ic_certificate_refuse(c, "a cell of width %.3g of the region at [%.17g, %.17g] x [%.17g, "
-                                 "%.17g] (first two coordinates) is neither empty nor regular: a "
-                                 "singular or tangential point, the box's boundary across a "
-                                 "parametric sheet, or surfaces too close to tell",
+        ic_certificate_refuse(c, "a cell of width %.3g of the region at [%.9g, %.9g] x [%.9g, "
+                                 "%.9g] (first two coordinates) is neither empty nor regular nor "
+                                 "by a singular point found: a tangential curve, a singular point "
+                                 "missed, a box edge across a sheet, or surfaces too close",
                               rel, cl->lo[0], cl->hi[0], cl->lo[1], cl->hi[1]);
         return 0;
     }

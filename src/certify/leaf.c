@@ -186,7 +186,7 @@ int ic_certify_leaf(ic_certificate *c, long i, const ic_certify_limits *lim)
     if (!ic_certify_enclose(c->pg, X, &e))
         return 0;
     ic_cell *cl = &c->cells[i];
-    if (ic_certify_excludes(&e, c->m)) {
+    if (ic_certify_excludes(&e, c->m) || ic_certify_excludes_centred(c->pg, X, &e)) {
         cl->kind = IC_CELL_EMPTY;
         return 1;
     }

@@ -16,9 +16,13 @@
 #include <string.h>
 
 /* Newton's steps and the step, relative to the region's width, at which a
- * projection has converged. */
+ * projection has converged; or, after all the steps, the step it must be
+ * below (beside a singular point J is ill-conditioned and the steps stay at
+ * the rounding's level times the condition: 1e-10 is still far inside the
+ * crossings' face boxes). */
 #define IC_CERTIFY_NEWTON_STEPS 30
 #define IC_CERTIFY_NEWTON_DONE 1e-14
+#define IC_CERTIFY_NEWTON_NOISE 1e-10
 /* A curve end on the region's boundary: within this fraction of the
  * region's width of it. */
 #define IC_CERTIFY_END_REACH 1e-6
@@ -50,6 +54,7 @@ static double width(const ic_certificate *c, int k) { return c->hi[k] - c->lo[k]
 static int project(const ic_certificate *c, double *z, int j)
 {
     const int m = c->m, dim = c->dim;
+    double last = 1.0;
     for (int it = 0; it < IC_CERTIFY_NEWTON_STEPS; it++) {
         double F[3], J[3][4], A[4][4], Y[4][4], step[4] = {0, 0, 0, 0}, zw[4];
         ic_certificate_wrap(c, z, zw); /* a periodic sheet evaluated in its period */
@@ -94,8 +99,9 @@ static int project(const ic_certificate *c, double *z, int j)
             return 0;
         if (big < IC_CERTIFY_NEWTON_DONE)
             return 1;
+        last = big;
     }
-    return 0;
+    return last < IC_CERTIFY_NEWTON_NOISE;
 }
 
 /* The crossing of leaf i on face (j, side) whose box holds q (region
@@ -212,10 +218,27 @@ static int inside_leaf(const ic_certificate *c, long L, const double *z)
     return 1;
 }
 
+/* The midpoint m of a chord put back on the curve; where Newton's method
+ * fails (beside a singular point, where J loses rank) a midpoint in a
+ * singular cell is kept as it is: nothing is claimed there. 0: neither. */
+static int put_back(const ic_certificate *c, double *m)
+{
+    double keep[4], mw[4];
+    memcpy(keep, m, sizeof keep);
+    if (project(c, m, -1))
+        return 1;
+    memcpy(m, keep, sizeof keep);
+    ic_certificate_wrap(c, m, mw);
+    const long L = ic_certificate_locate(c, mw, -1, 0);
+    return L >= 0 && c->cells[L].kind == IC_CELL_SINGULAR;
+}
+
 /* Where the curve from cw (in leaf L) to tw (outside it) leaves L: the
  * two are brought together by halving along the curve (each midpoint put
  * back on it) until their chord is short next to L, then that chord's exit
- * face gives j and side and Newton's method on the face the crossing q. */
+ * face gives j and side and Newton's method on the face the crossing q: 1,
+ * or 2 with q the chord's exit where Newton's method fails (beside a
+ * singular point), 0 when the halving fails. */
 static int bracket_exit(const ic_certificate *c, long L, const double *cw, const double *tw,
                         double *q, int *j, int *side)
 {
@@ -230,12 +253,17 @@ static int bracket_exit(const ic_certificate *c, long L, const double *cw, const
         double m[4];
         for (int k = 0; k < c->dim; k++)
             m[k] = 0.5 * (a[k] + b[k]);
-        if (!project(c, m, -1))
+        if (!put_back(c, m))
             return 0;
         memcpy(inside_leaf(c, L, m) ? a : b, m, sizeof m);
     }
     chord_exit(c, L, a, b, q, j, side);
-    return project(c, q, *j);
+    double on_chord[4];
+    memcpy(on_chord, q, sizeof on_chord);
+    if (project(c, q, *j))
+        return 1;
+    memcpy(q, on_chord, sizeof on_chord);
+    return 2;
 }
 
 /* The point q on face (j, side) of leaf L lies on that face's part. */
@@ -247,6 +275,53 @@ static int on_face(const ic_certificate *c, long L, const double *q, int j)
         if (k != j && !(q[k] >= cl->lo[k] - slack && q[k] <= cl->hi[k] + slack))
             return 0;
     }
+    return 1;
+}
+
+/* The face (j, side) of leaf L at q lies between two singular cells, where
+ * the walk may cross it anywhere. */
+static int between_singular(const ic_certificate *c, long L, const double *q, int j, int side)
+{
+    if (c->cells[L].kind != IC_CELL_SINGULAR)
+        return 0;
+    double qn[4];
+    ic_certificate_wrap(c, q, qn);
+    const long next = ic_certificate_locate(c, qn, j, side ? 1 : -1);
+    return next >= 0 && next != L && c->cells[next].kind == IC_CELL_SINGULAR;
+}
+
+/* The walk leaves its cell across face (j, side) at q: a regular cell by
+ * one of its crossings, a singular one anywhere (what it holds is not
+ * proven). 0: refused. */
+static int leave_cell(walker *w, int j, int side, const double *q)
+{
+    const ic_cell_kind kind = w->c->cells[w->leaf].kind;
+    if (kind == IC_CELL_SINGULAR)
+        return 1;
+    const long xa = kind == IC_CELL_REGULAR ? crossing_at(w->c, w->leaf, j, side, q) : -1;
+    if (xa < 0) {
+        refuse_at(w, "crosses a cell's face where no crossing is proven", q);
+        return 0;
+    }
+    leave_by(w, xa, q);
+    return !w->failed;
+}
+
+/* The walk enters leaf `next` across its face (j, !side) at qn: a regular
+ * cell by one of its crossings, a singular one anywhere. 0: refused. */
+static int enter_cell(walker *w, long next, int j, int side, const double *qn)
+{
+    const ic_cell_kind kind = w->c->cells[next].kind;
+    if (kind == IC_CELL_SINGULAR) {
+        w->entry = -1;
+        return 1;
+    }
+    const long xb = kind == IC_CELL_REGULAR ? crossing_at(w->c, next, j, !side, qn) : -1;
+    if (xb < 0) {
+        refuse_at(w, "enters a cell where no crossing is proven", qn);
+        return 0;
+    }
+    enter_by(w, xb);
     return 1;
 }
 
@@ -267,16 +342,14 @@ static int cross_face(walker *w, double *cur, double *target)
     if (inside)
         return 1;
     int j, side;
-    if (!bracket_exit(c, w->leaf, cw, tw, q, &j, &side) || !on_face(c, w->leaf, q, j)) {
+    const int found = bracket_exit(c, w->leaf, cw, tw, q, &j, &side);
+    if (!found || !on_face(c, w->leaf, q, j) ||
+        (found == 2 && !between_singular(c, w->leaf, q, j, side))) {
         refuse_at(w, "cannot be followed across a cell's face", q);
         return -1;
     }
-    const long xa = crossing_at(c, w->leaf, j, side, q);
-    if (xa < 0) {
-        refuse_at(w, "crosses a cell's face where no crossing is proven", q);
+    if (!leave_cell(w, j, side, q))
         return -1;
-    }
-    leave_by(w, xa, q);
     const int dir = side ? 1 : -1;
     double qn[4];
     ic_certificate_wrap(c, q, qn);
@@ -289,12 +362,8 @@ static int cross_face(walker *w, double *cur, double *target)
         refuse_at(w, "leaves the region where it does not end", q);
         return -1;
     }
-    const long xb = crossing_at(c, next, j, !side, qn);
-    if (xb < 0) {
-        refuse_at(w, "enters a cell where no crossing is proven", qn);
+    if (!enter_cell(w, next, j, side, qn))
         return -1;
-    }
-    enter_by(w, xb);
     w->leaf = next;
     for (int k = 0; k < c->dim; k++) { /* continue in the frame of qn */
         target[k] = tw[k] + (qn[k] - q[k]);
@@ -312,7 +381,7 @@ static void walk_chord(walker *w, const double *a, const double *b, int halvings
         double m[4];
         for (int k = 0; k < w->c->dim; k++)
             m[k] = 0.5 * (a[k] + b[k]);
-        if (halvings >= IC_CERTIFY_MAX_HALVINGS || !project(w->c, m, -1)) {
+        if (halvings >= IC_CERTIFY_MAX_HALVINGS || !put_back(w->c, m)) {
             refuse_at(w, "has a chord that cannot be put back on the curve", a);
             return;
         }
@@ -329,6 +398,12 @@ static void walk_chord(walker *w, const double *a, const double *b, int halvings
             return;
     }
     refuse_at(w, "crosses too many cells along one chord", a);
+}
+
+/* Leaf L (-1: none) is a singular cell, where a branch may end. */
+static int in_singular_cell(const ic_certificate *c, long L)
+{
+    return L >= 0 && c->cells[L].kind == IC_CELL_SINGULAR;
 }
 
 /* An open curve's end z: on a face of its cell that is the region's
@@ -368,11 +443,14 @@ static void walk_curve(walker *w, const double *z, int n, int closed)
     w->entry = -1, w->first_exit = closed ? -2 : -1, w->events = 0;
     if (!closed) {
         const long x = end_crossing(w, z, &w->leaf);
-        if (x < 0) {
-            refuse_at(w, "starts inside the region, not at a crossing of its boundary", z);
+        if (x < 0 && !in_singular_cell(w->c, w->leaf)) {
+            refuse_at(w, "starts inside the region, not at a crossing of its boundary nor "
+                         "by a singular point",
+                      z);
             return;
         }
-        enter_by(w, x);
+        if (x >= 0)
+            enter_by(w, x);
     } else {
         double zw[4];
         ic_certificate_wrap(w->c, z, zw);
@@ -402,8 +480,12 @@ static void walk_curve(walker *w, const double *z, int n, int closed)
     long leaf;
     const double *end = z + (size_t)(n - 1) * dim;
     const long x = end_crossing(w, end, &leaf);
+    if (x < 0 && in_singular_cell(w->c, w->leaf))
+        return; /* a branch ends at a singular point */
     if (x < 0 || leaf != w->leaf) {
-        refuse_at(w, "ends inside the region, not at a crossing of its boundary", end);
+        refuse_at(w, "ends inside the region, not at a crossing of its boundary nor by a "
+                     "singular point",
+                  end);
         return;
     }
     leave_by(w, x, end);
@@ -422,15 +504,16 @@ static int jump(const ic_certificate *c, const double *a, const double *b)
     return 0;
 }
 
-/* The first point of a closed curve that lies strictly inside its cell
- * (a walk started on a face would leave the first cell unpaired). */
+/* The first point of a closed curve that lies strictly inside a regular
+ * cell (a walk started on a face would leave the first cell unpaired, one
+ * started in a singular cell would have no arc to close on). */
 static int strictly_inside_from(const ic_certificate *c, const double *z, int n)
 {
     for (int i = 0; i < n; i++) {
         double zw[4];
         ic_certificate_wrap(c, z + (size_t)i * c->dim, zw);
         const long L = ic_certificate_locate(c, zw, -1, 0);
-        int in = L >= 0;
+        int in = L >= 0 && c->cells[L].kind == IC_CELL_REGULAR;
         for (int k = 0; in && k < c->dim; k++)
             in = zw[k] > c->cells[L].lo[k] && zw[k] < c->cells[L].hi[k];
         if (in)

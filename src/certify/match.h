@@ -26,11 +26,20 @@ ic_status ic_certify_curves(ic_certificate *c, const ic_certify_curve *curves, i
  * with a deadline on the monotonic clock (0: none). */
 ic_certify_limits ic_certify_limits_for(long search_cells, double deadline);
 
+/* What a result claims: its curves, and its singular points (xyz), each
+ * of which gets a singular box (certificate.h). */
+typedef struct {
+    const ic_certify_curve *curves;
+    int ncurves;
+    const double (*singular)[3];
+    int nsingular;
+} ic_certify_claim;
+
 /* The cover of pg's region (box: the problem's) grown within lim, and the
- * curves held against it (run.c): *out the summary. IC_OK, or an error (out
+ * claim held against it (run.c): *out the summary. IC_OK, or an error (out
  * of memory, a region without a finite box). */
 ic_status ic_certify_run(const ic_pairing *pg, const double box[3][2], int has_box,
-                         const ic_certify_limits *lim, const ic_certify_curve *curves, int n,
+                         const ic_certify_limits *lim, const ic_certify_claim *claim,
                          ic_certify_summary *out, ic_error *err);
 
 #endif

@@ -23,16 +23,21 @@ ic_certify_limits ic_certify_limits_for(long search_cells, double deadline)
 }
 
 ic_status ic_certify_run(const ic_pairing *pg, const double box[3][2], int has_box,
-                         const ic_certify_limits *lim, const ic_certify_curve *curves, int n,
+                         const ic_certify_limits *lim, const ic_certify_claim *claim,
                          ic_certify_summary *out, ic_error *err)
 {
     memset(out, 0, sizeof *out);
     ic_certificate *c = ic_certificate_new(pg, box, has_box, err);
     if (!c)
         return err ? err->code : IC_ERR_NOMEM;
-    ic_status st = ic_certify_cover(c, lim, err);
+    ic_status st = IC_OK;
+    if (!ic_certificate_set_singular(c, claim->singular, claim->nsingular))
+        ic_certificate_refuse(c, "the region's image has no enclosure: singular boxes cannot "
+                                 "be placed");
+    else
+        st = ic_certify_cover(c, lim, err);
     if (st == IC_OK && c->summary.accepted)
-        st = ic_certify_curves(c, curves, n, err);
+        st = ic_certify_curves(c, claim->curves, claim->ncurves, err);
     *out = c->summary;
     ic_certificate_free(c);
     return st;

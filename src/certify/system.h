@@ -34,6 +34,12 @@ int ic_certify_at(const ic_pairing *pg, const double *z, double F[3], double J[3
 /* 1 when some component of F excludes 0 over X. */
 int ic_certify_excludes(const ic_certify_eval *e, int m);
 
+/* 1 when the mean value form of some combination of F's components
+ * excludes 0 over X (exclude.c), `over` the enclosure over X: it proves
+ * empty the cells close to where the surfaces touch. */
+int ic_certify_excludes_centred(const ic_pairing *pg, const ic_interval *X,
+                                const ic_certify_eval *over);
+
 /* The box of parametric sheet `sheet`'s image over X (two parametric kinds
  * and the mixed one; the implicit pairing's X is the point itself). 0 when
  * it has no enclosure. */

@@ -45,7 +45,8 @@ static void summarise(ic_trace_certificate *out, const ic_certify_summary *s)
     out->checked = 1;
     out->accepted = s->accepted;
     out->cells = s->cells, out->empty = s->empty, out->outside = s->outside;
-    out->diagonal = s->diagonal, out->regular = s->regular, out->refused = s->refused;
+    out->diagonal = s->diagonal, out->regular = s->regular, out->singular = s->singular;
+    out->refused = s->refused;
     out->crossings = s->crossings, out->arcs = s->arcs;
     out->seconds = s->seconds;
     memcpy(out->reason, s->reason, sizeof out->reason);
@@ -65,17 +66,26 @@ static int finite_lengths(const ic_trace_result *r)
     return 1;
 }
 
-/* What the cover cannot prove yet, known before it is grown: a singular
- * point found (its cells are neither empty nor regular), a tangential curve
- * (the surfaces' normals are parallel all along it). *n counts them. A
+/* What the cover cannot prove yet, known before it is grown: a tangential
+ * curve (the surfaces' normals are parallel all along it, so no cell along
+ * it is empty or regular, and it has no singular boxes). *n counts them. A
  * refusal needs no proof: the cover would refuse there at its finest cells,
  * after far more work. */
 static int unprovable(const ic_trace_result *r, int *n)
 {
-    *n = r->nspecials;
+    *n = 0;
     for (int k = 0; k < r->ncurves; k++)
         *n += r->curves[k].tangential;
     return *n > 0;
+}
+
+/* The singular points' places (freed by the caller): NULL out of memory. */
+static double (*singular_points(const ic_trace_result *r))[3]
+{
+    double(*p)[3] = malloc((size_t)(r->nspecials + 1) * sizeof *p);
+    for (int k = 0; p && k < r->nspecials; k++)
+        memcpy(p[k], r->specials[k].xyz, sizeof p[k]);
+    return p;
 }
 
 ic_status ic_trace_certify(ic_trace_result *r, ic_pair *pair, const ic_trace_options *opt,
@@ -94,9 +104,7 @@ ic_status ic_trace_certify(ic_trace_result *r, ic_pair *pair, const ic_trace_opt
     if (unprovable(r, &singular)) {
         rep->certificate.checked = 1;
         snprintf(rep->certificate.reason, sizeof rep->certificate.reason,
-                 "the certificate has no singular or tangential cells yet: %d singular points "
-                 "or tangential curves",
-                 singular);
+                 "the certificate has no tangential cells yet: %d tangential curves", singular);
         rep->complete = 0;
         ic_trace_failure(rep, "not proven by the certificate: %s", rep->certificate.reason);
         return IC_OK;
@@ -105,10 +113,12 @@ ic_status ic_trace_certify(ic_trace_result *r, ic_pair *pair, const ic_trace_opt
     const ic_certify_limits lim = ic_certify_limits_for(rep->cells, r->budget.deadline);
     ic_certify_curve *curves = malloc((size_t)(r->ncurves + 1) * sizeof *curves);
     double *z = curves ? search_points(r, pg, curves) : NULL;
+    double(*sing)[3] = singular_points(r);
+    const ic_certify_claim claim = {curves, r->ncurves, (const double(*)[3])sing, r->nspecials};
     ic_certify_summary sum;
-    ic_status st = z ? ic_certify_run(pg, opt->box, opt->has_box, &lim, curves, r->ncurves,
-                                      &sum, err)
-                     : ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");
+    ic_status st = z && sing ? ic_certify_run(pg, opt->box, opt->has_box, &lim, &claim, &sum, err)
+                             : ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");
+    free(sing);
     free(z);
     free(curves);
     if (st == IC_OK)

@@ -165,7 +165,8 @@ static void write_certificate(json_out *j, const ic_trace_certificate *c)
         const char *key;
         long n;
     } counts[] = {{"cells", c->cells},       {"empty", c->empty},         {"outside", c->outside},
-                  {"diagonal", c->diagonal}, {"regular", c->regular},     {"refused", c->refused},
+                  {"diagonal", c->diagonal}, {"regular", c->regular},     {"singular", c->singular},
+                  {"refused", c->refused},
                   {"crossings", c->crossings}, {"arcs", c->arcs}};
     for (size_t i = 0; i < sizeof counts / sizeof counts[0]; i++)
         int_member(j, counts[i].key, (int)counts[i].n);

@@ -1,0 +1,129 @@
+/*
+ * What the certificate's tests share (test_certificate.c,
+ * test_certificate_singular.c): a problem traced from its JSON text, the
+ * verdict of a sweep's case (complete and right, or honestly incomplete),
+ * a result's curves in search coordinates, and the checker run by hand on
+ * a claim that a test may have mutated.
+ */
+#ifndef IC_TESTS_CERTIFY_HARNESS_H
+#define IC_TESTS_CERTIFY_HARNESS_H
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "certify/match.h"
+#include "harness.h"
+#include "intercurve.h"
+#include "local/pair_access.h"
+
+typedef struct {
+    ic_problem *problem;
+    ic_pair *pair;
+    ic_trace_result *res;
+    ic_trace_options opt;
+} traced;
+
+static inline void release(traced *t)
+{
+    ic_trace_result_free(t->res);
+    ic_pair_free(t->pair);
+    ic_problem_free(t->problem);
+    memset(t, 0, sizeof *t);
+}
+
+static inline int trace_json(traced *t, const char *name, const char *json)
+{
+    ic_error err;
+    memset(t, 0, sizeof *t);
+    ic_trace_defaults(&t->opt);
+    ic_status st = ic_problem_parse(&t->problem, json, strlen(json), &err);
+    if (st == IC_OK) {
+        t->opt.has_box = ic_problem_box(t->problem, t->opt.box);
+        st = ic_pair_new(&t->pair, ic_problem_surface(t->problem, 0),
+                         ic_problem_surface(t->problem, 1), &err);
+    }
+    if (st == IC_OK)
+        st = ic_trace(&t->res, t->pair, &t->opt, &err);
+    return REQUIRE(st == IC_OK, "%s: %s", name, err.message) ? 0 : -1;
+}
+
+/* The verdicts of a sweep: `right` counts the tracer's right answers,
+ * `missed` the right answers the certificate did not prove. */
+typedef struct {
+    int cases, proven, honest, right, missed;
+} tally;
+
+/* complete and right, or incomplete with the reason listed: never complete
+ * and wrong. */
+static inline void judge(tally *t, const traced *tr, const char *name, int right)
+{
+    const ic_trace_report *rep = ic_trace_result_report(tr->res);
+    t->cases++;
+    t->right += right;
+    t->missed += right && !rep->complete;
+    if (rep->complete) {
+        t->proven++;
+        CHECK(right, "%s: complete, and wrong", name);
+    } else {
+        t->honest++;
+        CHECK(rep->nfailures > 0, "%s: incomplete with no failure listed", name);
+    }
+    printf("%s: %s%s%s\n", name, rep->complete ? "proven" : "not proven: ",
+           rep->complete ? "" : rep->certificate.reason,
+           rep->complete || rep->certificate.checked ? "" : rep->nfailures ? rep->failures[0] : "");
+}
+
+/* The curves of a result in search coordinates (one block, freed by the
+ * caller). */
+static inline double *search_curves(const traced *t, const ic_pairing *pg, ic_certify_curve *cv)
+{
+    const int n = ic_trace_result_num_curves(t->res), dim = pg->kind->dim;
+    size_t total = 0;
+    for (int k = 0; k < n; k++)
+        total += (size_t)ic_trace_result_curve(t->res, k)->npoints;
+    double *z = malloc((total + 1) * (size_t)dim * sizeof *z);
+    size_t at = 0;
+    for (int k = 0; z && k < n; k++) {
+        const ic_trace_curve *c = ic_trace_result_curve(t->res, k);
+        cv[k] = (ic_certify_curve){z + at * (size_t)dim, c->npoints, c->closed};
+        for (int i = 0; i < c->npoints; i++, at++) {
+            double p[2][2];
+            memcpy(p, c->points[i].params, sizeof p);
+            pg->kind->flatten(pg, c->points[i].xyz, p, z + at * (size_t)dim);
+        }
+    }
+    return z;
+}
+
+/* The checker's verdict on the cover of t's region, the claim's singular
+ * points and its curves. With `drop_crossing`, the cover loses one
+ * crossing of its first regular cell that has any (a crossing count off by
+ * one). 1 accepted, 0 refused (reason says why), -1 the test failed. */
+static inline int verdict_of(const traced *t, const ic_certify_claim *claim, int drop_crossing,
+                             char *reason)
+{
+    const ic_pairing *pg = ic_pair_pairing(t->pair);
+    ic_error err;
+    ic_certificate *c = ic_certificate_new(pg, t->opt.box, t->opt.has_box, &err);
+    if (!REQUIRE(c, "certificate: %s", err.message))
+        return -1;
+    const ic_certify_limits lim = {200000, 1e-6, 256, 0};
+    int ok = ic_certificate_set_singular(c, claim->singular, claim->nsingular) &&
+             ic_certify_cover(c, &lim, &err) == IC_OK && c->summary.accepted;
+    for (long i = 0; ok && drop_crossing && i < c->ncells; i++) {
+        ic_cell *cl = &c->cells[i];
+        if (cl->kind == IC_CELL_REGULAR && cl->ncross > 0) {
+            cl->ncross--; /* its last crossing is no longer the cell's */
+            drop_crossing = 0;
+        }
+    }
+    if (ok)
+        ok = ic_certify_curves(c, claim->curves, claim->ncurves, &err) == IC_OK &&
+             c->summary.accepted;
+    snprintf(reason, 240, "%s", c->summary.reason);
+    ic_certificate_free(c);
+    return ok;
+}
+
+#endif

@@ -76,6 +76,12 @@ static void sweep_clipped_circle(void)
            box.right, domain.right, NCLIP, box.proven, domain.proven);
     CHECK(box.missed == 0 && domain.missed == 0,
           "clipped circles: %d and %d right answers not proven", box.missed, domain.missed);
+    /* and the tracer is right on all: a step that leaves the box or the
+     * domain between two points inside ends there (march.c, the excursion
+     * test), and ends that left a domain edge where nothing degenerates are
+     * not joined across the cap outside (join.c) */
+    CHECK(box.right == NCLIP && domain.right == NCLIP,
+          "clipped circles: the tracer right on %d and %d of %d", box.right, domain.right, NCLIP);
 }
 
 /* The seam loops' lengths (gen_certificate_truth.py). */

@@ -127,6 +127,22 @@ int ic_pairing_point_may_degenerate(const ic_pairing *p, const double xyz[3],
     return p->kind->may_degenerate(p, lo, hi);
 }
 
+int ic_pairing_gap_may_degenerate(const ic_pairing *p, const double xyz_a[3],
+                                  const double params_a[2][2], const double xyz_b[3],
+                                  const double params_b[2][2])
+{
+    double za[4], zb[4], lo[4], hi[4];
+    p->kind->flatten(p, xyz_a, params_a, za);
+    p->kind->flatten(p, xyz_b, params_b, zb);
+    /* the march stops short of a pole by a step or so on either side: the
+     * hull grown by its own size each way reaches it */
+    for (int k = 0; k < p->kind->dim; k++) {
+        const double d = fabs(za[k] - zb[k]);
+        lo[k] = fmin(za[k], zb[k]) - d, hi[k] = fmax(za[k], zb[k]) + d;
+    }
+    return p->kind->may_degenerate(p, lo, hi);
+}
+
 ic_status ic_pairing_sheet_eval1(const ic_pairing *p, int s, const double *uv, double R[3],
                                  double Ru[3], double Rv[3], ic_error *err)
 {

@@ -107,6 +107,13 @@ struct ic_pairing {
 int ic_pairing_point_may_degenerate(const ic_pairing *p, const double xyz[3],
                                     const double params[2][2], double rel);
 
+/* 1 when a parametric sheet's normal may vanish over the hull of two
+ * points' parameters grown by its size each way (a gap through a pole, a
+ * pinch point). */
+int ic_pairing_gap_may_degenerate(const ic_pairing *p, const double xyz_a[3],
+                                  const double params_a[2][2], const double xyz_b[3],
+                                  const double params_b[2][2]);
+
 /* Builds the pairing of A and B (self: B is A, a self-intersection). */
 ic_status ic_pairing_init(ic_pairing *p, ic_surface *A, ic_surface *B, int self, ic_error *err);
 void ic_pairing_release(ic_pairing *p);

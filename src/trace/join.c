@@ -2,6 +2,7 @@
  * dropping arcs traced twice. */
 #include "trace_internal.h"
 #include "common/vec3.h"
+#include "local/pair_access.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -157,7 +158,8 @@ static int best_continuation(const ic_trace_result *r, int a, int ea, int b, int
  * domain there, meet within max_gap or two steps each side, and continue
  * each other). A curve
  * joined to itself is closed. */
-ic_status ic_trace_join_curves(ic_trace_result *r, double shape_tol, double max_gap)
+ic_status ic_trace_join_curves(ic_trace_result *r, ic_pair *pair, double shape_tol,
+                               double max_gap)
 {
     for (int changed = 1; changed;) {
         changed = 0;
@@ -197,8 +199,13 @@ ic_status ic_trace_join_curves(ic_trace_result *r, double shape_tol, double max_
                              * least 1/L) */
                             const double kappa = fmax(fmax(pa->kappa, pb->kappa), 1 / r->scale);
                             const double turn = fmin(0.5, 4 * kappa * dist);
+                            /* a gap where the parametrization does not
+                             * degenerate is the curve leaving the domain
+                             * (a cap past an edge): not joined */
                             if (dist > reach || ic_dot3(oa, ob) > -cos(turn) ||
-                                ic_dot3(d, t0) < 0.9 * dist)
+                                ic_dot3(d, t0) < 0.9 * dist ||
+                                !ic_pairing_gap_may_degenerate(ic_pair_pairing(pair), pa->xyz, pa->params, pb->xyz,
+                                                               pb->params))
                                 continue;
                             gap = ic_trace_gap_length(pa, t0, pb, ob);
                             if (!(gap > 0))

@@ -261,6 +261,123 @@ static int outside(const ic_tracer *tr, const ic_local_point *pt, ic_trace_event
     return 0;
 }
 
+static int corrected(const ic_tracer *tr, double h, ic_local_point *next, double *X);
+
+/* A step's two ends: the corrected point `next` at predictor step h and
+ * its apparatus `res`. */
+typedef struct {
+    const ic_tracer *tr;
+    double h;
+    const ic_local_point *next;
+    const ic_local_result *res;
+} step_ends;
+
+/* Sheet s's parameter i along the step at tau: the cubic Hermite
+ * interpolant of its values and derivatives d/ds at both ends (the
+ * predictor's parameters are of lower order than its points). */
+static double hermite_param(const step_ends *e, int s, int i, double near, double tau)
+{
+    const ic_tracer *tr = e->tr;
+    const double h = e->h, x = tau / h;
+    const double a0 = unwrap_near(tr, s, i, tr->cur.params[s][i], near);
+    const double a1 = unwrap_near(tr, s, i, e->next->params[s][i], near);
+    const double d0 = tr->dir * tr->res.branches[0].param_derivs[s][0][i] * h;
+    const double d1 = tr->dir * e->res->branches[0].param_derivs[s][0][i] * h;
+    const double x2 = x * x, x3 = x2 * x;
+    return (2 * x3 - 3 * x2 + 1) * a0 + (x3 - 2 * x2 + x) * d0 + (-2 * x3 + 3 * x2) * a1 +
+           (x3 - x2) * d1;
+}
+
+/* How far past boundary b the curve is at step tau (< 0: inside), along the
+ * predictor (a box face) or the Hermite interpolant (a domain edge), and
+ * the margin of that estimate. */
+static double past(const step_ends *e, const boundary *b, int upper, double tau, double *margin)
+{
+    const ic_tracer *tr = e->tr;
+    double x;
+    if (b->sheet < 0) {
+        double X[3], params[2][2];
+        predict(tr, tau, X, params);
+        x = X[b->index];
+        *margin = IC_TRACE_EXCURSION_TOLS * tr->opt.tol;
+    } else {
+        x = hermite_param(e, b->sheet, b->index, b->bound, tau);
+        const double width = tr->domain[b->sheet][b->index][1] - tr->domain[b->sheet][b->index][0];
+        *margin = IC_TRACE_EXCURSION_TOLS * tr->opt.tol * width / tr->opt.local.scale;
+    }
+    return upper ? x - b->bound : b->bound - x;
+}
+
+/* The largest of past() over the step near sample j (golden section over
+ * the two intervals beside it): *tau where. */
+static double furthest(const step_ends *e, const boundary *b, int upper, int j, double *tau,
+                       double *margin)
+{
+    const double dt = e->h / IC_TRACE_EXCURSION_SAMPLES, g = 0.5 * (sqrt(5.0) - 1.0);
+    double a = fmax(0.0, (j - 1) * dt), c = fmin(e->h, (j + 1) * dt);
+    for (int it = 0; it < IC_TRACE_EXCURSION_SECTIONS; it++) {
+        const double x1 = c - g * (c - a), x2 = a + g * (c - a);
+        if (past(e, b, upper, x1, margin) > past(e, b, upper, x2, margin))
+            c = x2;
+        else
+            a = x1;
+    }
+    *tau = 0.5 * (a + c);
+    return past(e, b, upper, *tau, margin);
+}
+
+/* The bounds a march may cross: the box's faces and the edges of the
+ * domains that do not wrap; *n of them, with which side each is. */
+static int bounds(const ic_tracer *tr, boundary *out, int *upper)
+{
+    int n = 0;
+    for (int s = 0; s < 2; s++)
+        for (int i = 0; tr->par[s] && i < 2; i++)
+            for (int side = 0; side < 2 && !tr->periodic[s][i]; side++, n++)
+                out[n] = (boundary){s, i, tr->domain[s][i][side]}, upper[n] = side;
+    for (int k = 0; tr->opt.has_box && k < 3; k++)
+        for (int side = 0; side < 2; side++, n++)
+            out[n] = (boundary){-1, k, tr->opt.box[k][side]}, upper[n] = side;
+    return n;
+}
+
+/* The step (e) from cur, inside at both ends, leaves the box or a domain
+ * between them (IC_TRACE_EXCURSION_*): 1 with *hx, a step to a corrected
+ * point outside, and the boundary *b (the first along the step). */
+static int excursion(const step_ends *e, double *hx, boundary *b, ic_trace_event *ev)
+{
+    const ic_tracer *tr = e->tr;
+    const double h = e->h;
+    boundary all[14];
+    int upper[14];
+    const int n = bounds(tr, all, upper);
+    double first = 2.0 * h;
+    for (int q = 0; q < n; q++) {
+        int best = 0;
+        double gbest = -HUGE_VAL, margin = 0.0;
+        for (int j = 1; j < IC_TRACE_EXCURSION_SAMPLES; j++) {
+            const double g = past(e, &all[q], upper[q], j * h / IC_TRACE_EXCURSION_SAMPLES,
+                                  &margin);
+            if (g > gbest)
+                gbest = g, best = j;
+        }
+        /* the reach in the coordinate's own units: margin is tol there */
+        const double reach = IC_TRACE_EXCURSION_REACH * h * margin /
+                             (IC_TRACE_EXCURSION_TOLS * tr->opt.tol);
+        double tau;
+        if (gbest < -reach || furthest(e, &all[q], upper[q], best, &tau, &margin) < -margin ||
+            tau >= first)
+            continue;
+        ic_local_point mid;
+        double X[3];
+        ic_trace_event ev_here;
+        boundary bd;
+        if (corrected(tr, tau, &mid, X) && outside(tr, &mid, &ev_here, &bd))
+            first = tau, *hx = tau, *b = bd, *ev = ev_here;
+    }
+    return first < 2.0 * h;
+}
+
 /* Adds h (du/ds, dv/ds) of sheet s to uv: the march tangent t = R_u du/ds
  * + R_v dv/ds solved by least squares in the sheet's tangent basis. 0 where
  * the sheet is singular. */
@@ -726,6 +843,10 @@ static ic_status step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
         ic_local_result res;
         if (!regular_ahead(tr, h, &next, t, &res, &near_tangential))
             continue;
+        double hx = h;
+        const step_ends ends = {tr, h, &next, &res};
+        if (excursion(&ends, &hx, &bd, event))
+            return end_on_boundary(tr, hx, bd, err);
         const double ds = step_arc(tr, h, X, next.xyz);
         tr->cur = next;
         tr->res = res;

@@ -109,7 +109,8 @@ static ic_status finish(ic_trace_result *r, ic_pair *pair, pipeline *p, ic_statu
     if (st == IC_OK && ic_trace_drop_duplicates(r, IC_TRACE_ON_CURVE * r->scale) != IC_OK)
         st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory dropping duplicate curves");
     if (st == IC_OK &&
-        ic_trace_join_curves(r, opt->shape_tol, IC_TRACE_POLE_GAP_CHORDS * opt->chord) != IC_OK)
+        ic_trace_join_curves(r, pair, opt->shape_tol,
+                             IC_TRACE_POLE_GAP_CHORDS * opt->chord) != IC_OK)
         st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory joining curves");
     /* a surface's singular point counted the curve ends met there: two a branch */
     for (int k = 0; k < r->nspecials; k++)

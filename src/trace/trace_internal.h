@@ -112,7 +112,8 @@ double ic_trace_gap_length(const ic_trace_point *p, const double *t0, const ic_t
                            const double *t1);
 /* max_gap: the largest gap bridged where a curve passes a degenerate point
  * of a parametrization */
-ic_status ic_trace_join_curves(ic_trace_result *r, double shape_tol, double max_gap);
+ic_status ic_trace_join_curves(ic_trace_result *r, ic_pair *pair, double shape_tol,
+                               double max_gap);
 /* IC_ERR_NOMEM when out of memory (join.c) */
 ic_status ic_trace_drop_duplicates(ic_trace_result *r, double radius);
 

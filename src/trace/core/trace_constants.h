@@ -94,6 +94,21 @@
  * rule itself is pinned (test_trust, "tangential arc cut by the domain"). */
 #define IC_TRACE_EDGE_REL 1e-9
 
+/* A step whose ends are inside the box and the domains may leave them
+ * between (a circle past a box's corner by 1e-7, a step of 1e-2): the
+ * predictor (accurate to tol over the step) is sampled at this many
+ * intervals, and where a sample comes within IC_TRACE_EXCURSION_REACH of
+ * the step's length of a bound, the coordinate's extreme along the
+ * predictor is found by golden section; an extreme within
+ * IC_TRACE_EXCURSION_TOLS tol of the bound (a length; for a parameter, the
+ * same fraction of the domain's width as tol is of L) is tested on the
+ * corrected point there. Pinned by tests/test_certificate.c (the clipped
+ * circles at b = 0.99999 .. 0.9999999). */
+#define IC_TRACE_EXCURSION_SAMPLES 8
+#define IC_TRACE_EXCURSION_REACH 0.25
+#define IC_TRACE_EXCURSION_TOLS 4.0
+#define IC_TRACE_EXCURSION_SECTIONS 40
+
 /* relative to a NURBS sheet's domain width: a parameter this close to a
  * knot stands on that knot line (docs/nurbs.md). Two sheets of one curve
  * reach a common knot line within rounding of each other (measured 9e-16

@@ -181,7 +181,7 @@ static void sweep_tiny_far(void)
 static int verdict(const traced *t, const ic_certify_curve *cv, int n, int drop_crossing,
                    char *reason)
 {
-    const ic_certify_claim claim = {cv, n, NULL, 0};
+    const ic_certify_claim claim = {cv, n, NULL, 0, NULL, 0};
     return verdict_of(t, &claim, drop_crossing, reason);
 }
 
@@ -308,8 +308,8 @@ static void swapped_arcs(void)
     for (int a = 0; a < 4; a++)
         if (a != p && a != q)
             mix[m++] = cv[a];
-    mix[m++] = (ic_certify_curve){f1, k + 1 + nq - j, 0};
-    mix[m++] = (ic_certify_curve){f2, j + 1 + np - k, 0};
+    mix[m++] = (ic_certify_curve){f1, k + 1 + nq - j, 0, 0};
+    mix[m++] = (ic_certify_curve){f2, j + 1 + np - k, 0, 0};
     CHECK(ic_certify_curves(c, mix, 4, &err) == IC_OK && !c->summary.accepted &&
               strstr(c->summary.reason, "other than along one of its arcs"),
           "two arcs swapped inside a cell are not refused: '%s'", c->summary.reason);

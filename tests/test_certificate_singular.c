@@ -257,7 +257,7 @@ static void mutations(void)
         for (int k = 0; k < ns; k++)
             memcpy(sing[k], ic_trace_result_special(r, k)->xyz, sizeof sing[k]);
         char why[240];
-        ic_certify_claim claim = {cv, n, (const double(*)[3])sing, ns};
+        ic_certify_claim claim = {cv, n, (const double(*)[3])sing, ns, NULL, 0};
         CHECK(verdict_of(&t, &claim, 0, why) == 1, "the true trace is refused: %s", why);
         claim.ncurves = n - 1;
         CHECK(verdict_of(&t, &claim, 0, why) == 0 && strstr(why, "not traced"),
@@ -275,7 +275,7 @@ static void mutations(void)
         double *open = opened_at(&cv[0], sing[0]);
         if (REQUIRE(open, "singular mutations: curve 1 does not pass through a branch point")) {
             const ic_certify_curve keep = cv[0];
-            cv[0] = (ic_certify_curve){open, keep.npoints + 1, 0};
+            cv[0] = (ic_certify_curve){open, keep.npoints + 1, 0, 0};
             CHECK(verdict_of(&t, &claim, 0, why) == 1,
                   "the first curve opened at its branch point is refused: %s", why);
             while (cv[0].npoints > 2 && dist_inf(open + 3 * (cv[0].npoints - 1), sing[0]) < 0.05)

@@ -51,12 +51,24 @@ check "verify of the branch points' trace: proven, with singular cells ($out)" $
 cp "$tmp/b.json" "$tmp/t.json"
 edit "d['points'] = []" "$tmp/nopoints.json"
 out="$("$bin" verify "$branch" --trace "$tmp/nopoints.json")"
-[ $? -eq 2 ] && [[ "$out" == *"nor by a singular point found"* ]]
+[ $? -eq 2 ] && [[ "$out" == *"nor by a singular point or tangential curve found"* ]]
 check "the branch points dropped: exit 2, the cell named ($out)" $?
 edit "d['points'][0]['xyz'] = [0, 0]" "$tmp/badpoint.json"
 err="$("$bin" verify "$branch" --trace "$tmp/badpoint.json" 2>&1)"
 [ $? -eq 1 ] && [[ "$err" == *"points[0].xyz"* ]]
 check "a bad point: exit 1, its JSON path ($err)" $?
+# a tangential curve: its tube is placed from the document's curve of type
+# "tangential"; the same curve called transversal is walked and refused
+line="$src/tests/torture/tangent-cylinder-plane-box.json"
+"$bin" trace "$line" -o "$tmp/l.json"
+out="$("$bin" verify "$line" --trace "$tmp/l.json")"
+[ $? -eq 0 ] && [[ "$out" == proven:* ]] && [[ "$out" != *" 0 tangential"* ]]
+check "verify of a tangential line: proven, with tangential cells ($out)" $?
+cp "$tmp/l.json" "$tmp/t.json"
+edit "d['curves'][0]['type'] = 'transversal'" "$tmp/untangential.json"
+out="$("$bin" verify "$line" --trace "$tmp/untangential.json")"
+[ $? -eq 2 ]
+check "the tangential line called transversal: exit 2 ($out)" $?
 "$bin" verify "$problem" >/dev/null 2>&1
 [ $? -eq 1 ]
 check "no --trace: exit 1" $?

@@ -181,6 +181,9 @@ typedef struct {
     /** leaves in the box of a singular point the result reports (half width
      *  1e-5 of the region's size): not examined (docs/tracing.md) */
     long singular;
+    /** leaves in the tube about a tangential curve the result reports (radius
+     *  1e-4 of the region's size): not examined (docs/tracing.md) */
+    long tangential;
     long crossings; /**< crossings of the regular cells' faces, each root-isolated */
     long arcs;      /**< arcs of the regular cells (half the crossings) */
     double seconds; /**< the checker's wall time */

@@ -69,7 +69,11 @@ static ic_status read_curves(const cJSON *doc, const ic_pairing *pg, const char 
             return ic_error_set(err, IC_ERR_INVALID, 0, "%s: curves[%d].points: not an array",
                                 name, k);
         const int closed = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(c, "closed"));
-        (*curves)[k] = (ic_certify_curve){*z + at * (size_t)dim, cJSON_GetArraySize(pts), closed};
+        const cJSON *type = cJSON_GetObjectItemCaseSensitive(c, "type");
+        const int tangential =
+            cJSON_IsString(type) && strcmp(type->valuestring, "tangential") == 0;
+        (*curves)[k] =
+            (ic_certify_curve){*z + at * (size_t)dim, cJSON_GetArraySize(pts), closed, tangential};
         int i = 0;
         for (const cJSON *p = pts->child; p; p = p->next, i++, at++) {
             double xyz[3], params[2][2];
@@ -104,6 +108,35 @@ static ic_status read_singular(const cJSON *doc, const char *name, double (**p)[
     return IC_OK;
 }
 
+/* The document's tangential curves (curves[] of type "tangential", read
+ * by read_curves already): tubes[] and one block of points (*xyz), the
+ * caller's to free. */
+static ic_status read_tubes(const cJSON *doc, const char *name, ic_certify_tube **tubes,
+                            int *n, double **xyz, ic_error *err)
+{
+    const cJSON *cs = cJSON_GetObjectItemCaseSensitive(doc, "curves");
+    size_t total = 0;
+    *n = 0;
+    for (const cJSON *c = cs->child; c; c = c->next)
+        total += (size_t)cJSON_GetArraySize(cJSON_GetObjectItemCaseSensitive(c, "points"));
+    *tubes = malloc((size_t)(cJSON_GetArraySize(cs) + 1) * sizeof **tubes);
+    *xyz = malloc((total + 1) * 3 * sizeof **xyz);
+    if (!*tubes || !*xyz)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory reading %s", name);
+    size_t at = 0;
+    for (const cJSON *c = cs->child; c; c = c->next) {
+        const cJSON *type = cJSON_GetObjectItemCaseSensitive(c, "type");
+        if (!cJSON_IsString(type) || strcmp(type->valuestring, "tangential") != 0)
+            continue;
+        const cJSON *pts = cJSON_GetObjectItemCaseSensitive(c, "points");
+        const int closed = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(c, "closed"));
+        (*tubes)[(*n)++] = (ic_certify_tube){*xyz + 3 * at, cJSON_GetArraySize(pts), closed};
+        for (const cJSON *p = pts->child; p; p = p->next, at++)
+            numbers(cJSON_GetObjectItemCaseSensitive(p, "xyz"), *xyz + 3 * at, 3);
+    }
+    return IC_OK;
+}
+
 ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const char *name,
                         ic_trace_certificate *out, ic_error *err)
 {
@@ -115,12 +148,16 @@ ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const c
     ic_certify_curve *curves = NULL;
     double *z = NULL;
     double(*sing)[3] = NULL;
-    int n = 0, nsing = 0;
+    ic_certify_tube *tubes = NULL;
+    double *txyz = NULL;
+    int n = 0, nsing = 0, ntubes = 0;
     ic_status st = ic_api_problem_pair(&pair, problem, err);
     if (st == IC_OK)
         st = read_curves(doc, ic_pair_pairing(pair), name, &curves, &n, &z, err);
     if (st == IC_OK)
         st = read_singular(doc, name, &sing, &nsing, err);
+    if (st == IC_OK)
+        st = read_tubes(doc, name, &tubes, &ntubes, &txyz, err);
     if (st == IC_OK) {
         const cJSON *cells = cJSON_GetObjectItemCaseSensitive(
             cJSON_GetObjectItemCaseSensitive(doc, "report"), "cells");
@@ -129,12 +166,13 @@ ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const c
         const ic_certify_limits lim =
             ic_certify_limits_for(cJSON_IsNumber(cells) ? (long)cells->valuedouble : 0, 0);
         ic_certify_summary s;
-        const ic_certify_claim claim = {curves, n, (const double(*)[3])sing, nsing};
+        const ic_certify_claim claim = {curves, n, (const double(*)[3])sing, nsing, tubes, ntubes};
         st = ic_certify_run(ic_pair_pairing(pair), box, has_box, &lim, &claim, &s, err);
         out->checked = 1;
         out->accepted = st == IC_OK && s.accepted;
         out->cells = s.cells, out->empty = s.empty, out->outside = s.outside;
         out->diagonal = s.diagonal, out->regular = s.regular, out->singular = s.singular;
+        out->tangential = s.tangential;
         out->refused = s.refused;
         out->crossings = s.crossings, out->arcs = s.arcs, out->seconds = s.seconds;
         memcpy(out->reason, s.reason, sizeof out->reason);
@@ -142,6 +180,8 @@ ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const c
     free(curves);
     free(z);
     free(sing);
+    free(tubes);
+    free(txyz);
     ic_pair_free(pair);
     cJSON_Delete(doc);
     return st;

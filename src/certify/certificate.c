@@ -40,6 +40,7 @@ void ic_certificate_free(ic_certificate *c)
     free(c->cells);
     free(c->cross);
     free(c->face_stack);
+    free(c->chunk_box);
     free(c);
 }
 
@@ -57,22 +58,39 @@ static int grow(void **items, long n, long *cap, size_t size)
     return 1;
 }
 
-int ic_certificate_set_singular(ic_certificate *c, const double (*xyz)[3], int n)
+/* The region's size in space: the diagonal of its image's enclosure; 0
+ * when it has none. */
+static double region_size(const ic_certificate *c)
 {
-    c->singular = xyz, c->nsingular = 0, c->singular_half = 0.0;
     ic_interval X[4], img[3];
     for (int k = 0; k < c->dim; k++)
         X[k] = (ic_interval){c->lo[k], c->hi[k]};
-    if (n > 0 && !ic_certify_image(c->pg, X, img))
-        return 0;
+    if (!ic_certify_image(c->pg, X, img))
+        return 0.0;
     double d = 0.0;
-    for (int k = 0; k < 3 && n > 0; k++)
+    for (int k = 0; k < 3; k++)
         d = hypot(d, img[k].hi - img[k].lo);
-    if (n > 0 && !(d > 0.0 && isfinite(d)))
+    return d > 0.0 && isfinite(d) ? d : 0.0;
+}
+
+int ic_certificate_set_singular(ic_certificate *c, const double (*xyz)[3], int n)
+{
+    c->singular = xyz, c->nsingular = 0, c->singular_half = 0.0;
+    if (n == 0)
+        return 1;
+    const double d = region_size(c);
+    if (d == 0.0)
         return 0;
     c->nsingular = n;
     c->singular_half = IC_CERTIFY_SINGULAR_HALF * d;
     return 1;
+}
+
+int ic_certificate_tube_size(ic_certificate *c)
+{
+    const double d = region_size(c);
+    c->tube_half = IC_CERTIFY_TUBE_HALF * d;
+    return d > 0.0;
 }
 
 int ic_certificate_in_singular_box(const ic_certificate *c, long i)

@@ -16,6 +16,8 @@
  *              width IC_CERTIFY_SINGULAR_HALF of the region's size): what
  *              the cell holds is not proven, only the crossings of the
  *              regular cells around it;
+ *   tangential - the same, within the tube about a tangential curve the
+ *              result reports (radius IC_CERTIFY_TUBE_HALF, tube.c);
  * or refused, with the reason. The checker then holds the traced curves
  * against the crossings (match.c). It uses the pairing's equations and the
  * surfaces' enclosures (system.h), never the tracer's decisions.
@@ -33,6 +35,7 @@ typedef enum {
     IC_CELL_DIAGONAL,
     IC_CELL_REGULAR,
     IC_CELL_SINGULAR,
+    IC_CELL_TANGENTIAL,
     IC_CELL_REFUSED
 } ic_cell_kind;
 
@@ -54,8 +57,14 @@ typedef struct {
     int events; /* how many traced passages met it (match.c) */
 } ic_crossing;
 
+/* A tangential curve the result reports: n points (xyz), closed or not. */
 typedef struct {
-    long cells, empty, outside, diagonal, regular, singular, refused;
+    const double *xyz;
+    int n, closed;
+} ic_certify_tube;
+
+typedef struct {
+    long cells, empty, outside, diagonal, regular, singular, tangential, refused;
     long crossings, arcs;
     double seconds;
     int accepted;
@@ -88,6 +97,12 @@ typedef struct {
     const double (*singular)[3];
     int nsingular;
     double singular_half;
+    /* the tangential curves, their tubes' radius (a length), and the box of
+     * every chunk of their segments (tube.c) */
+    const ic_certify_tube *tubes;
+    int ntubes;
+    double tube_half;
+    double (*chunk_box)[6];
     /* work memory of face.c, kept from face to face: boxes of a face */
     ic_interval (*face_stack)[4];
     int face_cap;
@@ -110,6 +125,29 @@ int ic_certificate_set_singular(ic_certificate *c, const double (*xyz)[3], int n
 
 /* 1 when cell i's image lies within the box of a singular point. */
 int ic_certificate_in_singular_box(const ic_certificate *c, long i);
+
+/* The tubes' radius: of the region's image diagonal (a fraction). */
+#define IC_CERTIFY_TUBE_HALF 2e-4
+
+/* The result's tangential curves (kept by reference: they must outlive
+ * c): 0 out of memory or when the region's image cannot be enclosed. */
+int ic_certificate_set_tubes(ic_certificate *c, const ic_certify_tube *tubes, int n);
+
+/* Sets tube_half from the region's size: 0 when it has no enclosure. */
+int ic_certificate_tube_size(ic_certificate *c);
+
+/* 1 when cell i's image lies within a tube. */
+int ic_certificate_in_tube(const ic_certificate *c, long i);
+
+/* The tubes neither come back on themselves nor meet (else the certificate
+ * is refused): 1, 0 refused, -1 out of memory. */
+int ic_certificate_tubes_apart(ic_certificate *c);
+
+/* A leaf whose content is not examined: singular or tangential. */
+static inline int ic_cell_unexamined(ic_cell_kind kind)
+{
+    return kind == IC_CELL_SINGULAR || kind == IC_CELL_TANGENTIAL;
+}
 
 /* Appends a cell (its box) or a crossing: the index, or -1 out of memory. */
 long ic_certificate_add_cell(ic_certificate *c, const double *lo, const double *hi);

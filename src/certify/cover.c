@@ -74,6 +74,7 @@ static void count(ic_certificate *c, ic_cell_kind kind)
     s->diagonal += kind == IC_CELL_DIAGONAL;
     s->regular += kind == IC_CELL_REGULAR;
     s->singular += kind == IC_CELL_SINGULAR;
+    s->tangential += kind == IC_CELL_TANGENTIAL;
     s->refused += kind == IC_CELL_REFUSED;
 }
 
@@ -88,9 +89,12 @@ static int grow_leaf(ic_certificate *c, long i, int depth, const ic_certify_limi
             count(c, c->cells[i].kind);
         return rc;
     }
-    if (ic_certificate_in_singular_box(c, i)) {
-        c->cells[i].kind = IC_CELL_SINGULAR;
-        count(c, IC_CELL_SINGULAR);
+    const ic_cell_kind unexamined = ic_certificate_in_singular_box(c, i) ? IC_CELL_SINGULAR
+                                    : ic_certificate_in_tube(c, i)         ? IC_CELL_TANGENTIAL
+                                                                           : IC_CELL_REFUSED;
+    if (unexamined != IC_CELL_REFUSED) {
+        c->cells[i].kind = unexamined;
+        count(c, unexamined);
         return 1;
     }
     double rel;
@@ -100,8 +104,8 @@ static int grow_leaf(ic_certificate *c, long i, int depth, const ic_certify_limi
         count(c, IC_CELL_REFUSED);
         ic_certificate_refuse(c, "a cell of width %.3g of the region at [%.9g, %.9g] x [%.9g, "
                                  "%.9g] (first two coordinates) is neither empty nor regular nor "
-                                 "by a singular point found: a tangential curve, a singular point "
-                                 "missed, a box edge across a sheet, or surfaces too close",
+                                 "by a singular point or tangential curve found: one missed, a "
+                                 "box edge across a sheet, or surfaces too close",
                               rel, cl->lo[0], cl->hi[0], cl->lo[1], cl->hi[1]);
         return 0;
     }

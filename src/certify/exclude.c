@@ -83,33 +83,36 @@ static int row_excludes(const double *y, int m, int dim, const ic_certify_eval *
     return g.lo > 0.0 || g.hi < 0.0;
 }
 
-int ic_certify_excludes_centred(const ic_pairing *pg, const ic_interval *X,
-                                const ic_certify_eval *over)
+int ic_certify_centre(const ic_pairing *pg, const ic_interval *X, double *c,
+                      ic_certify_eval *at)
 {
-    const int dim = pg->kind->dim, m = dim - 1;
-    double c[4];
     ic_interval C[4];
-    for (int k = 0; k < dim; k++) {
+    for (int k = 0; k < pg->kind->dim; k++) {
         c[k] = X[k].lo + 0.5 * (X[k].hi - X[k].lo); /* inside X: any point would do */
         C[k] = (ic_interval){c[k], c[k]};
     }
-    ic_certify_eval at;
-    if (!ic_certify_enclose(pg, C, &at))
-        return 0;
+    return ic_certify_enclose(pg, C, at);
+}
+
+int ic_certify_excludes_centred(const ic_pairing *pg, const ic_interval *X,
+                                const ic_certify_eval *over, const double *c,
+                                const ic_certify_eval *at)
+{
+    const int dim = pg->kind->dim, m = dim - 1;
     double A[4][4] = {{0}}, y[3];
     for (int a = 0; a < m; a++)
         for (int b = 0; b < m; b++)
             for (int k = 0; k < dim; k++) {
-                const double ja = 0.5 * (at.J[a][k].lo + at.J[a][k].hi);
-                const double jb = 0.5 * (at.J[b][k].lo + at.J[b][k].hi);
+                const double ja = 0.5 * (at->J[a][k].lo + at->J[a][k].hi);
+                const double jb = 0.5 * (at->J[b][k].lo + at->J[b][k].hi);
                 A[a][b] += ja * jb;
             }
-    if (least_vector(A, m, y) && row_excludes(y, m, dim, &at, over, X, c))
+    if (least_vector(A, m, y) && row_excludes(y, m, dim, at, over, X, c))
         return 1;
     for (int i = 0; i < m; i++) { /* each equation alone, centred */
         double e[3] = {0, 0, 0};
         e[i] = 1.0;
-        if (row_excludes(e, m, dim, &at, over, X, c))
+        if (row_excludes(e, m, dim, at, over, X, c))
             return 1;
     }
     return 0;

@@ -38,13 +38,11 @@ static int decide(const ic_certificate *c, const ic_interval *X, int j, ic_inter
         return 0;
     if (ic_certify_excludes(&e, c->m))
         return 1;
-    ic_interval Xc[4];
-    for (int k = 0; k < c->dim; k++) {
-        const double mid = 0.5 * X[k].lo + 0.5 * X[k].hi;
-        Xc[k] = (ic_interval){mid, mid};
-    }
-    if (!ic_certify_enclose(c->pg, Xc, &ec))
+    double mid[4];
+    if (!ic_certify_centre(c->pg, X, mid, &ec))
         return 0;
+    if (ic_certify_excludes_centred(c->pg, X, &e, mid, &ec))
+        return 1;
     ic_interval M[4][4], U[4], KU[4];
     minor_without(&e, c->m, j, M);
     unknowns(X, c->dim, j, U);

@@ -120,12 +120,15 @@ static int pair_arcs(ic_certificate *c, long first, long n, int axis)
 
 /* The cofactors of J at the cell's centre (the curve's tangent there, up to
  * a factor), to try the most promising axis first. */
-static void axis_order(const ic_certificate *c, const ic_cell *cl, int order[4])
+static void axis_order(const ic_certificate *c, const ic_certify_eval *at, int order[4])
 {
-    double z[4], F[3], J[3][4], T[4] = {0, 0, 0, 0};
-    for (int k = 0; k < c->dim; k++)
-        z[k] = 0.5 * cl->lo[k] + 0.5 * cl->hi[k], order[k] = k;
-    if (ic_certify_at(c->pg, z, F, J))
+    double J[3][4], T[4] = {0, 0, 0, 0};
+    for (int k = 0; k < c->dim; k++) {
+        order[k] = k;
+        for (int i = 0; at && i < c->m; i++)
+            J[i][k] = 0.5 * at->J[i][k].lo + 0.5 * at->J[i][k].hi;
+    }
+    if (at) /* no enclosure at the centre: the natural order */
         for (int k = 0; k < c->dim; k++) {
             double M[4][4], Y[4][4];
             for (int i = 0; i < c->m; i++)
@@ -151,10 +154,10 @@ static void axis_order(const ic_certificate *c, const ic_cell *cl, int order[4])
 /* Regular along some axis, with every face's crossings isolated and paired:
  * 1, 0 undecided, -1 out of memory. */
 static int regular(ic_certificate *c, long i, const ic_certify_eval *e,
-                   const ic_certify_limits *lim)
+                   const ic_certify_eval *at, const ic_certify_limits *lim)
 {
     int order[4];
-    axis_order(c, &c->cells[i], order);
+    axis_order(c, at, order);
     for (int a = 0; a < c->dim; a++) {
         const int k = order[a];
         if (!monotone_along(c, e, k))
@@ -186,7 +189,11 @@ int ic_certify_leaf(ic_certificate *c, long i, const ic_certify_limits *lim)
     if (!ic_certify_enclose(c->pg, X, &e))
         return 0;
     ic_cell *cl = &c->cells[i];
-    if (ic_certify_excludes(&e, c->m) || ic_certify_excludes_centred(c->pg, X, &e)) {
+    double mid[4];
+    ic_certify_eval at;
+    const int centred = ic_certify_centre(c->pg, X, mid, &at);
+    if (ic_certify_excludes(&e, c->m) ||
+        (centred && ic_certify_excludes_centred(c->pg, X, &e, mid, &at))) {
         cl->kind = IC_CELL_EMPTY;
         return 1;
     }
@@ -206,5 +213,5 @@ int ic_certify_leaf(ic_certificate *c, long i, const ic_certify_limits *lim)
         cl->kind = IC_CELL_DIAGONAL;
         return 1;
     }
-    return regular(c, i, &e, lim);
+    return regular(c, i, &e, centred ? &at : NULL, lim);
 }

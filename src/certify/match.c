@@ -43,6 +43,7 @@ typedef struct {
     long leaf;        /* the cell the walk is in */
     long entry;       /* the crossing it came in by, or -1 (the curve's start) */
     long first_exit;  /* a closed curve: the crossing its first passage left by */
+    long leaf_start;  /* a closed curve: the cell it starts in */
     long events;
     int failed;
 } walker;
@@ -230,7 +231,7 @@ static int put_back(const ic_certificate *c, double *m)
     memcpy(m, keep, sizeof keep);
     ic_certificate_wrap(c, m, mw);
     const long L = ic_certificate_locate(c, mw, -1, 0);
-    return L >= 0 && c->cells[L].kind == IC_CELL_SINGULAR;
+    return L >= 0 && ic_cell_unexamined(c->cells[L].kind);
 }
 
 /* Where the curve from cw (in leaf L) to tw (outside it) leaves L: the
@@ -282,12 +283,12 @@ static int on_face(const ic_certificate *c, long L, const double *q, int j)
  * the walk may cross it anywhere. */
 static int between_singular(const ic_certificate *c, long L, const double *q, int j, int side)
 {
-    if (c->cells[L].kind != IC_CELL_SINGULAR)
+    if (!ic_cell_unexamined(c->cells[L].kind))
         return 0;
     double qn[4];
     ic_certificate_wrap(c, q, qn);
     const long next = ic_certificate_locate(c, qn, j, side ? 1 : -1);
-    return next >= 0 && next != L && c->cells[next].kind == IC_CELL_SINGULAR;
+    return next >= 0 && next != L && ic_cell_unexamined(c->cells[next].kind);
 }
 
 /* The walk leaves its cell across face (j, side) at q: a regular cell by
@@ -296,7 +297,7 @@ static int between_singular(const ic_certificate *c, long L, const double *q, in
 static int leave_cell(walker *w, int j, int side, const double *q)
 {
     const ic_cell_kind kind = w->c->cells[w->leaf].kind;
-    if (kind == IC_CELL_SINGULAR)
+    if (ic_cell_unexamined(kind))
         return 1;
     const long xa = kind == IC_CELL_REGULAR ? crossing_at(w->c, w->leaf, j, side, q) : -1;
     if (xa < 0) {
@@ -312,7 +313,7 @@ static int leave_cell(walker *w, int j, int side, const double *q)
 static int enter_cell(walker *w, long next, int j, int side, const double *qn)
 {
     const ic_cell_kind kind = w->c->cells[next].kind;
-    if (kind == IC_CELL_SINGULAR) {
+    if (ic_cell_unexamined(kind)) {
         w->entry = -1;
         return 1;
     }
@@ -333,6 +334,7 @@ static int cross_face(walker *w, double *cur, double *target)
     const ic_certificate *c = w->c;
     double cw[4], tw[4], q[4];
     ic_certificate_wrap(c, cur, cw);
+    memcpy(q, cw, sizeof q); /* where a refusal names, should the halving fail */
     for (int k = 0; k < c->dim; k++)
         tw[k] = target[k] + (cw[k] - cur[k]);
     const ic_cell *cl = &c->cells[w->leaf];
@@ -400,10 +402,11 @@ static void walk_chord(walker *w, const double *a, const double *b, int halvings
     refuse_at(w, "crosses too many cells along one chord", a);
 }
 
-/* Leaf L (-1: none) is a singular cell, where a branch may end. */
+/* Leaf L (-1: none) is a singular or tangential cell, where a branch may
+ * end. */
 static int in_singular_cell(const ic_certificate *c, long L)
 {
-    return L >= 0 && c->cells[L].kind == IC_CELL_SINGULAR;
+    return L >= 0 && ic_cell_unexamined(c->cells[L].kind);
 }
 
 /* An open curve's end z: on a face of its cell that is the region's
@@ -459,6 +462,7 @@ static void walk_curve(walker *w, const double *z, int n, int closed)
             refuse_at(w, "lies outside the region", z);
             return;
         }
+        w->leaf_start = w->leaf;
     }
     for (int i = 0; i + 1 < n && !w->failed; i++)
         walk_chord(w, z + (size_t)i * dim, z + (size_t)(i + 1) * dim, 0);
@@ -471,9 +475,15 @@ static void walk_curve(walker *w, const double *z, int n, int closed)
             const double T = w->c->periodic[k] ? width(w->c, k) : 0.0;
             first[k] = z[k] + (T > 0 ? T * nearbyint((last[k] - z[k]) / T) : 0.0);
         }
+        const int from_unexamined = in_singular_cell(w->c, w->leaf_start);
         walk_chord(w, last, first, 0);
-        if (!w->failed && (w->events == 0 || w->entry < 0 ||
-                           w->c->cross[w->entry].mate != w->first_exit))
+        if (w->failed)
+            return;
+        /* a curve that starts in a singular or tangential cell closes in one
+         * (a tangential curve lies in its tube all along) */
+        if (from_unexamined ? !in_singular_cell(w->c, w->leaf)
+                            : (w->events == 0 || w->entry < 0 ||
+                               w->c->cross[w->entry].mate != w->first_exit))
             refuse_at(w, "closes other than along an arc of a cell", z);
         return;
     }
@@ -606,6 +616,8 @@ ic_status ic_certify_curves(ic_certificate *c, const ic_certify_curve *curves, i
     for (int k = 0; k < ncurves && c->summary.accepted; k++)
         for (int mir = 0; mir < mirrors && c->summary.accepted; mir++) {
             const ic_certify_curve *cv = &curves[k];
+            if (cv->tangential)
+                continue; /* in its tube (tube.c) */
             if (cv->npoints < 2) {
                 ic_certificate_refuse(c, "curve %d has fewer than two points", k);
                 break;

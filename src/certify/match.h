@@ -14,6 +14,9 @@
 typedef struct {
     const double *z;
     int npoints, closed;
+    /* 1: a tangential curve, not walked: it lies in its tube, whose cells
+     * are not examined (tube.c) */
+    int tangential;
 } ic_certify_curve;
 
 /* Holds the curves against the cover c (whose summary must say accepted):
@@ -26,13 +29,16 @@ ic_status ic_certify_curves(ic_certificate *c, const ic_certify_curve *curves, i
  * with a deadline on the monotonic clock (0: none). */
 ic_certify_limits ic_certify_limits_for(long search_cells, double deadline);
 
-/* What a result claims: its curves, and its singular points (xyz), each
- * of which gets a singular box (certificate.h). */
+/* What a result claims: its curves, its singular points (xyz), each of
+ * which gets a singular box, and its tangential curves (xyz), each of which
+ * gets a tube (certificate.h). */
 typedef struct {
     const ic_certify_curve *curves;
     int ncurves;
     const double (*singular)[3];
     int nsingular;
+    const ic_certify_tube *tubes; /* its tangential curves, each in a tube */
+    int ntubes;
 } ic_certify_claim;
 
 /* The cover of pg's region (box: the problem's) grown within lim, and the

@@ -34,11 +34,18 @@ int ic_certify_at(const ic_pairing *pg, const double *z, double F[3], double J[3
 /* 1 when some component of F excludes 0 over X. */
 int ic_certify_excludes(const ic_certify_eval *e, int m);
 
+/* The midpoint of X (per coordinate) and the enclosure at it: 0 where it
+ * has none. */
+int ic_certify_centre(const ic_pairing *pg, const ic_interval *X, double *c,
+                      ic_certify_eval *at);
+
 /* 1 when the mean value form of some combination of F's components
- * excludes 0 over X (exclude.c), `over` the enclosure over X: it proves
- * empty the cells close to where the surfaces touch. */
+ * excludes 0 over X (exclude.c), from `over`, the enclosure over X, and
+ * `at`, the one at X's midpoint c (ic_certify_centre): it proves empty the
+ * cells close to where the surfaces touch. */
 int ic_certify_excludes_centred(const ic_pairing *pg, const ic_interval *X,
-                                const ic_certify_eval *over);
+                                const ic_certify_eval *over, const double *c,
+                                const ic_certify_eval *at);
 
 /* The box of parametric sheet `sheet`'s image over X (two parametric kinds
  * and the mixed one; the implicit pairing's X is the point itself). 0 when

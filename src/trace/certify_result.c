@@ -30,7 +30,7 @@ static double *search_points(const ic_trace_result *r, const ic_pairing *pg,
     size_t at = 0;
     for (int k = 0; k < r->ncurves; k++) {
         const ic_trace_curve *c = &r->curves[k];
-        curves[k] = (ic_certify_curve){z + at * (size_t)dim, c->npoints, c->closed};
+        curves[k] = (ic_certify_curve){z + at * (size_t)dim, c->npoints, c->closed, c->tangential};
         for (int i = 0; i < c->npoints; i++, at++) {
             double p[2][2];
             memcpy(p, c->points[i].params, sizeof p);
@@ -46,6 +46,7 @@ static void summarise(ic_trace_certificate *out, const ic_certify_summary *s)
     out->accepted = s->accepted;
     out->cells = s->cells, out->empty = s->empty, out->outside = s->outside;
     out->diagonal = s->diagonal, out->regular = s->regular, out->singular = s->singular;
+    out->tangential = s->tangential;
     out->refused = s->refused;
     out->crossings = s->crossings, out->arcs = s->arcs;
     out->seconds = s->seconds;
@@ -66,17 +67,25 @@ static int finite_lengths(const ic_trace_result *r)
     return 1;
 }
 
-/* What the cover cannot prove yet, known before it is grown: a tangential
- * curve (the surfaces' normals are parallel all along it, so no cell along
- * it is empty or regular, and it has no singular boxes). *n counts them. A
- * refusal needs no proof: the cover would refuse there at its finest cells,
- * after far more work. */
-static int unprovable(const ic_trace_result *r, int *n)
+/* The tangential curves' points, tubes[] and one block of points (freed by
+ * the caller); *n of them. NULL out of memory. */
+static double *tangential_tubes(const ic_trace_result *r, ic_certify_tube *tubes, int *n)
 {
-    *n = 0;
+    size_t total = 0;
     for (int k = 0; k < r->ncurves; k++)
-        *n += r->curves[k].tangential;
-    return *n > 0;
+        total += r->curves[k].tangential ? (size_t)r->curves[k].npoints : 0;
+    double *xyz = malloc((total + 1) * 3 * sizeof *xyz);
+    size_t at = 0;
+    *n = 0;
+    for (int k = 0; xyz && k < r->ncurves; k++) {
+        const ic_trace_curve *c = &r->curves[k];
+        if (!c->tangential)
+            continue;
+        tubes[(*n)++] = (ic_certify_tube){xyz + 3 * at, c->npoints, c->closed};
+        for (int i = 0; i < c->npoints; i++, at++)
+            memcpy(xyz + 3 * at, c->points[i].xyz, 3 * sizeof *xyz);
+    }
+    return xyz;
 }
 
 /* The singular points' places (freed by the caller): NULL out of memory. */
@@ -100,24 +109,22 @@ ic_status ic_trace_certify(ic_trace_result *r, ic_pair *pair, const ic_trace_opt
         ic_trace_failure(rep, "a curve's length is not a finite number: doubles cannot resolve it");
         return IC_OK;
     }
-    int singular = 0;
-    if (unprovable(r, &singular)) {
-        rep->certificate.checked = 1;
-        snprintf(rep->certificate.reason, sizeof rep->certificate.reason,
-                 "the certificate has no tangential cells yet: %d tangential curves", singular);
-        rep->complete = 0;
-        ic_trace_failure(rep, "not proven by the certificate: %s", rep->certificate.reason);
-        return IC_OK;
-    }
     const ic_pairing *pg = ic_pair_pairing(pair);
     const ic_certify_limits lim = ic_certify_limits_for(rep->cells, r->budget.deadline);
     ic_certify_curve *curves = malloc((size_t)(r->ncurves + 1) * sizeof *curves);
     double *z = curves ? search_points(r, pg, curves) : NULL;
     double(*sing)[3] = singular_points(r);
-    const ic_certify_claim claim = {curves, r->ncurves, (const double(*)[3])sing, r->nspecials};
+    ic_certify_tube *tubes = malloc((size_t)(r->ncurves + 1) * sizeof *tubes);
+    int ntubes = 0;
+    double *txyz = tubes ? tangential_tubes(r, tubes, &ntubes) : NULL;
+    const ic_certify_claim claim = {curves, r->ncurves, (const double(*)[3])sing,
+                                    r->nspecials, tubes, ntubes};
     ic_certify_summary sum;
-    ic_status st = z && sing ? ic_certify_run(pg, opt->box, opt->has_box, &lim, &claim, &sum, err)
-                             : ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");
+    ic_status st = z && sing && txyz
+                       ? ic_certify_run(pg, opt->box, opt->has_box, &lim, &claim, &sum, err)
+                       : ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");
+    free(txyz);
+    free(tubes);
     free(sing);
     free(z);
     free(curves);

@@ -166,6 +166,7 @@ static void write_certificate(json_out *j, const ic_trace_certificate *c)
         long n;
     } counts[] = {{"cells", c->cells},       {"empty", c->empty},         {"outside", c->outside},
                   {"diagonal", c->diagonal}, {"regular", c->regular},     {"singular", c->singular},
+                  {"tangential", c->tangential},
                   {"refused", c->refused},
                   {"crossings", c->crossings}, {"arcs", c->arcs}};
     for (size_t i = 0; i < sizeof counts / sizeof counts[0]; i++)

@@ -59,6 +59,12 @@ run() { # name, command...: the output and the exit status, both recorded
 POINTS_PER_CASE=3
 # cases of a gigabyte in every format or 20 s a run: the json only
 HEAVY="tests/torture/eggcrate-k100.json tests/torture/near-spheres-1e-9.json"
+# cases of 1.5 to 9 s a run (the certificate's tubes along a tangential
+# curve): the json, without the exact paths, and the text only; the other
+# formats are written by the same code for every other case
+MEDIUM="examples/torus-sphere.json examples/torus-plane-tangential.json
+    tests/torture/tangent-sphere-cylinder-box.json tests/torture/tangent-sphere-cylinder-domain.json
+    tests/torture/tangent-cylinder-plane-box.json tests/data/nurbs/problem-torus-sphere-tangential.json"
 
 for f in $(cases); do
     key="$(echo "${f%.json}" | tr '/' '_')"
@@ -68,6 +74,10 @@ for f in $(cases); do
     fi
     run "$key.trace.json" "$ic" trace "$f"
     run "$key.noexact.json" "$ic" trace "$f" --no-exact
+    if [[ " $(echo $MEDIUM) " == *" $f "* ]]; then
+        run "$key.trace.text" "$ic" trace "$f" --format text
+        continue
+    fi
     for fmt in text csv vtk obj; do
         run "$key.trace.$fmt" "$ic" trace "$f" --format "$fmt"
     done

@@ -131,12 +131,20 @@ int ic_pairing_gap_may_degenerate(const ic_pairing *p, const double xyz_a[3],
                                   const double params_a[2][2], const double xyz_b[3],
                                   const double params_b[2][2])
 {
-    double za[4], zb[4], lo[4], hi[4];
+    double za[4], zb[4], lo[4], hi[4], dlo[4], dhi[4];
+    int periodic[4];
+    const double box[3][2] = {{xyz_a[0], xyz_a[0]}, {xyz_a[1], xyz_a[1]}, {xyz_a[2], xyz_a[2]}};
+    if (p->kind->region(p, box, 1, dlo, dhi, periodic, NULL) != IC_OK)
+        return 0;
     p->kind->flatten(p, xyz_a, params_a, za);
     p->kind->flatten(p, xyz_b, params_b, zb);
     /* the march stops short of a pole by a step or so on either side: the
-     * hull grown by its own size each way reaches it */
+     * hull grown by its own size each way reaches it; a periodic parameter
+     * the short way round (not across the whole period) */
     for (int k = 0; k < p->kind->dim; k++) {
+        const double T = periodic[k] ? dhi[k] - dlo[k] : 0.0;
+        if (T > 0.0)
+            zb[k] += T * nearbyint((za[k] - zb[k]) / T);
         const double d = fabs(za[k] - zb[k]);
         lo[k] = fmin(za[k], zb[k]) - d, hi[k] = fmax(za[k], zb[k]) + d;
     }

@@ -42,10 +42,12 @@ static const double CLIP[] = {0.9, 0.99, 0.9999, 0.99999, 0.999999, 0.9999999};
  * remain. First the sphere and the plane as implicit surfaces in the box
  * [-b, b]^2 x [-1/2, 1/2]; then the plane as a parametric patch over the
  * domain [-b, b]^2 against the implicit sphere (the domain's edges cut);
- * then that patch against the sphere's parametric net (two sheets). */
+ * then that patch against the sphere's parametric net (two sheets); then
+ * the sphere's net against the implicit plane in the box (the box cuts the
+ * sheet). */
 static void sweep_clipped_circle(void)
 {
-    tally box = {0}, domain = {0}, sheets = {0};
+    tally box = {0}, domain = {0}, sheets = {0}, net_box = {0};
     for (int i = 0; i < NCLIP; i++) {
         const double b = CLIP[i], arc = PI / 2 - 2 * acos(b);
         char json[1024], name[80];
@@ -77,6 +79,15 @@ static void sweep_clipped_circle(void)
         if (trace_json(&t, name, json) == 0)
             judge(&sheets, &t, name, curves_right(t.res, 4, arc, 0));
         release(&t);
+        snprintf(json, sizeof json,
+                 "{\"surfaces\": [{\"type\": \"sphere\", \"radius\": 1, \"form\": "
+                 "\"parametric\"}, {\"type\": \"implicit\", \"f\": \"z\"}],"
+                 "\"box\": [[%.17g, %.17g], [%.17g, %.17g], [-0.5, 0.5]]}",
+                 -b, b, -b, b);
+        snprintf(name, sizeof name, "circle on the sphere's net in the box b = %.7f", b);
+        if (trace_json(&t, name, json) == 0)
+            judge(&net_box, &t, name, curves_right(t.res, 4, arc, 0));
+        release(&t);
     }
     /* Where the tracer is wrong (two arcs joined across a cap outside the
      * box, the whole circle) the certificate refuses (judge); where it is
@@ -97,6 +108,11 @@ static void sweep_clipped_circle(void)
      * hull must be taken the short way round (pairing.c) */
     CHECK(sheets.missed == 0, "clipped circles on two sheets: %d right answers not proven",
           sheets.missed);
+    /* a sheet across the box: the arcs' ends on it are roots of (F, R_k - b)
+     * isolated in the cells the box cuts (boxcross.c) */
+    CHECK(net_box.right == NCLIP && net_box.missed == 0,
+          "clipped circles on the sphere's net in the box: %d right of %d, %d not proven",
+          net_box.right, NCLIP, net_box.missed);
 }
 
 /* The seam loops' lengths (gen_certificate_truth.py). */
@@ -229,6 +245,41 @@ static void mutations(void)
         CHECK(verdict(&t, cv, 4, 1, why) == 0,
               "a cover with a crossing taken away accepts the trace");
         printf("mutations: dropped, doubled, cut short and a crossing less all refused\n");
+    }
+    free(z);
+    release(&t);
+}
+
+/* Mutations where the box cuts a sheet: the sphere's net against z = 0 in
+ * the box b = 0.99 (four arcs ending on the box, inside cells it cuts). */
+static void box_mutations(void)
+{
+    const char *json = "{\"surfaces\": [{\"type\": \"sphere\", \"radius\": 1, \"form\": "
+                       "\"parametric\"}, {\"type\": \"implicit\", \"f\": \"z\"}],"
+                       "\"box\": [[-0.99, 0.99], [-0.99, 0.99], [-0.5, 0.5]]}";
+    traced t;
+    if (trace_json(&t, "box mutations", json) != 0) {
+        release(&t);
+        return;
+    }
+    const int n = ic_trace_result_num_curves(t.res);
+    ic_certify_curve cv[8];
+    double *z = n == 4 ? search_curves(&t, ic_pair_pairing(t.pair), cv) : NULL;
+    if (REQUIRE(z, "box mutations: %d curves (want 4)", n)) {
+        char why[240];
+        CHECK(verdict(&t, cv, 4, 0, why) == 1, "the true trace is refused: %s", why);
+        CHECK(verdict(&t, cv, 3, 0, why) == 0 && strstr(why, "not traced"),
+              "an arc ending on the box dropped is not refused as untraced: '%s'", why);
+        ic_certify_curve cut[4] = {cv[0], cv[1], cv[2], cv[3]};
+        cut[1].npoints -= 3; /* short of the box by three points */
+        CHECK(verdict(&t, cut, 4, 0, why) == 0 && strstr(why, "ends inside"),
+              "an arc cut short of the box is not refused: '%s'", why);
+        cut[1] = cv[1];
+        cut[1].z += 3 * (size_t)ic_pair_pairing(t.pair)->kind->dim; /* three points late */
+        cut[1].npoints -= 3;
+        CHECK(verdict(&t, cut, 4, 0, why) == 0 && strstr(why, "starts inside"),
+              "an arc starting short of the box is not refused: '%s'", why);
+        printf("box mutations: an arc dropped, cut short at either end: all refused\n");
     }
     free(z);
     release(&t);
@@ -373,6 +424,7 @@ int main(int argc, char **argv)
     sweep_seam_loops(src);
     sweep_tiny_far();
     mutations();
+    box_mutations();
     swapped_arcs();
     diagonal_patches(src);
     return harness_finish("test_certificate");

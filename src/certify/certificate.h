@@ -45,7 +45,8 @@ typedef struct {
     int axis;        /* split: the coordinate split; regular: the monotone one */
     double at;       /* split: where */
     int child[2];    /* split: the two halves (z[axis] < at, and the rest) */
-    int first, ncross; /* regular: its crossings */
+    int first, ncross; /* regular: its face crossings */
+    int nbox;          /* regular: its box crossings, after the face crossings */
 } ic_cell;
 
 /* A crossing of a regular cell's face z[face] = (side ? hi : lo): the one
@@ -53,8 +54,13 @@ typedef struct {
 typedef struct {
     int cell, face, side;
     ic_interval X[4], K[4];
-    int mate;   /* the other crossing of its arc in the cell */
+    int mate;   /* the other crossing of its arc in the cell; a box crossing:
+                 * its arc's (the lower index of the arc's two crossings) */
     int events; /* how many traced passages met it (match.c) */
+    int box;    /* -1 a crossing of the face; else 2 k + side: the root of F
+                 * and R_k = box[k][side] inside the cell (boxcross.c), an
+                 * end of a curve on the box */
+    int outside; /* a face crossing outside the box: no curve meets it */
 } ic_crossing;
 
 /* A tangential curve the result reports: n points (xyz), closed or not. */
@@ -174,6 +180,12 @@ ic_status ic_certify_cover(ic_certificate *c, const ic_certify_limits *lim, ic_e
 /* One leaf (leaf.c): labels cell i and isolates its crossings; 1 decided,
  * 0 undecided (split it), -1 out of memory. */
 int ic_certify_leaf(ic_certificate *c, long i, const ic_certify_limits *lim);
+
+/* A regular cell whose image straddles the box (boxcross.c): the roots of
+ * F with R_k = box[k][side] inside it isolated for every face of the box
+ * its image meets, each put on its arc, and its face crossings outside the
+ * box marked. 1 done, 0 undecided (split it), -1 out of memory. */
+int ic_certify_box_crossings(ic_certificate *c, long cell, int max_boxes);
 
 /* The roots of F on face z[j] = v of the box lo..hi (face.c), appended as
  * crossings of cell `cell`: 1 when the whole face was decided, 0 when

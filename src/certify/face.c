@@ -75,7 +75,7 @@ static int add_root(ic_certificate *c, long cell, int j, int side, const ic_inte
 {
     ic_crossing x;
     memset(&x, 0, sizeof x);
-    x.cell = (int)cell, x.face = j, x.side = side, x.mate = -1;
+    x.cell = (int)cell, x.face = j, x.side = side, x.mate = -1, x.box = -1;
     memcpy(x.X, X, sizeof x.X);
     memcpy(x.K, K, sizeof x.K);
     return ic_certificate_add_crossing(c, &x) < 0 ? -1 : 1;

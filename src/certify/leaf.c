@@ -197,14 +197,14 @@ int ic_certify_leaf(ic_certificate *c, long i, const ic_certify_limits *lim)
         cl->kind = IC_CELL_EMPTY;
         return 1;
     }
+    int across = 0; /* the image straddles the box */
     if (c->has_box && c->dim != 3) {
         const int side = against_box(c, X);
         if (side == 1) {
             cl->kind = IC_CELL_OUTSIDE;
             return 1;
         }
-        if (side < 0)
-            return 0;
+        across = side < 0;
     }
     double shift[2];
     if (c->pg->kind == &ic_pairing_self && near_diagonal(c, X, shift)) {
@@ -213,5 +213,14 @@ int ic_certify_leaf(ic_certificate *c, long i, const ic_certify_limits *lim)
         cl->kind = IC_CELL_DIAGONAL;
         return 1;
     }
-    return regular(c, i, &e, centred ? &at : NULL, lim);
+    const long first = c->ncross;
+    int rc = regular(c, i, &e, centred ? &at : NULL, lim);
+    if (rc == 1 && across) { /* the box cuts the arcs: their ends on it */
+        rc = ic_certify_box_crossings(c, i, lim->face_boxes);
+        if (rc != 1) {
+            c->ncross = first;
+            c->cells[i].kind = IC_CELL_REFUSED;
+        }
+    }
+    return rc;
 }

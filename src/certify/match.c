@@ -26,6 +26,9 @@
 /* A curve end on the region's boundary: within this fraction of the
  * region's width of it. */
 #define IC_CERTIFY_END_REACH 1e-6
+/* A curve end on the box: within this fraction of the box's width of its
+ * face (the tracer sets the coordinate to the bound). */
+#define IC_CERTIFY_BOX_REACH 1e-9
 /* A projected point belongs to a crossing's face box grown by this fraction
  * of the region's width (rounding only: the box holds the root strictly). */
 #define IC_CERTIFY_MATCH_SLACK 1e-12
@@ -145,15 +148,25 @@ static void refuse_at(walker *w, const char *what, const double *z)
     w->failed = 1;
 }
 
+/* The arc a crossing lies on: the lower index of the arc's two face
+ * crossings (a box crossing keeps it as its mate). */
+static long arc_of(const ic_certificate *c, long x)
+{
+    const ic_crossing *r = &c->cross[x];
+    return r->box >= 0 ? r->mate : (x < r->mate ? x : r->mate);
+}
+
 /* The walk leaves its cell by crossing x: the passage in from w->entry must
- * be one of the cell's arcs. */
+ * be one of the cell's arcs (from its other end, or from a box crossing on
+ * it). */
 static void leave_by(walker *w, long x, const double *q)
 {
     w->c->cross[x].events++;
     w->events++;
+    const ic_crossing *in = w->entry >= 0 ? &w->c->cross[w->entry] : NULL;
     if (w->entry < 0 && w->first_exit == -2)
         w->first_exit = x;
-    else if (w->entry < 0 || w->c->cross[w->entry].mate != x)
+    else if (!in || (in->box < 0 ? in->mate != x : in->mate != arc_of(w->c, x)))
         refuse_at(w, "passes through a cell other than along one of its arcs", q);
 }
 
@@ -439,13 +452,46 @@ static long end_crossing(walker *w, const double *z, long *leaf)
     return -1;
 }
 
+/* An open curve's end z on the box in a cell the box cuts: on the box's
+ * face (within IC_CERTIFY_BOX_REACH of its width: the tracer lands on it
+ * to rounding), in the box of one of the cell's box crossings there: that
+ * crossing, or -1. */
+static long box_end(const ic_certificate *c, long L, const double *z)
+{
+    if (L < 0 || c->cells[L].kind != IC_CELL_REGULAR)
+        return -1;
+    const ic_cell *cl = &c->cells[L];
+    double zw[4];
+    ic_certificate_wrap(c, z, zw);
+    ic_interval Z[4], xyz[3];
+    for (int k = 0; k < c->dim; k++)
+        Z[k] = (ic_interval){zw[k], zw[k]};
+    if (!ic_certify_image(c->pg, Z, xyz))
+        return -1;
+    for (long x = cl->first + cl->ncross; x < cl->first + cl->ncross + cl->nbox; x++) {
+        const int face = c->cross[x].box / 2, side = c->cross[x].box % 2;
+        const double reach = IC_CERTIFY_BOX_REACH * (c->box[face][1] - c->box[face][0]);
+        const double at = 0.5 * xyz[face].lo + 0.5 * xyz[face].hi;
+        int in = fabs(at - c->box[face][side]) <= reach;
+        for (int k = 0; in && k < c->dim; k++) {
+            const double slack = IC_CERTIFY_MATCH_SLACK * width(c, k);
+            in = zw[k] >= c->cross[x].X[k].lo - slack && zw[k] <= c->cross[x].X[k].hi + slack;
+        }
+        if (in)
+            return x;
+    }
+    return -1;
+}
+
 /* Walks curve k (its points z, continuous across seams). */
 static void walk_curve(walker *w, const double *z, int n, int closed)
 {
     const int dim = w->c->dim;
     w->entry = -1, w->first_exit = closed ? -2 : -1, w->events = 0;
     if (!closed) {
-        const long x = end_crossing(w, z, &w->leaf);
+        long x = end_crossing(w, z, &w->leaf);
+        if (x < 0)
+            x = box_end(w->c, w->leaf, z);
         if (x < 0 && !in_singular_cell(w->c, w->leaf)) {
             refuse_at(w, "starts inside the region, not at a crossing of its boundary nor "
                          "by a singular point",
@@ -492,6 +538,14 @@ static void walk_curve(walker *w, const double *z, int n, int closed)
     const long x = end_crossing(w, end, &leaf);
     if (x < 0 && in_singular_cell(w->c, w->leaf))
         return; /* a branch ends at a singular point */
+    const long e = x < 0 ? box_end(w->c, w->leaf, end) : -1;
+    if (e >= 0) { /* on the box: the passage in must be along e's arc */
+        const ic_crossing *in = w->entry >= 0 ? &w->c->cross[w->entry] : NULL;
+        w->c->cross[e].events++;
+        if (!in || e == w->entry || arc_of(w->c, w->entry) != w->c->cross[e].mate)
+            refuse_at(w, "ends on the box other than along an arc of its cell", end);
+        return;
+    }
     if (x < 0 || leaf != w->leaf) {
         refuse_at(w, "ends inside the region, not at a crossing of its boundary nor by a "
                      "singular point",
@@ -637,6 +691,8 @@ ic_status ic_certify_curves(ic_certificate *c, const ic_certify_curve *curves, i
         for (int k = 0; k < c->dim; k++)
             q[k] = 0.5 * r->K[k].lo + 0.5 * r->K[k].hi;
         format_point(c, q, where, sizeof where);
+        if (r->outside)
+            continue; /* a face crossing outside the box: no curve meets it */
         if (r->events != 1)
             ic_certificate_refuse(c, "the arc of cell %d through %s is %s", r->cell, where,
                                   r->events == 0 ? "not traced" : "traced more than once");

@@ -104,3 +104,22 @@ int ic_certify_image(const ic_pairing *pg, const ic_interval *X, ic_interval xyz
         return 0;
     return finite(xyz[0]) && finite(xyz[1]) && finite(xyz[2]);
 }
+
+int ic_certify_image_grad(const ic_pairing *pg, const ic_interval *X, int k, ic_interval *v,
+                          ic_interval g[4])
+{
+    const int dim = pg->kind->dim;
+    if (dim == 3) {
+        *v = X[k];
+        for (int j = 0; j < 3; j++)
+            g[j] = (ic_interval){j == k, j == k};
+        return 1;
+    }
+    ic_interval_grad R[3];
+    if (ic_surface_eval_interval_grad(pg->S[dim == 2 ? pg->P : 0], R, X, NULL) != IC_OK)
+        return 0;
+    *v = R[k].v;
+    for (int j = 0; j < dim; j++)
+        g[j] = j < 2 ? R[k].d[j] : (ic_interval){0.0, 0.0};
+    return finite(*v) && finite(g[0]) && finite(g[1]);
+}

@@ -47,6 +47,12 @@ int ic_certify_excludes_centred(const ic_pairing *pg, const ic_interval *X,
                                 const ic_certify_eval *over, const double *c,
                                 const ic_certify_eval *at);
 
+/* Coordinate k of the image point (the parametric sheet's, A's for two
+ * sheets) over X, and its gradient over the search coordinates: 0 when it
+ * has no enclosure. */
+int ic_certify_image_grad(const ic_pairing *pg, const ic_interval *X, int k, ic_interval *v,
+                          ic_interval g[4]);
+
 /* The box of parametric sheet `sheet`'s image over X (two parametric kinds
  * and the mixed one; the implicit pairing's X is the point itself). 0 when
  * it has no enclosure. */

@@ -1,7 +1,7 @@
 /*
  * The certificate beside tangential curves (issue 23, docs/tracing.md "The
  * certificate"): a tangential curve the result reports gets a tube of
- * radius 2e-4 of the region's size; the cover proves everything outside
+ * radius 5e-4 of the region's size; the cover proves everything outside
  * the tubes, and the tubes must neither come back on themselves nor meet.
  * Sweep (every case right and complete, or honestly incomplete; never
  * complete and wrong): a cylinder of radius R resting on the plane z = 0

@@ -182,7 +182,7 @@ typedef struct {
      *  1e-5 of the region's size): not examined (docs/tracing.md) */
     long singular;
     /** leaves in the tube about a tangential curve the result reports (radius
-     *  1e-4 of the region's size): not examined (docs/tracing.md) */
+     *  5e-4 of the region's size): not examined (docs/tracing.md) */
     long tangential;
     long crossings; /**< crossings of the regular cells' faces, each root-isolated */
     long arcs;      /**< arcs of the regular cells (half the crossings) */

@@ -133,7 +133,7 @@ int ic_certificate_set_singular(ic_certificate *c, const double (*xyz)[3], int n
 int ic_certificate_in_singular_box(const ic_certificate *c, long i);
 
 /* The tubes' radius: of the region's image diagonal (a fraction). */
-#define IC_CERTIFY_TUBE_HALF 2e-4
+#define IC_CERTIFY_TUBE_HALF 5e-4
 
 /* The result's tangential curves (kept by reference: they must outlive
  * c): 0 out of memory or when the region's image cannot be enclosed. */

@@ -89,14 +89,6 @@ static int grow_leaf(ic_certificate *c, long i, int depth, const ic_certify_limi
             count(c, c->cells[i].kind);
         return rc;
     }
-    const ic_cell_kind unexamined = ic_certificate_in_singular_box(c, i) ? IC_CELL_SINGULAR
-                                    : ic_certificate_in_tube(c, i)         ? IC_CELL_TANGENTIAL
-                                                                           : IC_CELL_REFUSED;
-    if (unexamined != IC_CELL_REFUSED) {
-        c->cells[i].kind = unexamined;
-        count(c, unexamined);
-        return 1;
-    }
     double rel;
     const int k = widest(c, i, &rel);
     const ic_cell *cl = &c->cells[i];

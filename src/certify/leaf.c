@@ -213,6 +213,12 @@ int ic_certify_leaf(ic_certificate *c, long i, const ic_certify_limits *lim)
         cl->kind = IC_CELL_DIAGONAL;
         return 1;
     }
+    /* in a singular box or a tube nothing more is examined: not even
+     * whether the cell is regular (its faces would be isolated in vain) */
+    if (ic_certificate_in_singular_box(c, i) || ic_certificate_in_tube(c, i)) {
+        cl->kind = ic_certificate_in_singular_box(c, i) ? IC_CELL_SINGULAR : IC_CELL_TANGENTIAL;
+        return 1;
+    }
     const long first = c->ncross;
     int rc = regular(c, i, &e, centred ? &at : NULL, lim);
     if (rc == 1 && across) { /* the box cuts the arcs: their ends on it */

@@ -24,6 +24,7 @@ static inline ic_status trace_pair_with(traced_pair *t, double half, int exact, 
     ic_trace_options opt;
     ic_trace_defaults(&opt);
     opt.exact_paths = exact;
+    opt.certify = 0; /* the paths compared, not the proof: tracer_complete */
     opt.has_box = 1;
     for (int k = 0; k < 3; k++)
         opt.box[k][0] = -half, opt.box[k][1] = half;

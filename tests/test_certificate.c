@@ -417,6 +417,45 @@ static void diagonal_patches(const char *src)
     ic_problem_free(pb);
 }
 
+/* certify = 0: the checker is not run and complete is never 1; the tracer's
+ * account stays in tracer_complete, the reason in the failures. */
+static void certify_off(void)
+{
+    const char *json = "{\"surfaces\": [{\"type\": \"implicit\", \"f\": \"x^2+y^2+z^2-1\"},"
+                       "{\"type\": \"implicit\", \"f\": \"z\"}],"
+                       "\"box\": [[-2, 2], [-2, 2], [-2, 2]]}";
+    ic_problem *pb = NULL;
+    ic_pair *pair = NULL;
+    ic_trace_result *r = NULL;
+    ic_error err;
+    ic_trace_options opt;
+    ic_trace_defaults(&opt);
+    opt.certify = 0;
+    ic_status st = ic_problem_parse(&pb, json, strlen(json), &err);
+    if (st == IC_OK) {
+        opt.has_box = ic_problem_box(pb, opt.box);
+        st = ic_pair_new(&pair, ic_problem_surface(pb, 0), ic_problem_surface(pb, 1), &err);
+    }
+    if (st == IC_OK)
+        st = ic_trace(&r, pair, &opt, &err);
+    if (REQUIRE(st == IC_OK, "certify off: %s", err.message)) {
+        const ic_trace_report *rep = ic_trace_result_report(r);
+        CHECK(!rep->complete && rep->tracer_complete && !rep->certificate.checked &&
+                  rep->nfailures == 1 && strstr(rep->failures[0], "certify = 0"),
+              "certify off: complete %d, tracer_complete %d, checked %d, %d failures",
+              rep->complete, rep->tracer_complete, rep->certificate.checked, rep->nfailures);
+    }
+    opt.certify = 2;
+    ic_trace_result *bad = NULL;
+    CHECK(pair && ic_trace(&bad, pair, &opt, &err) == IC_ERR_INVALID &&
+              strstr(err.message, "certify"),
+          "certify = 2 is not refused");
+    ic_trace_result_free(bad);
+    ic_trace_result_free(r);
+    ic_pair_free(pair);
+    ic_problem_free(pb);
+}
+
 int main(int argc, char **argv)
 {
     const char *src = argc > 1 ? argv[1] : ".";
@@ -427,5 +466,6 @@ int main(int argc, char **argv)
     box_mutations();
     swapped_arcs();
     diagonal_patches(src);
+    certify_off();
     return harness_finish("test_certificate");
 }

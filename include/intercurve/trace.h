@@ -69,6 +69,12 @@ typedef struct {
      *  result is the same, byte for byte, whatever the number (docs/tracing.md,
      *  "Threads"); callback surfaces are always traced in one thread */
     int threads;
+    /** 1: the independent checker proves the result when the tracer finds it
+     *  complete, and complete is its verdict (default, docs/tracing.md, "The
+     *  certificate"); 0: the checker is not run, complete is always 0 (the
+     *  tracer's own account is in tracer_complete): for callers who need the
+     *  curves only, and fast */
+    int certify;
 } ic_trace_options;
 
 IC_API void ic_trace_defaults(ic_trace_options *opt);

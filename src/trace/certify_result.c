@@ -104,6 +104,11 @@ ic_status ic_trace_certify(ic_trace_result *r, ic_pair *pair, const ic_trace_opt
     rep->tracer_complete = rep->complete;
     if (!rep->complete)
         return IC_OK;
+    if (!opt->certify) {
+        rep->complete = 0;
+        ic_trace_failure(rep, "not proven: the certificate was switched off (certify = 0)");
+        return IC_OK;
+    }
     if (!finite_lengths(r)) {
         rep->complete = 0;
         ic_trace_failure(rep, "a curve's length is not a finite number: doubles cannot resolve it");

@@ -27,6 +27,7 @@ void ic_trace_defaults(ic_trace_options *opt)
     opt->shape_tol = IC_TRACE_SHAPE_TOL_DEFAULT;
     opt->exact_paths = 1;
     opt->threads = IC_TRACE_THREADS_DEFAULT; /* all the cores */
+    opt->certify = 1;
     ic_local_defaults(&opt->local);
 }
 
@@ -59,6 +60,9 @@ ic_status ic_trace_check_options(const ic_trace_options *o, ic_error *err)
             return ic_error_set(err, IC_ERR_INVALID, 0,
                                 "trace: tol, chord, max_step and min_step must be positive and "
                                 "finite");
+    if (o->certify != 0 && o->certify != 1)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "trace: certify %d is not 0 or 1",
+                            o->certify);
     if (o->threads < 0 || o->threads > IC_TRACE_MAX_THREADS)
         return ic_error_set(err, IC_ERR_INVALID, 0, "trace: threads %d is not in 0..%d",
                             o->threads, IC_TRACE_MAX_THREADS);

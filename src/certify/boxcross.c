@@ -137,35 +137,17 @@ static int on_arcs(ic_certificate *c, long first, long nface, long from, int axi
     return 1;
 }
 
-/* 1: the image of K lies inside the box, 0: outside it, -1: across it. */
-static int in_box(const ic_certificate *c, const ic_interval *K)
-{
-    ic_interval xyz[3];
-    if (!ic_certify_image(c->pg, K, xyz))
-        return -1;
-    int inside = 1;
-    for (int k = 0; k < 3; k++) {
-        if (xyz[k].hi < c->box[k][0] || xyz[k].lo > c->box[k][1])
-            return 0;
-        if (xyz[k].lo < c->box[k][0] || xyz[k].hi > c->box[k][1])
-            inside = 0;
-    }
-    return inside ? 1 : -1;
-}
-
 int ic_certify_box_crossings(ic_certificate *c, long i, int max_boxes)
 {
-    ic_interval X[4], img[3];
-    for (int j = 0; j < c->dim; j++)
-        X[j] = (ic_interval){c->cells[i].lo[j], c->cells[i].hi[j]};
-    if (!ic_certify_image(c->pg, X, img))
+    ic_interval img[3];
+    if (!ic_certificate_cell_image(c, i, img))
         return 0;
     const long first = c->cells[i].first, nface = c->cells[i].ncross, from = c->ncross;
     for (long x = first; x < first + nface; x++) {
-        const int where = in_box(c, c->cross[x].K);
+        const int where = ic_certificate_against_box(c, c->cross[x].K);
         if (where < 0)
-            return 0;
-        c->cross[x].outside = where == 0;
+            return 0; /* across a face of the box: not decided */
+        c->cross[x].outside = where == 1;
     }
     for (int k = 0; k < 3; k++)
         for (int side = 0; side < 2; side++) {

@@ -93,14 +93,33 @@ int ic_certificate_tube_size(ic_certificate *c)
     return d > 0.0;
 }
 
-int ic_certificate_in_singular_box(const ic_certificate *c, long i)
+int ic_certificate_cell_image(const ic_certificate *c, long i, ic_interval img[3])
 {
-    if (c->nsingular == 0)
-        return 0;
-    ic_interval X[4], img[3];
+    ic_interval X[4];
     for (int k = 0; k < c->dim; k++)
         X[k] = (ic_interval){c->cells[i].lo[k], c->cells[i].hi[k]};
-    if (!ic_certify_image(c->pg, X, img))
+    return ic_certify_image(c->pg, X, img);
+}
+
+int ic_certificate_against_box(const ic_certificate *c, const ic_interval *X)
+{
+    ic_interval xyz[3];
+    if (!ic_certify_image(c->pg, X, xyz))
+        return -1;
+    int inside = 1;
+    for (int k = 0; k < 3; k++) {
+        if (xyz[k].hi < c->box[k][0] || xyz[k].lo > c->box[k][1])
+            return 1;
+        if (xyz[k].lo < c->box[k][0] || xyz[k].hi > c->box[k][1])
+            inside = 0;
+    }
+    return inside ? 0 : -1;
+}
+
+int ic_certificate_in_singular_box(const ic_certificate *c, long i)
+{
+    ic_interval img[3];
+    if (c->nsingular == 0 || !ic_certificate_cell_image(c, i, img))
         return 0;
     const double h = c->singular_half;
     for (int s = 0; s < c->nsingular; s++) {

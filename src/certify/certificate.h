@@ -129,6 +129,13 @@ void ic_certificate_free(ic_certificate *c);
  * 0 when the region's image cannot be enclosed (then no box is given). */
 int ic_certificate_set_singular(ic_certificate *c, const double (*xyz)[3], int n);
 
+/* The image of cell i (ic_certify_image): 0 when it has no enclosure. */
+int ic_certificate_cell_image(const ic_certificate *c, long i, ic_interval img[3]);
+
+/* Where the image over X lies against the problem's box: 1 it misses the
+ * box, 0 it lies inside, -1 it straddles a face or cannot be enclosed. */
+int ic_certificate_against_box(const ic_certificate *c, const ic_interval *X);
+
 /* 1 when cell i's image lies within the box of a singular point. */
 int ic_certificate_in_singular_box(const ic_certificate *c, long i);
 

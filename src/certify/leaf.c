@@ -25,23 +25,6 @@ static void cell_box(const ic_cell *cl, int dim, ic_interval *X)
         X[k] = (ic_interval){cl->lo[k], cl->hi[k]};
 }
 
-/* 1: the sheet's image over X misses the box; 0: it lies inside; -1:
- * straddles it or cannot be enclosed. */
-static int against_box(const ic_certificate *c, const ic_interval *X)
-{
-    ic_interval xyz[3];
-    if (!ic_certify_image(c->pg, X, xyz))
-        return -1;
-    int inside = 1;
-    for (int k = 0; k < 3; k++) {
-        if (xyz[k].hi < c->box[k][0] || xyz[k].lo > c->box[k][1])
-            return 1;
-        if (xyz[k].lo < c->box[k][0] || xyz[k].hi > c->box[k][1])
-            inside = 0;
-    }
-    return inside ? 0 : -1;
-}
-
 /* The (u, v) and (p, q) boxes of a self-intersection cell overlap, once a
  * periodic parameter is shifted by `shift` periods: *shift receives it. */
 static int near_diagonal(const ic_certificate *c, const ic_interval *X, double shift[2])
@@ -199,7 +182,7 @@ int ic_certify_leaf(ic_certificate *c, long i, const ic_certify_limits *lim)
     }
     int across = 0; /* the image straddles the box */
     if (c->has_box && c->dim != 3) {
-        const int side = against_box(c, X);
+        const int side = ic_certificate_against_box(c, X);
         if (side == 1) {
             cl->kind = IC_CELL_OUTSIDE;
             return 1;

@@ -83,12 +83,8 @@ int ic_certificate_set_tubes(ic_certificate *c, const ic_certify_tube *tubes, in
 
 int ic_certificate_in_tube(const ic_certificate *c, long i)
 {
-    if (c->ntubes == 0)
-        return 0;
-    ic_interval X[4], img[3];
-    for (int k = 0; k < c->dim; k++)
-        X[k] = (ic_interval){c->cells[i].lo[k], c->cells[i].hi[k]};
-    if (!ic_certify_image(c->pg, X, img))
+    ic_interval img[3];
+    if (c->ntubes == 0 || !ic_certificate_cell_image(c, i, img))
         return 0;
     double mid[3], rho = 0.0;
     for (int k = 0; k < 3; k++) {

@@ -120,7 +120,9 @@ static inline int verdict_of(const traced *t, const ic_certify_claim *claim, int
     if (!REQUIRE(c, "certificate: %s", err.message))
         return -1;
     const ic_certify_limits lim = {200000, 1e-6, 256, 0};
-    int ok = ic_certificate_set_singular(c, claim->singular, claim->nsingular) &&
+    int ok = ic_certificate_set_singular(c, claim->singular, claim->singular_scale,
+                                         claim->nsingular) > 0 &&
+             ic_certificate_add_corner_ends(c, claim->curves, claim->ncurves) > 0 &&
              ic_certify_cover(c, &lim, &err) == IC_OK && c->summary.accepted;
     for (long i = 0; ok && drop_crossing && i < c->ncells; i++) {
         ic_cell *cl = &c->cells[i];

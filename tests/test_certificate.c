@@ -212,7 +212,7 @@ static void sweep_tiny_far(void)
 static int verdict(const traced *t, const ic_certify_curve *cv, int n, int drop_crossing,
                    char *reason)
 {
-    const ic_certify_claim claim = {cv, n, NULL, 0, NULL, 0};
+    const ic_certify_claim claim = {.curves = cv, .ncurves = n};
     return verdict_of(t, &claim, drop_crossing, reason);
 }
 

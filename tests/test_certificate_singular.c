@@ -257,7 +257,8 @@ static void mutations(void)
         for (int k = 0; k < ns; k++)
             memcpy(sing[k], ic_trace_result_special(r, k)->xyz, sizeof sing[k]);
         char why[240];
-        ic_certify_claim claim = {cv, n, (const double(*)[3])sing, ns, NULL, 0};
+        ic_certify_claim claim = {
+            .curves = cv, .ncurves = n, .singular = (const double(*)[3])sing, .nsingular = ns};
         CHECK(verdict_of(&t, &claim, 0, why) == 1, "the true trace is refused: %s", why);
         claim.ncurves = n - 1;
         CHECK(verdict_of(&t, &claim, 0, why) == 0 && strstr(why, "not traced"),

@@ -89,7 +89,7 @@ static void mutations(void)
     if (REQUIRE(z && ic_trace_result_report(r)->complete, "tangential mutations: not proven")) {
         const int n = cv[0].npoints;
         ic_certify_tube tube[2] = {{z, n, 0}, {z, n, 0}};
-        ic_certify_claim claim = {cv, 1, NULL, 0, tube, 1};
+        ic_certify_claim claim = {.curves = cv, .ncurves = 1, .tubes = tube, .ntubes = 1};
         char why[240];
         CHECK(verdict_of(&t, &claim, 0, why) == 1, "the true trace is refused: %s", why);
         claim.ncurves = 0, claim.ntubes = 0;

@@ -192,6 +192,10 @@ typedef struct {
     long tangential;
     long crossings; /**< crossings of the regular cells' faces, each root-isolated */
     long arcs;      /**< arcs of the regular cells (half the crossings) */
+    /** singular boxes the checker placed itself: at the sheets' poles (domain
+     *  edges whose image is one point), and where a curve meets the
+     *  boundary at a corner or touches it (docs/tracing.md) */
+    int poles, corners;
     double seconds; /**< the checker's wall time */
     char reason[240]; /**< why it refused ("" when accepted or not run) */
 } ic_trace_certificate;

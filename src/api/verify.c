@@ -8,6 +8,7 @@
 #include "api/api.h"
 #include "certify/match.h"
 #include "local/pair_access.h"
+#include "trace/certify_result.h"
 
 #include <cjson/cJSON.h>
 #include <stdlib.h>
@@ -88,23 +89,37 @@ static ic_status read_curves(const cJSON *doc, const ic_pairing *pg, const char 
     return IC_OK;
 }
 
-/* The document's singular points (points[].xyz): *p, the caller's to
- * free, and their number. */
-static ic_status read_singular(const cJSON *doc, const char *name, double (**p)[3], int *n,
-                               ic_error *err)
+/* A point's box size by its type, as the tracer's result gives it
+ * (certify_result.c): cusps, tacnodes and higher-order contacts wider. */
+static double box_scale(const cJSON *q)
+{
+    const cJSON *t = cJSON_GetObjectItemCaseSensitive(q, "type");
+    const int wide = cJSON_IsString(t) && (strcmp(t->valuestring, "cusp") == 0 ||
+                                           strcmp(t->valuestring, "tacnode") == 0 ||
+                                           strcmp(t->valuestring, "higher-order-contact") == 0);
+    return wide ? IC_CERTIFY_CONTACT_SCALE : 1.0;
+}
+
+/* The document's singular points (points[].xyz): *p and their boxes'
+ * sizes *scale, the caller's to free, and their number. */
+static ic_status read_singular(const cJSON *doc, const char *name, double (**p)[3],
+                               double **scale, int *n, ic_error *err)
 {
     const cJSON *ps = cJSON_GetObjectItemCaseSensitive(doc, "points");
     if (ps && !cJSON_IsArray(ps))
         return ic_error_set(err, IC_ERR_INVALID, 0, "%s: points: not an array", name);
     *n = ps ? cJSON_GetArraySize(ps) : 0;
     *p = malloc((size_t)(*n + 1) * sizeof **p);
-    if (!*p)
+    *scale = malloc((size_t)(*n + 1) * sizeof **scale);
+    if (!*p || !*scale)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory reading %s", name);
     int k = 0;
-    for (const cJSON *q = ps ? ps->child : NULL; q; q = q->next, k++)
+    for (const cJSON *q = ps ? ps->child : NULL; q; q = q->next, k++) {
         if (!numbers(cJSON_GetObjectItemCaseSensitive(q, "xyz"), (*p)[k], 3))
             return ic_error_set(err, IC_ERR_INVALID, 0, "%s: points[%d].xyz: must be 3 numbers",
                                 name, k);
+        (*scale)[k] = box_scale(q);
+    }
     return IC_OK;
 }
 
@@ -148,6 +163,7 @@ ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const c
     ic_certify_curve *curves = NULL;
     double *z = NULL;
     double(*sing)[3] = NULL;
+    double *scale = NULL;
     ic_certify_tube *tubes = NULL;
     double *txyz = NULL;
     int n = 0, nsing = 0, ntubes = 0;
@@ -155,7 +171,7 @@ ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const c
     if (st == IC_OK)
         st = read_curves(doc, ic_pair_pairing(pair), name, &curves, &n, &z, err);
     if (st == IC_OK)
-        st = read_singular(doc, name, &sing, &nsing, err);
+        st = read_singular(doc, name, &sing, &scale, &nsing, err);
     if (st == IC_OK)
         st = read_tubes(doc, name, &tubes, &ntubes, &txyz, err);
     if (st == IC_OK) {
@@ -166,20 +182,21 @@ ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const c
         const ic_certify_limits lim =
             ic_certify_limits_for(cJSON_IsNumber(cells) ? (long)cells->valuedouble : 0, 0);
         ic_certify_summary s;
-        const ic_certify_claim claim = {curves, n, (const double(*)[3])sing, nsing, tubes, ntubes};
+        const ic_certify_claim claim = {.curves = curves,
+                                        .ncurves = n,
+                                        .singular = (const double(*)[3])sing,
+                                        .singular_scale = scale,
+                                        .nsingular = nsing,
+                                        .tubes = tubes,
+                                        .ntubes = ntubes};
         st = ic_certify_run(ic_pair_pairing(pair), box, has_box, &lim, &claim, &s, err);
-        out->checked = 1;
+        ic_trace_certificate_from(out, &s);
         out->accepted = st == IC_OK && s.accepted;
-        out->cells = s.cells, out->empty = s.empty, out->outside = s.outside;
-        out->diagonal = s.diagonal, out->regular = s.regular, out->singular = s.singular;
-        out->tangential = s.tangential;
-        out->refused = s.refused;
-        out->crossings = s.crossings, out->arcs = s.arcs, out->seconds = s.seconds;
-        memcpy(out->reason, s.reason, sizeof out->reason);
     }
     free(curves);
     free(z);
     free(sing);
+    free(scale);
     free(tubes);
     free(txyz);
     ic_pair_free(pair);

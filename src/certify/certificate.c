@@ -41,6 +41,8 @@ void ic_certificate_free(ic_certificate *c)
     free(c->cross);
     free(c->face_stack);
     free(c->chunk_box);
+    free(c->singular);
+    free(c->singular_scale);
     free(c);
 }
 
@@ -73,16 +75,29 @@ static double region_size(const ic_certificate *c)
     return d > 0.0 && isfinite(d) ? d : 0.0;
 }
 
-int ic_certificate_set_singular(ic_certificate *c, const double (*xyz)[3], int n)
+int ic_certificate_set_singular(ic_certificate *c, const double (*xyz)[3], const double *scale,
+                                int n)
 {
-    c->singular = xyz, c->nsingular = 0, c->singular_half = 0.0;
-    if (n == 0)
-        return 1;
+    c->nsingular = 0, c->npoles = 0;
     const double d = region_size(c);
-    if (d == 0.0)
-        return 0;
-    c->nsingular = n;
     c->singular_half = IC_CERTIFY_SINGULAR_HALF * d;
+    if (d == 0.0)
+        return n == 0;
+    ic_certificate_find_poles(c);
+    free(c->singular), free(c->singular_scale);
+    const size_t room = (size_t)n + (size_t)c->npoles + 1;
+    c->singular = malloc(room * sizeof *c->singular);
+    c->singular_scale = malloc(room * sizeof *c->singular_scale);
+    if (!c->singular || !c->singular_scale)
+        return -1;
+    if (n > 0)
+        memcpy(c->singular, xyz, (size_t)n * sizeof *c->singular);
+    for (int p = 0; p < c->npoles; p++)
+        memcpy(c->singular[n + p], c->poles[p].xyz, sizeof c->singular[0]);
+    for (int p = 0; p < n + c->npoles; p++)
+        c->singular_scale[p] = scale && p < n ? scale[p] : 1.0;
+    c->summary.poles = c->npoles;
+    c->nsingular = n + c->npoles;
     return 1;
 }
 
@@ -116,14 +131,11 @@ int ic_certificate_against_box(const ic_certificate *c, const ic_interval *X)
     return inside ? 0 : -1;
 }
 
-int ic_certificate_in_singular_box(const ic_certificate *c, long i)
+/* 1 when img lies within the box of a singular point. */
+static int image_in_singular_box(const ic_certificate *c, const ic_interval img[3])
 {
-    ic_interval img[3];
-    if (c->nsingular == 0 || !ic_certificate_cell_image(c, i, img))
-        return 0;
-    const double h = c->singular_half;
     for (int s = 0; s < c->nsingular; s++) {
-        const double *p = c->singular[s];
+        const double *p = c->singular[s], h = c->singular_half * c->singular_scale[s];
         int in = 1;
         for (int k = 0; k < 3 && in; k++)
             in = img[k].lo >= p[k] - h && img[k].hi <= p[k] + h;
@@ -131,6 +143,23 @@ int ic_certificate_in_singular_box(const ic_certificate *c, long i)
             return 1;
     }
     return 0;
+}
+
+/* Either sheet's image will do: where F = 0 the two are one point (a
+ * sheet's pole strip is thin only in its own parameters). */
+int ic_certificate_in_singular_box(const ic_certificate *c, long i)
+{
+    ic_interval img[3];
+    if (c->nsingular == 0)
+        return 0;
+    if (ic_certificate_cell_image(c, i, img) && image_in_singular_box(c, img))
+        return 1;
+    if (c->dim != 4)
+        return 0;
+    ic_interval pq[2] = {{c->cells[i].lo[2], c->cells[i].hi[2]},
+                         {c->cells[i].lo[3], c->cells[i].hi[3]}};
+    return ic_surface_eval_interval(c->pg->S[1], img, pq, NULL) == IC_OK &&
+           image_in_singular_box(c, img);
 }
 
 long ic_certificate_add_cell(ic_certificate *c, const double *lo, const double *hi)

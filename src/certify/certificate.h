@@ -63,6 +63,10 @@ typedef struct {
     int outside; /* a face crossing outside the box: no curve meets it */
 } ic_crossing;
 
+/* Poles of the sheets at most: four edges of two sheets, each sheet of a
+ * self-intersection in both places. */
+#define IC_CERTIFY_MAX_POLES 16
+
 /* A tangential curve the result reports: n points (xyz), closed or not. */
 typedef struct {
     const double *xyz;
@@ -72,6 +76,9 @@ typedef struct {
 typedef struct {
     long cells, empty, outside, diagonal, regular, singular, tangential, refused;
     long crossings, arcs;
+    int poles;   /* singular boxes at the sheets' poles (poles.c) */
+    int corners; /* and where a curve meets the boundary at a corner or
+                  * touches it (corners.c) */
     double seconds;
     int accepted;
     char reason[240];
@@ -98,11 +105,21 @@ typedef struct {
     long ncells, capc;
     ic_crossing *cross;
     long ncross, capx;
-    /* the singular points the result reports, and their boxes' half width
-     * (a length: IC_CERTIFY_SINGULAR_HALF of the region's image diagonal) */
-    const double (*singular)[3];
+    /* the singular points the result reports, then the poles the checker
+     * finds (owned), and their boxes' half width (a length:
+     * IC_CERTIFY_SINGULAR_HALF of the region's image diagonal) */
+    double (*singular)[3];
+    double *singular_scale; /* each box's half width over singular_half */
     int nsingular;
     double singular_half;
+    /* the poles (poles.c): the search coordinate j whose edge z[j] = edge
+     * a sheet collapses, the strip from it to z[j] = edge + strip whose
+     * image lies in the pole's singular box, and the point */
+    struct {
+        int j;
+        double edge, strip, xyz[3];
+    } poles[IC_CERTIFY_MAX_POLES];
+    int npoles;
     /* the tangential curves, their tubes' radius (a length), and the box of
      * every chunk of their segments (tube.c) */
     const ic_certify_tube *tubes;
@@ -125,9 +142,45 @@ void ic_certificate_free(ic_certificate *c);
 /* The singular half width: of the region's image diagonal (a fraction). */
 #define IC_CERTIFY_SINGULAR_HALF 1e-5
 
-/* The result's singular points (kept by reference: they must outlive c);
- * 0 when the region's image cannot be enclosed (then no box is given). */
-int ic_certificate_set_singular(ic_certificate *c, const double (*xyz)[3], int n);
+/* A curve end on the region's boundary: within this fraction of the
+ * region's width of it. */
+#define IC_CERTIFY_END_REACH 1e-6
+/* A curve end on the box: within this fraction of the box's width of its
+ * face (the tracer sets the coordinate to the bound). */
+#define IC_CERTIFY_BOX_REACH 1e-9
+
+/* The result's singular points (copied; scale: each box's half width over
+ * IC_CERTIFY_SINGULAR_HALF's, NULL all 1), and a box at each pole of a
+ * parametric sheet (ic_certificate_find_poles): 1, 0 when the region's
+ * image cannot be enclosed (then no box is given), -1 out of memory. */
+int ic_certificate_set_singular(ic_certificate *c, const double (*xyz)[3], const double *scale,
+                                int n);
+
+/* The box of a cusp, a tacnode or a higher-order contact, over the
+ * others': there two branches share a tangent and lie d^(3/2) (a cusp) or
+ * d^2 (the surfaces osculate) apart at distance d, and so are the cells
+ * that prove them apart; with a box 100 times wider they are 10^3 to 10^4
+ * times wider at its edge. */
+#define IC_CERTIFY_CONTACT_SCALE 100.0
+
+/* A pole: a domain edge (not a seam) whose image lies within this fraction
+ * of the region's size of one point (the sphere's u at v = +-pi/2, a NURBS
+ * patch's collapsed row of control points). Its preimage near the edge is
+ * a whole strip of parameters, where J loses rank all along; the tracer
+ * joins a curve across it and the checker boxes it like a singular point.
+ * A small fraction of the box's half width, so the box holds the edge's
+ * whole image. Halvings of the strip's width at most, in search of the
+ * strip whose image lies in the box. */
+#define IC_CERTIFY_POLE_SPREAD 1e-9
+#define IC_CERTIFY_POLE_HALVINGS 60
+
+/* Finds the poles of the pairing's parametric sheets (poles.c) and their
+ * strips, in c->poles; needs singular_half set. */
+void ic_certificate_find_poles(ic_certificate *c);
+
+/* The cell i reaches across the strip of a pole from its edge: the
+ * coordinate to split (the strip's other side in *at), or -1. */
+int ic_certificate_pole_split(const ic_certificate *c, long i, double *at);
 
 /* The image of cell i (ic_certify_image): 0 when it has no enclosure. */
 int ic_certificate_cell_image(const ic_certificate *c, long i, ic_interval img[3]);
@@ -143,7 +196,7 @@ int ic_certificate_in_singular_box(const ic_certificate *c, long i);
 #define IC_CERTIFY_TUBE_HALF 5e-4
 
 /* The result's tangential curves (kept by reference: they must outlive
- * c): 0 out of memory or when the region's image cannot be enclosed. */
+ * c): 1, 0 when the region's image cannot be enclosed, -1 out of memory. */
 int ic_certificate_set_tubes(ic_certificate *c, const ic_certify_tube *tubes, int n);
 
 /* Sets tube_half from the region's size: 0 when it has no enclosure. */
@@ -193,6 +246,10 @@ int ic_certify_leaf(ic_certificate *c, long i, const ic_certify_limits *lim);
  * its image meets, each put on its arc, and its face crossings outside the
  * box marked. 1 done, 0 undecided (split it), -1 out of memory. */
 int ic_certify_box_crossings(ic_certificate *c, long cell, int max_boxes);
+
+/* A crossing's enclosure K narrowed by Krawczyk steps on its face while
+ * they halve it (face.c): the root, proven unique in X, stays in K. */
+void ic_certify_tighten(const ic_certificate *c, ic_crossing *x);
 
 /* The roots of F on face z[j] = v of the box lo..hi (face.c), appended as
  * crossings of cell `cell`: 1 when the whole face was decided, 0 when

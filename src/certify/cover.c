@@ -42,13 +42,19 @@ static int widest(const ic_certificate *c, long i, double *rel)
     return best;
 }
 
-/* Splits cell i across k into two new cells pushed on the stack. */
-static int split(ic_certificate *c, long i, int k, int depth, long *stack, int *n)
+/* Where cell i is split across k: a little off its middle. */
+static double split_point(const ic_certificate *c, long i, int k, int depth)
 {
-    ic_cell *cl = &c->cells[i];
+    const ic_cell *cl = &c->cells[i];
     const double off = IC_CERTIFY_SPLIT_OFFSET + k * IC_CERTIFY_SPLIT_OFFSET_STEP;
     const double f = 0.5 + (depth % 2 ? off : -off);
-    const double at = cl->lo[k] + f * (cl->hi[k] - cl->lo[k]);
+    return cl->lo[k] + f * (cl->hi[k] - cl->lo[k]);
+}
+
+/* Splits cell i across k at `at` into two new cells pushed on the stack. */
+static int split(ic_certificate *c, long i, int k, double at, long *stack, int *n)
+{
+    ic_cell *cl = &c->cells[i];
     double lo[4], hi[4];
     for (int j = 0; j < c->dim; j++)
         lo[j] = cl->lo[j], hi[j] = cl->hi[j];
@@ -106,7 +112,13 @@ static int grow_leaf(ic_certificate *c, long i, int depth, const ic_certify_limi
         ic_certificate_refuse(c, "the cover needs more than %ld cells", lim->max_cells);
         return 0;
     }
-    return split(c, i, k, depth, stack, n) < 0 ? -1 : 1;
+    /* a pole's strip first: there the cell is singular whatever its
+     * other widths (certificate.h) */
+    double at;
+    const int j = ic_certificate_pole_split(c, i, &at);
+    if (j >= 0)
+        return split(c, i, j, at, stack, n) < 0 ? -1 : 1;
+    return split(c, i, k, split_point(c, i, k, depth), stack, n) < 0 ? -1 : 1;
 }
 
 ic_status ic_certify_cover(ic_certificate *c, const ic_certify_limits *lim, ic_error *err)

@@ -57,6 +57,38 @@ static int decide(const ic_certificate *c, const ic_interval *X, int j, ic_inter
     return 2;
 }
 
+/* Krawczyk steps at most that narrow a crossing's enclosure. */
+#define IC_CERTIFY_TIGHTEN_STEPS 8
+
+void ic_certify_tighten(const ic_certificate *c, ic_crossing *x)
+{
+    const int j = x->face;
+    for (int it = 0; it < IC_CERTIFY_TIGHTEN_STEPS; it++) {
+        ic_certify_eval e, ec;
+        double mid[4];
+        if (!ic_certify_enclose(c->pg, x->K, &e) || !ic_certify_centre(c->pg, x->K, mid, &ec))
+            return;
+        ic_interval M[4][4], U[4], KU[4];
+        minor_without(&e, c->m, j, M);
+        unknowns(x->K, c->dim, j, U);
+        if (!ic_imat_krawczyk(U, ec.F, M, c->m, KU))
+            return;
+        double before = 0.0, after = 0.0;
+        for (int u = 0; u < c->m; u++) { /* the root lies in both */
+            KU[u] = (ic_interval){KU[u].lo > U[u].lo ? KU[u].lo : U[u].lo,
+                                  KU[u].hi < U[u].hi ? KU[u].hi : U[u].hi};
+            if (!(KU[u].lo <= KU[u].hi))
+                return;
+            before += U[u].hi - U[u].lo, after += KU[u].hi - KU[u].lo;
+        }
+        for (int k = 0, u = 0; k < c->dim; k++)
+            if (k != j)
+                x->K[k] = KU[u++];
+        if (!(after < 0.5 * before))
+            return;
+    }
+}
+
 /* The widest unknown of X relative to the region's widths. */
 static int widest(const ic_certificate *c, const ic_interval *X, int j)
 {

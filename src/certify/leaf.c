@@ -79,21 +79,40 @@ static int monotone_along(const ic_certificate *c, const ic_certify_eval *e, int
     return ic_imat_regular(M, c->m);
 }
 
-/* Sorted along axis, the crossings first..first+n-1 pair up as arcs:
- * their ranges along axis are disjoint and their number is even. */
-static int pair_arcs(ic_certificate *c, long first, long n, int axis)
+/* Sorts the crossings x[0..n-1] along axis: 1 when their ranges there
+ * are disjoint, else 0 with *at the first that overlaps the one before. */
+static int sorted_apart(ic_crossing *x, long n, int axis, long *at)
 {
-    if (n % 2 != 0)
-        return 0;
-    ic_crossing *x = c->cross + first;
     for (long a = 1; a < n; a++) /* insertion sort: a cell has few crossings */
         for (long b = a; b > 0 && x[b].K[axis].lo < x[b - 1].K[axis].lo; b--) {
             const ic_crossing t = x[b];
             x[b] = x[b - 1], x[b - 1] = t;
         }
     for (long a = 1; a < n; a++)
-        if (!(x[a - 1].K[axis].hi < x[a].K[axis].lo))
+        if (!(x[a - 1].K[axis].hi < x[a].K[axis].lo)) {
+            *at = a;
             return 0;
+        }
+    return 1;
+}
+
+/* Sorted along axis, the crossings first..first+n-1 pair up as arcs:
+ * their ranges along axis are disjoint (two that overlap narrowed first:
+ * beside a cusp two crossings lie closer than their face boxes' widths)
+ * and their number is even. */
+static int pair_arcs(ic_certificate *c, long first, long n, int axis)
+{
+    if (n % 2 != 0)
+        return 0;
+    ic_crossing *x = c->cross + first;
+    long at;
+    int narrowed = 0;
+    while (!sorted_apart(x, n, axis, &at)) {
+        if (narrowed++ >= n)
+            return 0;
+        ic_certify_tighten(c, &x[at - 1]);
+        ic_certify_tighten(c, &x[at]);
+    }
     for (long a = 0; a < n; a += 2) {
         x[a].mate = (int)(first + a + 1);
         x[a + 1].mate = (int)(first + a);

@@ -23,12 +23,6 @@
 #define IC_CERTIFY_NEWTON_STEPS 30
 #define IC_CERTIFY_NEWTON_DONE 1e-14
 #define IC_CERTIFY_NEWTON_NOISE 1e-10
-/* A curve end on the region's boundary: within this fraction of the
- * region's width of it. */
-#define IC_CERTIFY_END_REACH 1e-6
-/* A curve end on the box: within this fraction of the box's width of its
- * face (the tracer sets the coordinate to the bound). */
-#define IC_CERTIFY_BOX_REACH 1e-9
 /* A projected point belongs to a crossing's face box grown by this fraction
  * of the region's width (rounding only: the box holds the root strictly). */
 #define IC_CERTIFY_MATCH_SLACK 1e-12
@@ -36,6 +30,9 @@
  * at its two ends; most halvings of one chord. */
 #define IC_CERTIFY_CHORD_OF_CELL 0.25
 #define IC_CERTIFY_MAX_HALVINGS 40
+/* Cells one short chord crosses at most: examined ones, and any. */
+#define IC_CERTIFY_CHORD_CELLS 1024
+#define IC_CERTIFY_CHORD_CELLS_ANY 4096
 /* The chord across a face, found by halving along the curve, is shorter
  * than this fraction of the cell it leaves. */
 #define IC_CERTIFY_EXIT_CHORD 1e-3
@@ -53,9 +50,7 @@ typedef struct {
 
 static double width(const ic_certificate *c, int k) { return c->hi[k] - c->lo[k]; }
 
-/* Newton's method for F = 0 with z[j] fixed (j = -1: the least-norm step
- * onto the curve). 1 when it converged. */
-static int project(const ic_certificate *c, double *z, int j)
+int ic_certify_project(const ic_certificate *c, double *z, int j)
 {
     const int m = c->m, dim = c->dim;
     double last = 1.0;
@@ -232,6 +227,31 @@ static int inside_leaf(const ic_certificate *c, long L, const double *z)
     return 1;
 }
 
+/* z brought onto the region where it lies past a face that is not a seam
+ * by rounding (within IC_CERTIFY_END_REACH of the width: the tracer's end
+ * on a domain edge, Newton's method along a pole's edge). */
+static void onto_region(const ic_certificate *c, double *z)
+{
+    for (int k = 0; k < c->dim; k++) {
+        const double reach = IC_CERTIFY_END_REACH * width(c, k);
+        if (c->periodic[k])
+            continue;
+        if (z[k] > c->hi[k] && z[k] <= c->hi[k] + reach)
+            z[k] = c->hi[k];
+        else if (z[k] < c->lo[k] && z[k] >= c->lo[k] - reach)
+            z[k] = c->lo[k];
+    }
+}
+
+/* z lies in the region (its periodic coordinates anywhere). */
+static int in_region(const ic_certificate *c, const double *z)
+{
+    for (int k = 0; k < c->dim; k++)
+        if (!c->periodic[k] && !(z[k] >= c->lo[k] && z[k] <= c->hi[k]))
+            return 0;
+    return 1;
+}
+
 /* The midpoint m of a chord put back on the curve; where Newton's method
  * fails (beside a singular point, where J loses rank) a midpoint in a
  * singular cell is kept as it is: nothing is claimed there. 0: neither. */
@@ -239,8 +259,11 @@ static int put_back(const ic_certificate *c, double *m)
 {
     double keep[4], mw[4];
     memcpy(keep, m, sizeof keep);
-    if (project(c, m, -1))
-        return 1;
+    if (ic_certify_project(c, m, -1)) {
+        onto_region(c, m);
+        if (in_region(c, m))
+            return 1; /* else past a pole's edge, where the formula folds back */
+    }
     memcpy(m, keep, sizeof keep);
     ic_certificate_wrap(c, m, mw);
     const long L = ic_certificate_locate(c, mw, -1, 0);
@@ -274,8 +297,10 @@ static int bracket_exit(const ic_certificate *c, long L, const double *cw, const
     chord_exit(c, L, a, b, q, j, side);
     double on_chord[4];
     memcpy(on_chord, q, sizeof on_chord);
-    if (project(c, q, *j))
+    if (ic_certify_project(c, q, *j)) {
+        onto_region(c, q); /* q[j] is on a face of the cell already */
         return 1;
+    }
     memcpy(q, on_chord, sizeof on_chord);
     return 2;
 }
@@ -292,6 +317,17 @@ static int on_face(const ic_certificate *c, long L, const double *q, int j)
     return 1;
 }
 
+/* q on face (j, side) of a cell, in the frame of the cell beyond it:
+ * across a periodic seam, on its other side. */
+static void beyond_face(const ic_certificate *c, const double *q, int j, int side, double *qn)
+{
+    ic_certificate_wrap(c, q, qn);
+    if (c->periodic[j] && side && q[j] >= c->hi[j])
+        qn[j] = c->lo[j]; /* across the seam, upwards */
+    else if (c->periodic[j] && !side && q[j] <= c->lo[j])
+        qn[j] = c->hi[j]; /* across the seam, downwards */
+}
+
 /* The face (j, side) of leaf L at q lies between two singular cells, where
  * the walk may cross it anywhere. */
 static int between_singular(const ic_certificate *c, long L, const double *q, int j, int side)
@@ -299,7 +335,7 @@ static int between_singular(const ic_certificate *c, long L, const double *q, in
     if (!ic_cell_unexamined(c->cells[L].kind))
         return 0;
     double qn[4];
-    ic_certificate_wrap(c, q, qn);
+    beyond_face(c, q, j, side, qn);
     const long next = ic_certificate_locate(c, qn, j, side ? 1 : -1);
     return next >= 0 && next != L && ic_cell_unexamined(c->cells[next].kind);
 }
@@ -339,6 +375,22 @@ static int enter_cell(walker *w, long next, int j, int side, const double *qn)
     return 1;
 }
 
+/* A point on a periodic seam, wrapped to one side, taken on the side of
+ * leaf L (a walk that came to it across the seam stays in its cell). */
+static void to_leaf_frame(const ic_certificate *c, long L, double *w)
+{
+    const ic_cell *cl = &c->cells[L];
+    for (int k = 0; k < c->dim; k++) {
+        const double T = width(c, k);
+        if (!c->periodic[k] || (w[k] >= cl->lo[k] && w[k] <= cl->hi[k]))
+            continue;
+        if (w[k] + T >= cl->lo[k] && w[k] + T <= cl->hi[k])
+            w[k] += T;
+        else if (w[k] - T >= cl->lo[k] && w[k] - T <= cl->hi[k])
+            w[k] -= T;
+    }
+}
+
 /* One step of the walk: from cur (on the curve) towards target, across the
  * face where the chord leaves the current cell. 1: target reached, 0: a
  * face crossed (cur, target moved on), -1: refused. */
@@ -347,9 +399,11 @@ static int cross_face(walker *w, double *cur, double *target)
     const ic_certificate *c = w->c;
     double cw[4], tw[4], q[4];
     ic_certificate_wrap(c, cur, cw);
+    to_leaf_frame(c, w->leaf, cw);
     memcpy(q, cw, sizeof q); /* where a refusal names, should the halving fail */
     for (int k = 0; k < c->dim; k++)
         tw[k] = target[k] + (cw[k] - cur[k]);
+    onto_region(c, tw);
     const ic_cell *cl = &c->cells[w->leaf];
     int inside = 1;
     for (int k = 0; k < c->dim; k++)
@@ -367,11 +421,7 @@ static int cross_face(walker *w, double *cur, double *target)
         return -1;
     const int dir = side ? 1 : -1;
     double qn[4];
-    ic_certificate_wrap(c, q, qn);
-    if (c->periodic[j] && side && q[j] >= c->hi[j])
-        qn[j] = c->lo[j]; /* across the seam, upwards */
-    else if (c->periodic[j] && !side && q[j] <= c->lo[j])
-        qn[j] = c->hi[j]; /* across the seam, downwards */
+    beyond_face(c, q, j, side, qn);
     const long next = ic_certificate_locate(c, qn, j, dir);
     if (next < 0) {
         refuse_at(w, "leaves the region where it does not end", q);
@@ -407,7 +457,12 @@ static void walk_chord(walker *w, const double *a, const double *b, int halvings
     double cur[4], target[4];
     memcpy(cur, a, (size_t)w->c->dim * sizeof *a);
     memcpy(target, b, (size_t)w->c->dim * sizeof *b);
-    for (int step = 0; step < 64; step++) {
+    /* a short chord crosses few examined cells; along a pole's strip it
+     * may cross many singular ones */
+    for (int step = 0, examined = 0; step < IC_CERTIFY_CHORD_CELLS_ANY &&
+                                     examined < IC_CERTIFY_CHORD_CELLS;
+         step++) {
+        examined += !ic_cell_unexamined(w->c->cells[w->leaf].kind);
         const int rc = cross_face(w, cur, target);
         if (rc != 0)
             return;
@@ -443,7 +498,7 @@ static long end_crossing(walker *w, const double *z, long *leaf)
             double q[4];
             memcpy(q, zw, sizeof q);
             q[j] = v;
-            if (!project(w->c, q, j))
+            if (!ic_certify_project(w->c, q, j))
                 continue;
             const long x = crossing_at(c, *leaf, j, side, q);
             if (x >= 0)

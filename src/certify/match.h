@@ -19,6 +19,23 @@ typedef struct {
     int tangential;
 } ic_certify_curve;
 
+/* Newton's method for F = 0 with z[j] fixed (j = -1: the least-norm step
+ * onto the curve), from z (match.c). 1 when it converged. */
+int ic_certify_project(const ic_certificate *c, double *z, int j);
+
+/* A singular box at each end of an open curve that lies on two faces of
+ * the region or the box at once, and at each point within a curve that
+ * lies on one (corners.c): no crossing can be isolated where a curve
+ * leaves across a corner, a cell's edge, or touches a face. At most
+ * IC_CERTIFY_MAX_CORNERS (a curve along a face gets none past them, and
+ * the cover refuses there). 1, or -1 out of memory. */
+#define IC_CERTIFY_MAX_CORNERS 32
+/* A curve's sample nearer a face than this fraction of the region's width,
+ * its neighbours farther, is where a touch of the face is sought. */
+#define IC_CERTIFY_TOUCH_NEAR 1e-2
+int ic_certificate_add_corner_ends(ic_certificate *c, const ic_certify_curve *curves,
+                                   int ncurves);
+
 /* Holds the curves against the cover c (whose summary must say accepted):
  * on a mismatch the certificate is refused with the reason. IC_OK, or an
  * error out of memory. */
@@ -36,6 +53,7 @@ typedef struct {
     const ic_certify_curve *curves;
     int ncurves;
     const double (*singular)[3];
+    const double *singular_scale; /* each box's size (certificate.h); NULL all 1 */
     int nsingular;
     const ic_certify_tube *tubes; /* its tangential curves, each in a tube */
     int ntubes;

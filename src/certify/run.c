@@ -5,11 +5,13 @@
 #include <math.h>
 #include <string.h>
 
-/* The checker's work limits: cells of the cover (as many as the tracer's
- * search examined, between the two bounds: the cost of the proof follows
- * the cost of the trace, and the limit, unlike a clock, gives the same
- * verdict on every machine), the smallest cell as a fraction of the
+/* The checker's work limits: cells of the cover (a few times as many as
+ * the tracer's search examined, between the two bounds: the cost of the
+ * proof follows the cost of the trace, and the limit, unlike a clock, gives
+ * the same verdict on every machine; the Enneper surface's self-
+ * intersection, a search of 35175 cells, needs 72881), the smallest cell as a fraction of the
  * region's width, boxes per face isolation. */
+#define IC_CERTIFY_CELLS_PER_SEARCH_CELL 4
 #define IC_CERTIFY_MIN_CELLS 20000
 #define IC_CERTIFY_MAX_CELLS 200000
 #define IC_CERTIFY_MIN_WIDTH 1e-6
@@ -24,9 +26,10 @@
 
 ic_certify_limits ic_certify_limits_for(long search_cells, double deadline)
 {
-    const long cells = search_cells < IC_CERTIFY_MIN_CELLS   ? IC_CERTIFY_MIN_CELLS
-                       : search_cells > IC_CERTIFY_MAX_CELLS ? IC_CERTIFY_MAX_CELLS
-                                                             : search_cells;
+    const double want = (double)IC_CERTIFY_CELLS_PER_SEARCH_CELL * (double)search_cells;
+    const long cells = want < IC_CERTIFY_MIN_CELLS   ? IC_CERTIFY_MIN_CELLS
+                       : want > IC_CERTIFY_MAX_CELLS ? IC_CERTIFY_MAX_CELLS
+                                                     : (long)want;
     return (ic_certify_limits){cells, IC_CERTIFY_MIN_WIDTH, IC_CERTIFY_FACE_BOXES, deadline};
 }
 
@@ -58,10 +61,17 @@ ic_status ic_certify_run(const ic_pairing *pg, const double box[3][2], int has_b
     if (!c)
         return err ? err->code : IC_ERR_NOMEM;
     ic_status st = IC_OK;
-    if (!ic_certificate_set_singular(c, claim->singular, claim->nsingular) ||
-        !ic_certificate_set_tubes(c, claim->tubes, claim->ntubes))
-        ic_certificate_refuse(c, "the region's image has no enclosure (or out of memory): "
-                                 "singular boxes and tangential tubes cannot be placed");
+    int placed = ic_certificate_set_singular(c, claim->singular, claim->singular_scale,
+                                             claim->nsingular);
+    if (placed > 0)
+        placed = ic_certificate_add_corner_ends(c, claim->curves, claim->ncurves);
+    if (placed > 0)
+        placed = ic_certificate_set_tubes(c, claim->tubes, claim->ntubes);
+    if (placed < 0)
+        st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");
+    else if (placed == 0)
+        ic_certificate_refuse(c, "the region's image has no enclosure: singular boxes and "
+                                 "tangential tubes cannot be placed");
     else {
         const ic_certify_limits grown = with_tubes(c, lim);
         st = ic_certify_cover(c, &grown, err);

@@ -62,7 +62,7 @@ int ic_certificate_set_tubes(ic_certificate *c, const ic_certify_tube *tubes, in
     free(c->chunk_box);
     c->chunk_box = malloc((size_t)(chunks + 1) * sizeof *c->chunk_box);
     if (!c->chunk_box)
-        return 0;
+        return -1;
     long at = 0;
     for (int k = 0; k < n; k++)
         for (int s0 = 0; s0 < segments(&tubes[k]); s0 += IC_CERTIFY_TUBE_CHUNK, at++) {

@@ -90,9 +90,9 @@ int ic_cmd_verify(int argc, char **argv)
         return st == IC_ERR_INVALID ? EXIT_INPUT : EXIT_COMPUTE;
     }
     printf("%s: %ld cells (%ld empty, %ld outside, %ld diagonal, %ld regular, %ld singular, "
-           "%ld tangential), %ld crossings, %ld arcs%s%s\n",
+           "%ld tangential), %ld crossings, %ld arcs, boxes at %d poles and %d corners%s%s\n",
            c.accepted ? "proven" : "not proven", c.cells, c.empty, c.outside, c.diagonal,
-           c.regular, c.singular, c.tangential, c.crossings, c.arcs, c.accepted ? "" : ": ",
-           c.accepted ? "" : c.reason);
+           c.regular, c.singular, c.tangential, c.crossings, c.arcs, c.poles, c.corners,
+           c.accepted ? "" : ": ", c.accepted ? "" : c.reason);
     return c.accepted ? 0 : EXIT_COMPUTE;
 }

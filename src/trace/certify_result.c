@@ -40,7 +40,7 @@ static double *search_points(const ic_trace_result *r, const ic_pairing *pg,
     return z;
 }
 
-static void summarise(ic_trace_certificate *out, const ic_certify_summary *s)
+void ic_trace_certificate_from(ic_trace_certificate *out, const ic_certify_summary *s)
 {
     out->checked = 1;
     out->accepted = s->accepted;
@@ -49,6 +49,7 @@ static void summarise(ic_trace_certificate *out, const ic_certify_summary *s)
     out->tangential = s->tangential;
     out->refused = s->refused;
     out->crossings = s->crossings, out->arcs = s->arcs;
+    out->poles = s->poles, out->corners = s->corners;
     out->seconds = s->seconds;
     memcpy(out->reason, s->reason, sizeof out->reason);
 }
@@ -88,12 +89,19 @@ static double *tangential_tubes(const ic_trace_result *r, ic_certify_tube *tubes
     return xyz;
 }
 
-/* The singular points' places (freed by the caller): NULL out of memory. */
-static double (*singular_points(const ic_trace_result *r))[3]
+/* The singular points' places (freed by the caller): NULL out of memory;
+ * their boxes' sizes in scale (cusps, tacnodes and higher-order contacts
+ * wider). */
+static double (*singular_points(const ic_trace_result *r, double *scale))[3]
 {
     double(*p)[3] = malloc((size_t)(r->nspecials + 1) * sizeof *p);
-    for (int k = 0; p && k < r->nspecials; k++)
+    for (int k = 0; p && scale && k < r->nspecials; k++) {
         memcpy(p[k], r->specials[k].xyz, sizeof p[k]);
+        const ic_point_type t = r->specials[k].type;
+        scale[k] = t == IC_POINT_CUSP || t == IC_POINT_TACNODE || t == IC_POINT_HIGHER_ORDER_CONTACT
+                       ? IC_CERTIFY_CONTACT_SCALE
+                       : 1.0;
+    }
     return p;
 }
 
@@ -118,23 +126,30 @@ ic_status ic_trace_certify(ic_trace_result *r, ic_pair *pair, const ic_trace_opt
     const ic_certify_limits lim = ic_certify_limits_for(rep->cells, r->budget.deadline);
     ic_certify_curve *curves = malloc((size_t)(r->ncurves + 1) * sizeof *curves);
     double *z = curves ? search_points(r, pg, curves) : NULL;
-    double(*sing)[3] = singular_points(r);
+    double *scale = malloc((size_t)(r->nspecials + 1) * sizeof *scale);
+    double(*sing)[3] = singular_points(r, scale);
     ic_certify_tube *tubes = malloc((size_t)(r->ncurves + 1) * sizeof *tubes);
     int ntubes = 0;
     double *txyz = tubes ? tangential_tubes(r, tubes, &ntubes) : NULL;
-    const ic_certify_claim claim = {curves, r->ncurves, (const double(*)[3])sing,
-                                    r->nspecials, tubes, ntubes};
+    const ic_certify_claim claim = {.curves = curves,
+                                    .ncurves = r->ncurves,
+                                    .singular = (const double(*)[3])sing,
+                                    .singular_scale = scale,
+                                    .nsingular = r->nspecials,
+                                    .tubes = tubes,
+                                    .ntubes = ntubes};
     ic_certify_summary sum;
-    ic_status st = z && sing && txyz
+    ic_status st = z && sing && scale && txyz
                        ? ic_certify_run(pg, opt->box, opt->has_box, &lim, &claim, &sum, err)
                        : ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");
     free(txyz);
     free(tubes);
     free(sing);
+    free(scale);
     free(z);
     free(curves);
     if (st == IC_OK)
-        summarise(&rep->certificate, &sum);
+        ic_trace_certificate_from(&rep->certificate, &sum);
     rep->complete = st == IC_OK && rep->certificate.accepted;
     if (st == IC_OK && !rep->complete)
         ic_trace_failure(rep, "not proven by the certificate: %s", rep->certificate.reason);

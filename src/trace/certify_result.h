@@ -2,7 +2,11 @@
 #ifndef IC_TRACE_CERTIFY_RESULT_H
 #define IC_TRACE_CERTIFY_RESULT_H
 
+#include "certify/certificate.h"
 #include "core/result.h"
+
+/* The public summary of a check (accepted or not, and checked). */
+void ic_trace_certificate_from(ic_trace_certificate *out, const ic_certify_summary *s);
 
 /* When r claims the whole intersection, certifies it: r->report.complete
  * becomes the checker's verdict and the report's certificate its summary

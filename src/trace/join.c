@@ -1,12 +1,29 @@
 /* Joining traced curves through the singular points at their ends, and
  * dropping arcs traced twice. */
 #include "trace_internal.h"
+#include "core/trace_constants.h"
 #include "common/vec3.h"
 #include "local/pair_access.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+
+/* Two ends at one place of the sheets' parameters too (each parametric
+ * sheet's within IC_TRACE_TOUCH_GAP of the larger magnitude, at least 1):
+ * not the two sides of a seam that is a plain domain edge, which meet in
+ * space only. */
+static int same_params(const ic_trace_point *a, const ic_trace_point *b)
+{
+    for (int s = 0; s < 2; s++)
+        for (int k = 0; k < 2; k++) {
+            const double x = a->params[s][k], y = b->params[s][k];
+            if (isfinite(x) && isfinite(y) &&
+                fabs(x - y) > IC_TRACE_TOUCH_GAP * fmax(1.0, fmax(fabs(x), fabs(y))))
+                return 0;
+        }
+    return 1;
+}
 
 /* Outgoing direction at end e of curve c (into the curve): +t at its start,
  * -t at its end; *p the end point. */
@@ -17,15 +34,21 @@ static void outgoing(const ic_trace_curve *c, int e, double *o, const ic_trace_p
 }
 
 /* Joins end ea of curve a to end eb of curve b: the two end points are the
- * same point (gap 0) or gap apart along the curve (then both are kept).
- * A curve joined to itself closes. */
+ * same point (gap 0), gap apart along the curve (then both are kept), or
+ * -gap past each other (an overlap where both stopped beyond a touch of
+ * the domain's edge: b's end is dropped, and the arc lengths after it less
+ * the overlap). A curve joined to itself closes. */
 static ic_status merge(ic_trace_result *r, int a, int ea, int b, int eb, double gap)
 {
     ic_trace_curve *ca = &r->curves[a], *cb = &r->curves[b];
     ic_trace_point *A = r->storage[a];
-    const int na = ca->npoints, shared = gap == 0.0;
+    const int na = ca->npoints, shared = gap <= 0.0;
     if (b == a) { /* both ends of one curve: it closes (the start repeated last) */
-        if (!shared) {
+        if (gap < 0.0) { /* the overshooting last point becomes the start */
+            const double s = A[na - 1].s + gap;
+            A[na - 1] = A[0];
+            A[na - 1].s = s;
+        } else if (!shared) {
             ic_trace_point *J = realloc(A, (size_t)(na + 1) * sizeof *J);
             if (!J)
                 return IC_ERR_NOMEM;
@@ -201,14 +224,22 @@ ic_status ic_trace_join_curves(ic_trace_result *r, ic_pair *pair, double shape_t
                             const double turn = fmin(0.5, 4 * kappa * dist);
                             /* a gap where the parametrization does not
                              * degenerate is the curve leaving the domain
-                             * (a cap past an edge): not joined */
+                             * (a cap past an edge): not joined, unless
+                             * it is a touch of the edge */
+                            const int touch =
+                                dist <= IC_TRACE_TOUCH_GAP * r->scale && same_params(pa, pb);
                             if (dist > reach || ic_dot3(oa, ob) > -cos(turn) ||
-                                ic_dot3(d, t0) < 0.9 * dist ||
-                                !ic_pairing_gap_may_degenerate(ic_pair_pairing(pair), pa->xyz, pa->params, pb->xyz,
-                                                               pb->params))
+                                fabs(ic_dot3(d, t0)) < 0.9 * dist ||
+                                (!touch && ic_dot3(d, t0) < 0) ||
+                                (!touch && !ic_pairing_gap_may_degenerate(ic_pair_pairing(pair),
+                                                                          pa->xyz, pa->params,
+                                                                          pb->xyz, pb->params)))
                                 continue;
-                            gap = ic_trace_gap_length(pa, t0, pb, ob);
-                            if (!(gap > 0))
+                            /* past a touch both ends may overshoot each
+                             * other: the overlap is taken off */
+                            gap = touch && ic_dot3(d, t0) < 0 ? -dist
+                                                               : ic_trace_gap_length(pa, t0, pb, ob);
+                            if (!(gap > 0) && !(touch && gap < 0))
                                 continue;
                         }
                         if (merge(r, a, ea, b, eb, gap) != IC_OK)

@@ -168,7 +168,8 @@ static void write_certificate(json_out *j, const ic_trace_certificate *c)
                   {"diagonal", c->diagonal}, {"regular", c->regular},     {"singular", c->singular},
                   {"tangential", c->tangential},
                   {"refused", c->refused},
-                  {"crossings", c->crossings}, {"arcs", c->arcs}};
+                  {"crossings", c->crossings}, {"arcs", c->arcs},
+                  {"poles", c->poles},         {"corners", c->corners}};
     for (size_t i = 0; i < sizeof counts / sizeof counts[0]; i++)
         int_member(j, counts[i].key, (int)counts[i].n);
     ic_json_out_key(j, "reason");

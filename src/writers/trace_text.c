@@ -49,9 +49,11 @@ static void text_report(FILE *f, const ic_trace_report *rep)
     if (c->checked)
         fprintf(f,
                 "certificate: %s, %ld cells (%ld empty, %ld outside, %ld diagonal, %ld regular, "
-                "%ld singular, %ld tangential, %ld refused), %ld crossings, %ld arcs\n",
+                "%ld singular, %ld tangential, %ld refused), %ld crossings, %ld arcs, "
+                "boxes at %d poles and %d corners\n",
                 c->accepted ? "accepted" : "refused", c->cells, c->empty, c->outside, c->diagonal,
-                c->regular, c->singular, c->tangential, c->refused, c->crossings, c->arcs);
+                c->regular, c->singular, c->tangential, c->refused, c->crossings, c->arcs,
+                c->poles, c->corners);
     fprintf(f,
             "search: %d cells, %d excluded by interval arithmetic (%s), %d loop-free, %d where a "
             "small loop is not excluded, %d refined, %d uncovered, %d unproven, %d undecided "

@@ -109,6 +109,15 @@
 #define IC_TRACE_EXCURSION_TOLS 4.0
 #define IC_TRACE_EXCURSION_SECTIONS 40
 
+/* relative (of the problem's size): two ends that left the domain this
+ * close together, each continuing the other, are one curve touching the
+ * domain's edge (Viviani's curve on a sphere whose seam is a plain edge):
+ * near the touch the curve lies within rounding of the edge over a stretch
+ * of order sqrt(eps), 2.4e-8 measured, and the tracer stops on both sides
+ * of it. They are joined across that gap (a curve truly leaving and coming
+ * back so close lies within 1e-14 of the edge outside it). */
+#define IC_TRACE_TOUCH_GAP 1e-7
+
 /* relative to a NURBS sheet's domain width: a parameter this close to a
  * knot stands on that knot line (docs/nurbs.md). Two sheets of one curve
  * reach a common knot line within rounding of each other (measured 9e-16

@@ -40,6 +40,20 @@ static int faces_reached(const ic_certificate *c, const double *z, double xyz[3]
     return n;
 }
 
+/* How many periodic seams z lies on (within IC_CERTIFY_END_REACH). */
+static int seams_reached(const ic_certificate *c, const double *z)
+{
+    double w[4];
+    ic_certificate_wrap(c, z, w);
+    int n = 0;
+    for (int k = 0; k < c->dim; k++) {
+        const double reach = IC_CERTIFY_END_REACH * (c->hi[k] - c->lo[k]);
+        if (c->periodic[k])
+            n += fabs(w[k] - c->lo[k]) <= reach || fabs(w[k] - c->hi[k]) <= reach;
+    }
+    return n;
+}
+
 /* Appends p to the singular points, with a box of the usual size. */
 static int add_point(ic_certificate *c, const double p[3])
 {
@@ -77,26 +91,6 @@ static int seam_side(const ic_certificate *c, const double *z, int k)
     return w[k] - c->lo[k] > 0.5 * (c->hi[k] - c->lo[k]);
 }
 
-/* z lies within a tenth of a singular box of the curve, by the first-order
- * distance |F_i| / |grad F_i| of each equation: where the curve touches a
- * face Newton's method on the face creeps (a double root, or none within
- * rounding) and still ends there. */
-static int close_to_curve(const ic_certificate *c, const double *z)
-{
-    double F[3], J[3][4], w[4];
-    ic_certificate_wrap(c, z, w);
-    if (!ic_certify_at(c->pg, w, F, J))
-        return 0;
-    for (int i = 0; i < c->m; i++) {
-        double g = 0.0;
-        for (int k = 0; k < c->dim; k++)
-            g = hypot(g, J[i][k]);
-        if (!(fabs(F[i]) <= 0.1 * c->singular_half * g))
-            return 0;
-    }
-    return 1;
-}
-
 /* The distance of z from the nearer face (or seam) across coordinate k,
  * as a fraction of the region's width; that face's value in *face. */
 static double face_distance(const ic_certificate *c, const double *z, int k, double *face)
@@ -127,41 +121,55 @@ static int touch_near(const ic_certificate *c, const ic_certify_curve *cv, int i
         double face, fa, fb;
         const double d = face_distance(c, z, k, &face);
         if (d > IC_CERTIFY_TOUCH_NEAR || face_distance(c, a, k, &fa) < d ||
-            face_distance(c, b, k, &fb) < d || fa != face || fb != face ||
-            (c->periodic[k] && seam_side(c, a, k) != seam_side(c, b, k)))
+            face_distance(c, b, k, &fb) < d)
             continue;
-        double q[4];
+        if (c->periodic[k]) { /* one seam: the neighbours on one side of it */
+            if (seam_side(c, a, k) != seam_side(c, b, k))
+                continue;
+            face = seam_side(c, a, k) ? c->hi[k] : c->lo[k];
+        } else if (fa != face || fb != face)
+            continue;
+        double q[4], on_face[4];
         ic_certificate_wrap(c, z, q);
         q[k] = face;
-        if (!ic_certify_project(c, q, k) && !ic_certify_project(c, q, k) && !close_to_curve(c, q))
-            continue;
+        memcpy(on_face, q, sizeof on_face);
+        if (!ic_certify_project(c, q, k) && !ic_certify_project(c, q, k) &&
+            !ic_certify_near_curve(c, q, 0.1 * c->singular_half)) {
+            /* where the face's Jacobian is singular at the touch itself
+             * Newton's method stops: the sample there will do */
+            memcpy(q, on_face, sizeof q);
+            if (!ic_certify_near_curve(c, q, 0.1 * c->singular_half))
+                continue;
+        }
         int near = 1;
         double w[4];
         ic_certificate_wrap(c, z, w);
-        for (int j = 0; j < dim && near; j++)
-            near = fabs(q[j] - w[j]) <= IC_CERTIFY_TOUCH_NEAR * (c->hi[j] - c->lo[j]) &&
-                   q[j] >= c->lo[j] && q[j] <= c->hi[j];
+        for (int j = 0; j < dim && near; j++) /* q[k] is on the face (either side of a seam) */
+            near = j == k || (fabs(q[j] - w[j]) <= IC_CERTIFY_TOUCH_NEAR * (c->hi[j] - c->lo[j]) &&
+                              q[j] >= c->lo[j] && q[j] <= c->hi[j]);
         if (near && faces_reached(c, q, xyz) >= 0)
             return 1;
     }
     return 0;
 }
 
-/* Point i of curve cv meets the boundary other than across one face: an
- * end on two faces, or a point within the curve that touches a face or a
- * seam, at the sample or between samples. The image of the end, of the
+/* Point i of curve cv meets the boundary other than across one face: a
+ * point on two faces or seams at once (a corner; two sheets' seams met
+ * together), or a point within the curve that touches a face or a seam, at
+ * the sample or between samples. The image of the end, of the
  * touch or (where Newton's method finds none) of the sample on a face, in
  * xyz. */
 static int meets_boundary(const ic_certificate *c, const ic_certify_curve *cv, int i,
                           double xyz[3])
 {
     const int end = !cv->closed && (i == 0 || i == cv->npoints - 1);
-    const int faces = faces_reached(c, cv->z + (size_t)i * (size_t)c->dim, xyz);
+    const double *z = cv->z + (size_t)i * (size_t)c->dim;
+    const int faces = faces_reached(c, z, xyz);
     if (faces < 0)
         return 0;
-    if (end)
-        return faces >= 2;
-    return touch_near(c, cv, i, xyz) || faces >= 1;
+    if (faces + seams_reached(c, z) >= 2) /* two faces or seams at once: a cell's edge */
+        return 1;
+    return !end && (touch_near(c, cv, i, xyz) || faces >= 1);
 }
 
 /* The face across coordinate k on which z lies (within

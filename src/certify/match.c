@@ -30,6 +30,13 @@
  * at its two ends; most halvings of one chord. */
 #define IC_CERTIFY_CHORD_OF_CELL 0.25
 #define IC_CERTIFY_MAX_HALVINGS 40
+/* A point clamped onto the region is on the curve when within this
+ * fraction of the region's width of it, to first order. */
+#define IC_CERTIFY_NEAR_CURVE 1e-12
+/* A midpoint this near a pole's edge (a fraction of the region's width) is
+ * tried on the edge where Newton's method fails (a NURBS sheet has no
+ * values past its domain). */
+#define IC_CERTIFY_POLE_REACH 1e-2
 /* Cells one short chord crosses at most: examined ones, and any. */
 #define IC_CERTIFY_CHORD_CELLS 1024
 #define IC_CERTIFY_CHORD_CELLS_ANY 4096
@@ -49,6 +56,15 @@ typedef struct {
 } walker;
 
 static double width(const ic_certificate *c, int k) { return c->hi[k] - c->lo[k]; }
+
+/* The region's largest width. */
+static double width_max(const ic_certificate *c)
+{
+    double w = 0.0;
+    for (int k = 0; k < c->dim; k++)
+        w = fmax(w, width(c, k));
+    return w;
+}
 
 int ic_certify_project(const ic_certificate *c, double *z, int j)
 {
@@ -243,6 +259,22 @@ static void onto_region(const ic_certificate *c, double *z)
     }
 }
 
+int ic_certify_near_curve(const ic_certificate *c, const double *z, double tol)
+{
+    double F[3], J[3][4], w[4];
+    ic_certificate_wrap(c, z, w);
+    if (!ic_certify_at(c->pg, w, F, J))
+        return 0;
+    for (int i = 0; i < c->m; i++) {
+        double g = 0.0;
+        for (int k = 0; k < c->dim; k++)
+            g = hypot(g, J[i][k]);
+        if (!(fabs(F[i]) <= tol * g))
+            return 0;
+    }
+    return 1;
+}
+
 /* z lies in the region (its periodic coordinates anywhere). */
 static int in_region(const ic_certificate *c, const double *z)
 {
@@ -250,6 +282,26 @@ static int in_region(const ic_certificate *c, const double *z)
         if (!c->periodic[k] && !(z[k] >= c->lo[k] && z[k] <= c->hi[k]))
             return 0;
     return 1;
+}
+
+/* m near a pole's edge (a chord across the gap the tracer joins over a
+ * pole) put on the edge, which lies on the curve where the pole does: 1
+ * when that puts it on the curve. */
+static int onto_pole(const ic_certificate *c, double *m)
+{
+    for (int p = 0; p < c->npoles; p++) {
+        const int j = c->poles[p].j;
+        if (fabs(m[j] - c->poles[p].edge) > IC_CERTIFY_POLE_REACH * width(c, j))
+            continue;
+        double q[4];
+        memcpy(q, m, sizeof q);
+        q[j] = c->poles[p].edge;
+        if (ic_certify_near_curve(c, q, IC_CERTIFY_NEAR_CURVE * width_max(c))) {
+            memcpy(m, q, sizeof q);
+            return 1;
+        }
+    }
+    return 0;
 }
 
 /* The midpoint m of a chord put back on the curve; where Newton's method
@@ -262,9 +314,18 @@ static int put_back(const ic_certificate *c, double *m)
     if (ic_certify_project(c, m, -1)) {
         onto_region(c, m);
         if (in_region(c, m))
-            return 1; /* else past a pole's edge, where the formula folds back */
+            return 1;
+        /* past a pole's edge, where the formula folds back: the edge itself
+         * is on the curve there */
+        for (int k = 0; k < c->dim; k++)
+            if (!c->periodic[k])
+                m[k] = fmin(fmax(m[k], c->lo[k]), c->hi[k]);
+        if (ic_certify_near_curve(c, m, IC_CERTIFY_NEAR_CURVE * width_max(c)))
+            return 1;
     }
     memcpy(m, keep, sizeof keep);
+    if (onto_pole(c, m))
+        return 1;
     ic_certificate_wrap(c, m, mw);
     const long L = ic_certificate_locate(c, mw, -1, 0);
     return L >= 0 && ic_cell_unexamined(c->cells[L].kind);

@@ -23,6 +23,10 @@ typedef struct {
  * onto the curve), from z (match.c). 1 when it converged. */
 int ic_certify_project(const ic_certificate *c, double *z, int j);
 
+/* z lies within tol (in search coordinates) of the curve, to first order:
+ * |F_i| <= tol |grad F_i| for every equation. */
+int ic_certify_near_curve(const ic_certificate *c, const double *z, double tol);
+
 /* A singular box at each end of an open curve that lies on two faces of
  * the region or the box at once, and at each point within a curve that
  * lies on one (corners.c): no crossing can be isolated where a curve

@@ -555,6 +555,14 @@ static void binding_and_plot_args(fixture *fx)
     BAD(ic_trace_json_alloc, "json", ic_trace_json_alloc(NULL, &len, fx->res, fx->pair, &err));
     BAD(ic_trace_json_alloc, "res", ic_trace_json_alloc(&json, &len, NULL, fx->pair, &err));
     BAD(ic_trace_json_alloc, "pair", ic_trace_json_alloc(&json, &len, fx->res, NULL, &err));
+    ic_trace_certificate cert;
+    BAD(ic_problem_verify, "problem", ic_problem_verify(NULL, "{}", &cert, &err));
+    BAD(ic_problem_verify, "trace_json", ic_problem_verify(pb, NULL, &cert, &err));
+    BAD(ic_problem_verify, "out", ic_problem_verify(pb, "{}", NULL, &err));
+    BAD(ic_problem_verify_json, "json", ic_problem_verify_json(NULL, &len, pb, "{}", &err));
+    BAD(ic_problem_verify_json, "problem", ic_problem_verify_json(&json, &len, NULL, "{}", &err));
+    BAD(ic_certificate_write_json, "f", ic_certificate_write_json(NULL, &cert, &err));
+    BAD(ic_certificate_write_json, "c", ic_certificate_write_json(stdout, NULL, &err));
     BAD(ic_problem_point_json, "json", ic_problem_point_json(NULL, &len, pb, values, 3, 0, 2, "auto", 1e-6, &err));
     BAD(ic_problem_point_json, "problem", ic_problem_point_json(&json, &len, NULL, values, 3, 0, 2, "auto", 1e-6, &err));
     BAD(ic_problem_point_json, "values", ic_problem_point_json(&json, &len, pb, NULL, 3, 0, 2, "auto", 1e-6, &err));

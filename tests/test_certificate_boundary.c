@@ -279,6 +279,53 @@ static void mutations(void)
     release(&t);
 }
 
+/* The public re-check (ic_problem_verify, ic_problem_verify_json): a
+ * proven trace's document through the pole accepted again, the same
+ * document with its curve taken out refused. */
+static void public_verify(void)
+{
+    char sphere[400], json[900];
+    pole_sphere(1.0, sphere, sizeof sphere);
+    snprintf(json, sizeof json,
+             "{\"surfaces\": [%s, {\"type\": \"implicit\", \"f\": \"(x - 1)^2 + y^2 - 1\"}]}",
+             sphere);
+    traced t;
+    char *doc = NULL, *out = NULL;
+    size_t len = 0;
+    ic_error err;
+    if (trace_json(&t, "public verify", json) == 0 &&
+        REQUIRE(ic_trace_json_alloc(&doc, &len, t.res, t.pair, &err) == IC_OK, "%s",
+                err.message)) {
+        ic_trace_certificate c;
+        CHECK(ic_problem_verify(t.problem, doc, &c, &err) == IC_OK && c.checked && c.accepted &&
+                  c.poles == 2,
+              "the proven trace through the poles is not accepted again: %s", c.reason);
+        size_t out_len = 0;
+        CHECK(ic_problem_verify_json(&out, &out_len, t.problem, doc, &err) == IC_OK && out &&
+                  strstr(out, "\"accepted\":\ttrue") && strstr(out, "\"poles\":\t2"),
+              "ic_problem_verify_json: %s", out ? out : err.message);
+        /* the document's own keys, one tab in (a curve has points too) */
+        char *curves = strstr(doc, "\"curves\":"), *points = strstr(doc, "\n\t\"points\":");
+        if (REQUIRE(curves && points && points > curves, "no curves in the trace document")) {
+            /* "curves": [] followed by the rest of the document */
+            const size_t head = (size_t)(curves - doc);
+            char *cut = malloc(len + 16);
+            if (cut) {
+                memcpy(cut, doc, head);
+                snprintf(cut + head, len + 16 - head, "\"curves\": [], %s", points);
+                const ic_status st = ic_problem_verify(t.problem, cut, &c, &err);
+                CHECK(st == IC_OK && c.checked && !c.accepted && strstr(c.reason, "not traced"),
+                      "the document without its curve is not refused: %s",
+                      st == IC_OK ? c.reason : err.message);
+                free(cut);
+            }
+        }
+    }
+    ic_free(out);
+    ic_free(doc);
+    release(&t);
+}
+
 int main(int argc, char **argv)
 {
     const char *src = argc > 1 ? argv[1] : ".";
@@ -286,5 +333,6 @@ int main(int argc, char **argv)
     sweep_seam_touch(src);
     sweep_cusp_corners();
     mutations();
+    public_verify();
     return harness_finish("test_certificate_boundary");
 }

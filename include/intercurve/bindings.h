@@ -55,6 +55,24 @@ IC_API IC_NODISCARD ic_status ic_trace_json_alloc(char **json, size_t *len,
                                                   const ic_pair *pair, ic_error *err);
 
 /**
+ * Checks a saved trace document (the JSON text of `intercurve trace`, NUL
+ * terminated) of the problem again with the independent checker, without
+ * the tracer, as `intercurve verify` does (docs/tracing.md, "The
+ * certificate"): *out the checker's summary, out->accepted its verdict.
+ * IC_OK whatever the verdict; IC_ERR_INVALID for a document that is not a
+ * trace of this problem's kind (the message says where), IC_ERR_NOMEM.
+ */
+IC_API IC_NODISCARD ic_status ic_problem_verify(const ic_problem *problem,
+                                                const char *trace_json,
+                                                ic_trace_certificate *out, ic_error *err);
+
+/** The same, the summary as the JSON text {"certificate": {...}}
+ *  (ic_certificate_write_json) in *json (*len bytes; freed with ic_free). */
+IC_API IC_NODISCARD ic_status ic_problem_verify_json(char **json, size_t *len,
+                                                     const ic_problem *problem,
+                                                     const char *trace_json, ic_error *err);
+
+/**
  * The point document of `intercurve point` (ic_local_write_json) as a
  * NUL-terminated text in *json (*len bytes; freed with ic_free): the point
  * of the problem found by ic_local_find from `values` (count 3 coordinates,

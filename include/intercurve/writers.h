@@ -59,6 +59,12 @@ IC_API IC_NODISCARD ic_status ic_local_write_json(FILE *f, const ic_local_result
  *  significant digits, one value per line. IC_ERR_IO on a write error. */
 IC_API IC_NODISCARD ic_status ic_local_write_text(FILE *f, const ic_local_result *res, ic_error *err);
 
+/** A certificate's summary as the JSON object {"certificate": {...}} with
+ *  the keys of the trace document's report.certificate
+ *  (docs/output-formats.md) and a newline: IC_ERR_IO on a write error. */
+IC_API IC_NODISCARD ic_status ic_certificate_write_json(FILE *f, const ic_trace_certificate *c,
+                                                        ic_error *err);
+
 /** The trace document (`intercurve trace`,
  *  docs/output-formats.md): {"curves", "points", "report"} of a result of
  *  ic_trace on `pair`, as one JSON object and a newline. Numbers round-trip

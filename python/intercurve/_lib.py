@@ -104,6 +104,7 @@ def _declare(lib):
         "ic_trace_result_free": (None, [vp]),
         "ic_pair_free": (None, [vp]),
         "ic_trace_json_alloc": (status, [pcp, psz, vp, vp, err]),
+        "ic_problem_verify_json": (status, [pcp, psz, vp, c.c_char_p, err]),
         "ic_problem_point_json": (status, [pcp, psz, vp, c.POINTER(c.c_double), c.c_int,
                                            c.c_int, c.c_int, c.c_char_p, c.c_double, err]),
         "ic_problem_plot": (status, [c.c_char_p, vp, vp, c.c_int, c.c_int, c.c_double,

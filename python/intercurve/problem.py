@@ -156,6 +156,24 @@ class Problem:
                        threads=threads)
         return TraceResult(document, self, options, (res, pair))
 
+    def verify(self, trace):
+        """Checks a trace of this problem again with the independent checker,
+        without the tracer, as `intercurve verify` (docs/tracing.md, "The
+        certificate"): trace is a TraceResult, a trace document (dict) or
+        its JSON text. Returns the checker's summary, the keys of
+        report["certificate"]; its "accepted" is the verdict. InputError
+        for a document that is not a trace of this problem's kind."""
+        if isinstance(trace, TraceResult):
+            trace = trace.document
+        text = trace if isinstance(trace, str) else json.dumps(trace)
+        lib = _lib.library()
+        buf, length, err = ctypes.c_void_p(), ctypes.c_size_t(), _lib.new_error()
+        with self._lock:
+            st = lib.ic_problem_verify_json(ctypes.byref(buf), ctypes.byref(length),
+                                            self._handle, text.encode(), ctypes.byref(err))
+            _lib.check(st, err)
+        return json.loads(_lib.take_text(buf, length))["certificate"]
+
     def point(self, at=None, params=None, order=None, method="auto", point_tol=None):
         """The intersection's apparatus at one point, as `intercurve point`:
         the point by its coordinates `at` (x, y, z) or by `params` (the

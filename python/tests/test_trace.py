@@ -159,3 +159,18 @@ def test_implicit_pair_without_box_is_an_input_error():
                                            {"type": "implicit", "f": "z"}]})
     with pytest.raises(ic.InputError, match="box"):
         p.trace()
+
+
+def test_verify_again(viviani_trace):
+    # the checker run again on the saved document, without the tracer: the
+    # same verdict and the same cover (it is deterministic)
+    p = ic.Problem.load(example("viviani-implicit.json"))
+    again = p.verify(viviani_trace)
+    assert again["accepted"] is True and again["reason"] is None
+    assert again["cells"] == viviani_trace.report["certificate"]["cells"]
+    # with its curve taken out the document is refused: an arc not traced
+    doc = dict(viviani_trace.document, curves=[])
+    refused = p.verify(doc)
+    assert refused["accepted"] is False and "not traced" in refused["reason"]
+    with pytest.raises(ic.InputError):
+        p.verify("not a document")

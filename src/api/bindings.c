@@ -48,6 +48,7 @@ ic_status ic_problem_trace(ic_trace_result **res, ic_pair **pair, const ic_probl
 typedef struct {
     const ic_trace_result *trace;
     const ic_local_result *point;
+    const ic_trace_certificate *certificate;
     const ic_pair *pair;
     int order;
 } document;
@@ -61,8 +62,9 @@ static ic_status write_memory(char **json, size_t *len, const document *d, ic_er
         *json = NULL;
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory for the document");
     }
-    ic_status st = d->trace ? ic_trace_write_json(mem, d->trace, d->pair, err)
-                            : ic_local_write_json(mem, d->point, d->pair, d->order, err);
+    ic_status st = d->trace         ? ic_trace_write_json(mem, d->trace, d->pair, err)
+                   : d->certificate ? ic_certificate_write_json(mem, d->certificate, err)
+                                    : ic_local_write_json(mem, d->point, d->pair, d->order, err);
     /* a memory stream fails only for want of memory */
     if (fclose(mem) != 0 || st == IC_ERR_IO)
         st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory for the document");
@@ -82,7 +84,30 @@ ic_status ic_trace_json_alloc(char **json, size_t *len, const ic_trace_result *r
     IC_ARG_NOT_NULL(json, "json");
     IC_ARG_NOT_NULL(res, "res");
     IC_ARG_NOT_NULL(pair, "pair");
-    const document d = {res, NULL, pair, 0};
+    const document d = {res, NULL, NULL, pair, 0};
+    return write_memory(json, len, &d, err);
+}
+
+ic_status ic_problem_verify(const ic_problem *problem, const char *trace_json,
+                            ic_trace_certificate *out, ic_error *err)
+{
+    IC_ARG_NOT_NULL(problem, "problem");
+    IC_ARG_NOT_NULL(trace_json, "trace_json");
+    IC_ARG_NOT_NULL(out, "out");
+    return ic_api_verify(problem, trace_json, "the trace document", out, err);
+}
+
+ic_status ic_problem_verify_json(char **json, size_t *len, const ic_problem *problem,
+                                 const char *trace_json, ic_error *err)
+{
+    IC_ARG_NOT_NULL(json, "json");
+    *json = NULL;
+    IC_ARG_NOT_NULL(problem, "problem");
+    ic_trace_certificate c;
+    const ic_status st = ic_problem_verify(problem, trace_json, &c, err);
+    if (st != IC_OK)
+        return st;
+    const document d = {NULL, NULL, &c, NULL, 0};
     return write_memory(json, len, &d, err);
 }
 
@@ -117,7 +142,7 @@ ic_status ic_problem_point_json(char **json, size_t *len, const ic_problem *prob
     if (st == IC_OK)
         st = ic_local_apparatus(pair, res, &pt, order, (ic_method)m, &opt, err);
     if (st == IC_OK) {
-        const document d = {NULL, res, pair, order};
+        const document d = {NULL, res, NULL, pair, order};
         st = write_memory(json, len, &d, err);
     }
     free(res);

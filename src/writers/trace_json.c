@@ -235,6 +235,18 @@ static void report_json(json_out *j, const ic_trace_report *rep)
     ic_json_out_end_object(j);
 }
 
+ic_status ic_certificate_write_json(FILE *f, const ic_trace_certificate *c, ic_error *err)
+{
+    IC_ARG_NOT_NULL(f, "f");
+    IC_ARG_NOT_NULL(c, "c");
+    json_out j;
+    ic_json_out_start(&j, f);
+    ic_json_out_object(&j);
+    write_certificate(&j, c);
+    ic_json_out_end_object(&j);
+    return ic_json_out_finish(&j, "certificate JSON", err);
+}
+
 ic_status ic_trace_write_json(FILE *f, const ic_trace_result *res, const ic_pair *pair,
                               ic_error *err)
 {

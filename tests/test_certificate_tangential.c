@@ -118,9 +118,44 @@ static void mutations(void)
     release(&t);
 }
 
+/* A torus (R, r) about the z axis resting on, or under, the plane z = +-r:
+ * one tangential circle of radius R, and no singular point (the torus's
+ * symmetry leaves none special; a tacnode was once reported on the top
+ * circle, a point found on its own and classified off the curve). */
+static void sweep_torus_circles(void)
+{
+    static const double K[][3] = {{2.0, 0.5, 1.0}, {3.0, 1.0, -1.0}, {2.5, 0.75, 1.0}};
+    tally t = {0};
+    for (int i = 0; i < 3; i++) {
+        const double R = K[i][0], r = K[i][1], side = K[i][2];
+        char json[600], name[80];
+        snprintf(json, sizeof json,
+                 "{\"surfaces\": [{\"type\": \"implicit\", \"f\": \"(x^2 + y^2 + z^2 + %.17g)^2 "
+                 "- %.17g*(x^2 + y^2)\"}, {\"type\": \"implicit\", \"f\": \"z - %.17g\"}], "
+                 "\"box\": [[%g, %g], [%g, %g], [%g, %g]]}",
+                 R * R - r * r, 4 * R * R, side * r, -(R + 2 * r), R + 2 * r, -(R + 2 * r),
+                 R + 2 * r, -2 * r, 2 * r);
+        snprintf(name, sizeof name, "torus (%g, %g) %s the plane", R, r,
+                 side > 0 ? "under" : "on");
+        traced tr;
+        if (trace_json(&tr, name, json) == 0) {
+            const ic_trace_result *res = tr.res;
+            const ic_trace_curve *c =
+                ic_trace_result_num_curves(res) == 1 ? ic_trace_result_curve(res, 0) : NULL;
+            judge(&t, &tr, name,
+                  c && c->tangential && c->closed && ic_trace_result_num_specials(res) == 0 &&
+                      harness_close(c->length, 2 * 3.14159265358979323846 * R, TIER_LENGTH, 1));
+        }
+        release(&tr);
+    }
+    CHECK(t.missed == 0 && t.right == 3, "torus circles: %d right of 3, %d of them not proven",
+          t.right, t.missed);
+}
+
 int main(void)
 {
     sweep_lines();
+    sweep_torus_circles();
     mutations();
     return harness_finish("test_certificate_tangential");
 }

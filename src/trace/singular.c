@@ -121,6 +121,48 @@ ic_status ic_trace_complete_branches(ic_trace_result *r, ic_tracer *tr, ic_pair 
     return IC_OK;
 }
 
+/* A kind of tangential point that a tangential curve's own points can be
+ * taken for (a branch point is a curve meeting it: kept). */
+static int point_of_tangential_curve(ic_point_type t)
+{
+    return t == IC_POINT_ISOLATED_CONTACT || t == IC_POINT_CUSP || t == IC_POINT_TACNODE ||
+           t == IC_POINT_HIGHER_ORDER_CONTACT || t == IC_POINT_TANGENTIAL;
+}
+
+static double dist3(const double *a, const double *b)
+{
+    return hypot(hypot(a[0] - b[0], a[1] - b[1]), a[2] - b[2]);
+}
+
+/* x lies within radius of a tangential curve, and of no curve's end. */
+static int inside_tangential(const ic_trace_result *r, const double *x, double radius)
+{
+    int on = 0;
+    for (int c = 0; c < r->ncurves; c++) {
+        const ic_trace_curve *cv = &r->curves[c];
+        if (!cv->closed && (dist3(cv->points[0].xyz, x) <= radius ||
+                            dist3(cv->points[cv->npoints - 1].xyz, x) <= radius))
+            return 0;
+        on = on || (cv->tangential &&
+                    ic_trace_polyline_distance(cv->points, cv->npoints, x, radius) <= radius);
+    }
+    return on;
+}
+
+/* A point found on its own beside a tangential curve (located within
+ * rounding of it, where the jet's classification sees the curve's
+ * neighbourhood askew: a tacnode on a torus's contact circle) is that
+ * curve's point. */
+void ic_trace_drop_points_on_tangential(ic_trace_result *r, double radius)
+{
+    int n = 0;
+    for (int k = 0; k < r->nspecials; k++)
+        if (!point_of_tangential_curve(r->specials[k].type) ||
+            !inside_tangential(r, r->specials[k].xyz, radius))
+            r->specials[n++] = r->specials[k];
+    r->nspecials = n;
+}
+
 /* Looks for a tangential point in an unresolved cell: this is how isolated
  * contacts, which have no curve to lead to them, are found. */
 ic_status ic_trace_tangential_in_cell(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,

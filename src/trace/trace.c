@@ -112,6 +112,8 @@ static ic_status finish(ic_trace_result *r, ic_pair *pair, pipeline *p, ic_statu
         ic_trace_join_curves(r, pair, opt->shape_tol,
                              IC_TRACE_POLE_GAP_CHORDS * opt->chord) != IC_OK)
         st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory joining curves");
+    if (st == IC_OK)
+        ic_trace_drop_points_on_tangential(r, IC_TRACE_SAME_APPROX * r->scale);
     /* a surface's singular point counted the curve ends met there: two a branch */
     for (int k = 0; k < r->nspecials; k++)
         if (r->specials[k].type == IC_POINT_SURFACE_SINGULAR)

@@ -126,6 +126,10 @@ ic_status ic_trace_complete_branches(ic_trace_result *r, ic_tracer *tr, ic_pair 
                                      const ic_trace_options *opt);
 ic_status ic_trace_tangential_in_cell(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
                                       const ic_unresolved *u, const ic_trace_options *opt);
+/* Drops the tangential points (contacts, cusps, tacnodes, higher-order
+ * contacts, unclassified) within radius of a tangential curve and of no
+ * curve's end: points of that curve, classified off it. */
+void ic_trace_drop_points_on_tangential(ic_trace_result *r, double radius);
 
 /* Curve points just before a located singular point pts[n] (the curve's
  * end, continued by branch br with orientation sg) where the normals are

@@ -10,7 +10,10 @@
  *     radii, the seam at u = +-pi or 0, periodic or a plain domain edge;
  *   - the cusp c u^3 = v^2 of z = c u^3 - v^2 and z = 0 on u in [-1, 1],
  *     v in [-sqrt c, sqrt c]: both branches end in corners of the domain,
- *     six values of c, the plane implicit and parametric.
+ *     six values of c, the plane implicit and parametric;
+ *   - the Whitney umbrella's self-intersection on six domains: the double
+ *     curve from the pinch point, where its two preimages meet on the
+ *     diagonal, of length min(a, b)^2.
  * Mutations of the proven Viviani trace (through both poles): the curve
  * dropped, and cut 0.05 short of a pole: each refused.
  *
@@ -194,6 +197,42 @@ static void sweep_cusp_corners(void)
           mixed.right, params.right, mixed.missed, params.missed);
 }
 
+/* Whitney umbrellas (u v, v, u^2) on u in [-a, b], v in [-c, d]: the
+ * double curve x = y = 0, z = u^2 from the pinch point (its preimages
+ * (u, 0) and (-u, 0) meet on the diagonal there) to z = min(a, b)^2, that
+ * long; the pinch point's box holds the cells beside the diagonal. */
+static void sweep_pinch(void)
+{
+    static const double D[][4] = {{1.2, 1.5, 0.7, 1.1}, {1.0, 0.8, 0.9, 0.6},
+                                  {0.5, 0.9, 1.3, 0.4}, {1.7, 1.1, 0.6, 0.8},
+                                  {0.9, 0.6, 0.5, 1.2}, {1.4, 1.3, 1.0, 0.7}};
+    tally all = {0};
+    for (int i = 0; i < 6; i++) {
+        const double *d = D[i], m = fmin(d[0], d[1]);
+        char json[600], name[80];
+        snprintf(json, sizeof json,
+                 "{\"surfaces\": [{\"type\": \"parametric\", \"xyz\": [\"u*v\", \"v\", "
+                 "\"u^2\"], \"domain\": [[%.17g, %.17g], [%.17g, %.17g]]}], \"self\": true}",
+                 -d[0], d[1], -d[2], d[3]);
+        snprintf(name, sizeof name, "Whitney umbrella on [-%g, %g] x [-%g, %g]", d[0], d[1],
+                 d[2], d[3]);
+        traced t;
+        memset(&t, 0, sizeof t);
+        ic_error err;
+        ic_trace_defaults(&t.opt);
+        ic_status st = ic_problem_parse(&t.problem, json, strlen(json), &err);
+        if (st == IC_OK)
+            st = ic_pair_new(&t.pair, ic_problem_surface(t.problem, 0), NULL, &err);
+        if (st == IC_OK)
+            st = ic_trace(&t.res, t.pair, &t.opt, &err);
+        if (REQUIRE(st == IC_OK, "%s: %s", name, err.message))
+            judge(&all, &t, name, total_length_right(t.res, m * m));
+        release(&t);
+    }
+    CHECK(all.missed == 0 && all.right == 6,
+          "Whitney umbrellas: %d right of 6, %d of them not proven", all.right, all.missed);
+}
+
 /* Curve 0 of t with the points within r of p (xyz) taken out: the open
  * curve from the first point after them round to the last before (search
  * coordinates, malloc'd: *n points), or NULL when none lies that close. */
@@ -332,6 +371,7 @@ int main(int argc, char **argv)
     sweep_poles(src);
     sweep_seam_touch(src);
     sweep_cusp_corners();
+    sweep_pinch();
     mutations();
     public_verify();
     return harness_finish("test_certificate_boundary");

@@ -210,9 +210,16 @@ int ic_certify_leaf(ic_certificate *c, long i, const ic_certify_limits *lim)
     }
     double shift[2];
     if (c->pg->kind == &ic_pairing_self && near_diagonal(c, X, shift)) {
-        if (!only_diagonal(c, X, shift))
+        if (only_diagonal(c, X, shift)) {
+            cl->kind = IC_CELL_DIAGONAL;
+            return 1;
+        }
+        /* beside the diagonal the trivial solutions fill the cell: it is
+         * never regular, and singular when a box holds it (a pinch point
+         * where the double curve's two preimages meet) */
+        if (!ic_certificate_in_singular_box(c, i))
             return 0;
-        cl->kind = IC_CELL_DIAGONAL;
+        cl->kind = IC_CELL_SINGULAR;
         return 1;
     }
     /* in a singular box or a tube nothing more is examined: not even

@@ -32,6 +32,8 @@ static inline void release(traced *t)
     memset(t, 0, sizeof *t);
 }
 
+/* A problem's JSON text traced with the defaults (a self-intersection
+ * with its one surface, as `intercurve trace` pairs it). */
 static inline int trace_json(traced *t, const char *name, const char *json)
 {
     ic_error err;
@@ -41,11 +43,38 @@ static inline int trace_json(traced *t, const char *name, const char *json)
     if (st == IC_OK) {
         t->opt.has_box = ic_problem_box(t->problem, t->opt.box);
         st = ic_pair_new(&t->pair, ic_problem_surface(t->problem, 0),
-                         ic_problem_surface(t->problem, 1), &err);
+                         ic_problem_is_self(t->problem) ? NULL
+                                                        : ic_problem_surface(t->problem, 1),
+                         &err);
     }
     if (st == IC_OK)
         st = ic_trace(&t->res, t->pair, &t->opt, &err);
     return REQUIRE(st == IC_OK, "%s: %s", name, err.message) ? 0 : -1;
+}
+
+/* The first `want` rows of ncols numbers (at most 4) of the truth file
+ * tests/truth/NAME under src, lines starting with '#' skipped, into out
+ * (row after row): 0, or -1 when the file or a row is missing. */
+static inline int read_truth_rows(const char *src, const char *name, int ncols, int want,
+                                  double *out)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/tests/truth/%s", src, name);
+    FILE *f = fopen(path, "r");
+    if (!REQUIRE(f, "cannot open %s", path))
+        return -1;
+    char line[256];
+    int n = 0;
+    while (n < want && fgets(line, sizeof line, f)) {
+        double v[4];
+        if (line[0] != '#' &&
+            sscanf(line, "%lf %lf %lf %lf", &v[0], &v[1], &v[2], &v[3]) >= ncols) {
+            memcpy(out + (size_t)n * (size_t)ncols, v, (size_t)ncols * sizeof *v);
+            n++;
+        }
+    }
+    fclose(f);
+    return REQUIRE(n == want, "%s: %d rows (want %d)", path, n, want) ? 0 : -1;
 }
 
 /* The verdicts of a sweep: `right` counts the tracer's right answers,

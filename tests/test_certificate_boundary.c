@@ -38,18 +38,12 @@ typedef struct {
 
 static int read_truth(const char *src, viviani_truth *t)
 {
-    char path[1024];
-    snprintf(path, sizeof path, "%s/tests/truth/certificate_viviani.txt", src);
-    FILE *f = fopen(path, "r");
-    if (!REQUIRE(f, "cannot open %s", path))
+    double rows[NRADII][2];
+    if (read_truth_rows(src, "certificate_viviani.txt", 2, NRADII, &rows[0][0]) != 0)
         return -1;
-    char line[256];
-    int n = 0;
-    while (n < NRADII && fgets(line, sizeof line, f))
-        if (line[0] != '#' && sscanf(line, "%lf %lf", &t->a[n], &t->L[n]) == 2)
-            n++;
-    fclose(f);
-    return REQUIRE(n == NRADII, "%s: %d rows (want %d)", path, n, NRADII) ? 0 : -1;
+    for (int i = 0; i < NRADII; i++)
+        t->a[i] = rows[i][0], t->L[i] = rows[i][1];
+    return 0;
 }
 
 /* The curves' lengths add up to want, to TIER_LENGTH (the tracer may cut a
@@ -217,15 +211,7 @@ static void sweep_pinch(void)
         snprintf(name, sizeof name, "Whitney umbrella on [-%g, %g] x [-%g, %g]", d[0], d[1],
                  d[2], d[3]);
         traced t;
-        memset(&t, 0, sizeof t);
-        ic_error err;
-        ic_trace_defaults(&t.opt);
-        ic_status st = ic_problem_parse(&t.problem, json, strlen(json), &err);
-        if (st == IC_OK)
-            st = ic_pair_new(&t.pair, ic_problem_surface(t.problem, 0), NULL, &err);
-        if (st == IC_OK)
-            st = ic_trace(&t.res, t.pair, &t.opt, &err);
-        if (REQUIRE(st == IC_OK, "%s: %s", name, err.message))
+        if (trace_json(&t, name, json) == 0)
             judge(&all, &t, name, total_length_right(t.res, m * m));
         release(&t);
     }

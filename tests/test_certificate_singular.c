@@ -33,19 +33,12 @@ typedef struct {
 
 static int read_truth(const char *src, branch_truth *t)
 {
-    char path[1024];
-    snprintf(path, sizeof path, "%s/tests/truth/certificate_branch_cylinders.txt", src);
-    FILE *f = fopen(path, "r");
-    if (!REQUIRE(f, "cannot open %s", path))
+    double rows[NANGLES][3];
+    if (read_truth_rows(src, "certificate_branch_cylinders.txt", 3, NANGLES, &rows[0][0]) != 0)
         return -1;
-    char line[256];
-    int n = 0;
-    while (n < NANGLES && fgets(line, sizeof line, f))
-        if (line[0] != '#' &&
-            sscanf(line, "%lf %lf %lf", &t->degrees[n], &t->L1[n], &t->L2[n]) == 3)
-            n++;
-    fclose(f);
-    return REQUIRE(n == NANGLES, "%s: %d rows (want %d)", path, n, NANGLES) ? 0 : -1;
+    for (int i = 0; i < NANGLES; i++)
+        t->degrees[i] = rows[i][0], t->L1[i] = rows[i][1], t->L2[i] = rows[i][2];
+    return 0;
 }
 
 /* Two branch points at (0, 0, +-1), each of two branches, within

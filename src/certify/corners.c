@@ -133,6 +133,9 @@ static int touch_near(const ic_certificate *c, const ic_certify_curve *cv, int i
         ic_certificate_wrap(c, z, q);
         q[k] = face;
         memcpy(on_face, q, sizeof on_face);
+        /* near: a tenth of a box's half width, taken in search coordinates
+         * (parameters of about unit speed; the box is a hole wherever it
+         * lands, so this only decides whether it lands on the touch) */
         if (!ic_certify_project(c, q, k) && !ic_certify_project(c, q, k) &&
             !ic_certify_near_curve(c, q, 0.1 * c->singular_half)) {
             /* where the face's Jacobian is singular at the touch itself

@@ -38,7 +38,7 @@
  * values past its domain). */
 #define IC_CERTIFY_POLE_REACH 1e-2
 /* Cells one short chord crosses at most: examined ones, and any. */
-#define IC_CERTIFY_CHORD_CELLS 1024
+#define IC_CERTIFY_CHORD_CELLS 64
 #define IC_CERTIFY_CHORD_CELLS_ANY 4096
 /* The chord across a face, found by halving along the curve, is shorter
  * than this fraction of the cell it leaves. */

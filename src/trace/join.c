@@ -10,18 +10,21 @@
 #include <string.h>
 
 /* Two ends at one place of the sheets' parameters too (each parametric
- * sheet's within IC_TRACE_TOUCH_GAP of the larger magnitude, at least 1):
- * not the two sides of a seam that is a plain domain edge, which meet in
- * space only. */
-static int same_params(const ic_trace_point *a, const ic_trace_point *b)
+ * sheet's within IC_TRACE_TOUCH_GAP of its domain's width): not the two
+ * sides of a seam that is a plain domain edge, which meet in space only. */
+static int same_params(const ic_pairing *pg, const ic_trace_point *a, const ic_trace_point *b)
 {
-    for (int s = 0; s < 2; s++)
-        for (int k = 0; k < 2; k++) {
-            const double x = a->params[s][k], y = b->params[s][k];
-            if (isfinite(x) && isfinite(y) &&
-                fabs(x - y) > IC_TRACE_TOUCH_GAP * fmax(1.0, fmax(fabs(x), fabs(y))))
+    for (int s = 0; s < 2; s++) {
+        if (!pg->par[s])
+            continue;
+        double dom[2][2];
+        int periodic[2];
+        ic_surface_get_domain(pg->S[s], dom, periodic);
+        for (int k = 0; k < 2; k++)
+            if (!(fabs(a->params[s][k] - b->params[s][k]) <=
+                  IC_TRACE_TOUCH_GAP * (dom[k][1] - dom[k][0])))
                 return 0;
-        }
+    }
     return 1;
 }
 
@@ -227,7 +230,8 @@ ic_status ic_trace_join_curves(ic_trace_result *r, ic_pair *pair, double shape_t
                              * (a cap past an edge): not joined, unless
                              * it is a touch of the edge */
                             const int touch =
-                                dist <= IC_TRACE_TOUCH_GAP * r->scale && same_params(pa, pb);
+                                dist <= IC_TRACE_TOUCH_GAP * r->scale &&
+                                same_params(ic_pair_pairing(pair), pa, pb);
                             if (dist > reach || ic_dot3(oa, ob) > -cos(turn) ||
                                 fabs(ic_dot3(d, t0)) < 0.9 * dist ||
                                 (!touch && ic_dot3(d, t0) < 0) ||

@@ -109,8 +109,9 @@
 #define IC_TRACE_EXCURSION_TOLS 4.0
 #define IC_TRACE_EXCURSION_SECTIONS 40
 
-/* relative (of the problem's size): two ends that left the domain this
- * close together, each continuing the other, are one curve touching the
+/* relative (of the problem's size, and of a domain's width for the
+ * sheets' parameters): two ends that left the domain this close together,
+ * each continuing the other, are one curve touching the
  * domain's edge (Viviani's curve on a sphere whose seam is a plain edge):
  * near the touch the curve lies within rounding of the edge over a stretch
  * of order sqrt(eps), 2.4e-8 measured, and the tracer stops on both sides

@@ -32,13 +32,16 @@ static inline void release(traced *t)
     memset(t, 0, sizeof *t);
 }
 
-/* A problem's JSON text traced with the defaults (a self-intersection
- * with its one surface, as `intercurve trace` pairs it). */
-static inline int trace_json(traced *t, const char *name, const char *json)
+/* A problem's JSON text traced with the defaults but a time limit in
+ * seconds (0: none), a self-intersection with its one surface, as
+ * `intercurve trace` pairs it. */
+static inline int trace_json_limited(traced *t, const char *name, const char *json,
+                                     double time_limit)
 {
     ic_error err;
     memset(t, 0, sizeof *t);
     ic_trace_defaults(&t->opt);
+    t->opt.time_limit = time_limit;
     ic_status st = ic_problem_parse(&t->problem, json, strlen(json), &err);
     if (st == IC_OK) {
         t->opt.has_box = ic_problem_box(t->problem, t->opt.box);
@@ -50,6 +53,12 @@ static inline int trace_json(traced *t, const char *name, const char *json)
     if (st == IC_OK)
         st = ic_trace(&t->res, t->pair, &t->opt, &err);
     return REQUIRE(st == IC_OK, "%s: %s", name, err.message) ? 0 : -1;
+}
+
+/* The same with the defaults. */
+static inline int trace_json(traced *t, const char *name, const char *json)
+{
+    return trace_json_limited(t, name, json, 0.0);
 }
 
 /* The first `want` rows of ncols numbers (at most 4) of the truth file

@@ -165,6 +165,10 @@ static void surface_args(fixture *fx)
     BAD(ic_surface_eval_interval_grad, "s", ic_surface_eval_interval_grad(NULL, ig, box, &err));
     BAD(ic_surface_eval_interval_grad, "out", ic_surface_eval_interval_grad(fx->A, NULL, box, &err));
     BAD(ic_surface_eval_interval_grad, "in", ic_surface_eval_interval_grad(fx->A, ig, NULL, &err));
+    ic_interval_hess ih[3];
+    BAD(ic_surface_eval_interval_hess, "s", ic_surface_eval_interval_hess(NULL, ih, box, &err));
+    BAD(ic_surface_eval_interval_hess, "out", ic_surface_eval_interval_hess(fx->A, NULL, box, &err));
+    BAD(ic_surface_eval_interval_hess, "in", ic_surface_eval_interval_hess(fx->A, ih, NULL, &err));
     ic_surface_geometry g;
     BAD(ic_surface_geometry_at, "s", ic_surface_geometry_at(NULL, &g, at, &err));
     BAD(ic_surface_geometry_at, "g", ic_surface_geometry_at(fx->A, NULL, at, &err));
@@ -317,6 +321,18 @@ static void expr_args(fixture *fx)
               ic_expr_eval_interval_grad(fx->expr, &gout, NULL, 2, gwork) == 0 &&
               ic_expr_eval_interval_grad(fx->expr, &gout, gx, 2, NULL) == 0,
           "eval_interval_grad NULL gives 0");
+    ic_interval_hess hx[2] = {{.v = {0, 1}, .d = {{1, 1}}}, {.v = {0, 1}, .d = {{0, 0}, {1, 1}}}};
+    ic_interval_hess hout, hwork[64];
+    CHECK(ic_expr_interval_hess_work_len(NULL) == 0 &&
+              ic_expr_eval_interval_hess(NULL, &hout, hx, 2, hwork) == 0 &&
+              ic_expr_eval_interval_hess(fx->expr, NULL, hx, 2, hwork) == 0 &&
+              ic_expr_eval_interval_hess(fx->expr, &hout, NULL, 2, hwork) == 0 &&
+              ic_expr_eval_interval_hess(fx->expr, &hout, hx, 2, NULL) == 0 &&
+              ic_expr_eval_interval_hess(fx->expr, &hout, hx, 4, hwork) == 0,
+          "eval_interval_hess NULL or too many directions gives 0");
+    CHECK(ic_interval_hess_index(0, 0) == 0 && ic_interval_hess_index(2, 1) == 4 &&
+              ic_interval_hess_index(1, 2) == 4 && ic_interval_hess_index(2, 2) == 5,
+          "Hessian entries in the order (0,0) (0,1) (0,2) (1,1) (1,2) (2,2)");
     double ja[64], jb[64], jout[64], jwork[4096];
     const double *jx[2] = {ja, jb};
     REQUIRE(ic_expr_jet_work_len(fx->expr, fx->sp) <= 4096, "jet work too small");

@@ -122,6 +122,33 @@ IC_API size_t ic_expr_interval_grad_work_len(const ic_expr *e);
 IC_API int ic_expr_eval_interval_grad(const ic_expr *e, ic_interval_grad *out,
                                       const ic_interval_grad *x, int ngrad, ic_interval_grad *work);
 
+/** Entries of a symmetric Hessian over IC_INTERVAL_GRAD_MAX directions,
+ * (0,0) (0,1) (0,2) (1,1) (1,2) (2,2): see ic_interval_hess_index. */
+#define IC_INTERVAL_HESS_LEN 6
+
+/** An enclosure of a value, of its first and of its second derivatives. */
+typedef struct {
+    ic_interval v;
+    ic_interval d[IC_INTERVAL_GRAD_MAX];
+    ic_interval h[IC_INTERVAL_HESS_LEN];
+} ic_interval_hess;
+
+/** The place of the second derivative along directions j and k in h. */
+IC_API int ic_interval_hess_index(int j, int k);
+/** ic_interval_hess elements of work memory for ic_expr_eval_interval_hess. */
+IC_API size_t ic_expr_interval_hess_work_len(const ic_expr *e);
+/**
+ * Second-order forward mode on intervals, as ic_expr_eval_interval_grad:
+ * x[i] holds variable i's interval, its derivatives (the identity for a
+ * Hessian) and its second derivatives (0). out[i].h then encloses formula
+ * i's second derivatives at every point of the box. Returns 1 when every
+ * operation and its first two derivatives are defined over the whole box;
+ * 0 otherwise, also where abs's argument holds 0 and for atan2, whose
+ * second derivatives are not written: the result then proves nothing.
+ */
+IC_API int ic_expr_eval_interval_hess(const ic_expr *e, ic_interval_hess *out,
+                                      const ic_interval_hess *x, int ngrad, ic_interval_hess *work);
+
 /** Doubles of work memory for ic_expr_eval_jet in space sp. */
 IC_API size_t ic_expr_jet_work_len(const ic_expr *e, const ic_jet_space *sp);
 /**

@@ -252,6 +252,16 @@ IC_API IC_NODISCARD ic_status ic_surface_eval_interval(ic_surface *s, ic_interva
 IC_API IC_NODISCARD ic_status ic_surface_eval_interval_grad(ic_surface *s, ic_interval_grad *out,
                                                             const ic_interval *in, ic_error *err);
 
+/**
+ * The same to second order (expr.h, ic_interval_hess): out[3] or out[1] as
+ * above, h enclosing the second derivatives over the box. Formula surfaces
+ * and implicit quadric primitives (IC_ERR_UNABLE otherwise: tori, parametric
+ * primitives, NURBS, callbacks); IC_ERR_DOMAIN where the formula or its
+ * first two derivatives are not defined over the whole box.
+ */
+IC_API IC_NODISCARD ic_status ic_surface_eval_interval_hess(ic_surface *s, ic_interval_hess *out,
+                                                            const ic_interval *in, ic_error *err);
+
 /** Local geometry of a surface at a point (see the conventions above). */
 typedef struct {
     double point[3];       /**< R(u, v); implicit: the given point */

@@ -94,6 +94,34 @@ int ic_certify_centre(const ic_pairing *pg, const ic_interval *X, double *c,
     return ic_certify_enclose(pg, C, at);
 }
 
+/* The same to second order (ic_pairing_taylor2_excludes), for two implicit
+ * surfaces with second-order enclosures: where they nearly coincide, y.J
+ * over X is of the order of the cell's width, y.H of the gap. */
+static int row_excludes_second(const ic_pairing *pg, const double *y, const ic_certify_eval *at,
+                               const ic_interval *X, const double *c)
+{
+    if (pg->kind->dim != 3)
+        return 0;
+    ic_interval_hess H[2];
+    for (int s = 0; s < 2; s++)
+        if (ic_surface_eval_interval_hess(pg->S[s], &H[s], X, NULL) != IC_OK)
+            return 0;
+    ic_interval hc = {0.0, 0.0}, gc[3], Hy[IC_INTERVAL_HESS_LEN];
+    for (int s = 0; s < 2; s++)
+        hc = ic_interval_add(hc, ic_interval_mul((ic_interval){y[s], y[s]}, at->F[s]));
+    for (int k = 0; k < 3; k++) {
+        gc[k] = (ic_interval){0.0, 0.0};
+        for (int s = 0; s < 2; s++)
+            gc[k] = ic_interval_add(gc[k], ic_interval_mul((ic_interval){y[s], y[s]}, at->J[s][k]));
+    }
+    for (int i = 0; i < IC_INTERVAL_HESS_LEN; i++) {
+        Hy[i] = (ic_interval){0.0, 0.0};
+        for (int s = 0; s < 2; s++)
+            Hy[i] = ic_interval_add(Hy[i], ic_interval_mul((ic_interval){y[s], y[s]}, H[s].h[i]));
+    }
+    return ic_pairing_taylor2_excludes(hc, gc, Hy, X, c, 3);
+}
+
 int ic_certify_excludes_centred(const ic_pairing *pg, const ic_interval *X,
                                 const ic_certify_eval *over, const double *c,
                                 const ic_certify_eval *at)
@@ -107,7 +135,8 @@ int ic_certify_excludes_centred(const ic_pairing *pg, const ic_interval *X,
                 const double jb = 0.5 * (at->J[b][k].lo + at->J[b][k].hi);
                 A[a][b] += ja * jb;
             }
-    if (least_vector(A, m, y) && row_excludes(y, m, dim, at, over, X, c))
+    const int have_row = least_vector(A, m, y);
+    if (have_row && row_excludes(y, m, dim, at, over, X, c))
         return 1;
     for (int i = 0; i < m; i++) { /* each equation alone, centred */
         double e[3] = {0, 0, 0};
@@ -115,5 +144,5 @@ int ic_certify_excludes_centred(const ic_pairing *pg, const ic_interval *X,
         if (row_excludes(e, m, dim, at, over, X, c))
             return 1;
     }
-    return 0;
+    return have_row && row_excludes_second(pg, y, at, X, c);
 }

@@ -53,6 +53,10 @@ ic_interval ic_interval_op(const ic_instr *in, ic_interval a, ic_interval b);
 /* 1 when the operation is defined at every point of the enclosures a, b. */
 int ic_interval_op_defined(const ic_instr *in, ic_interval a, ic_interval b);
 
+/* The factor f'(a) of the chain rule d op(a) = f'(a) da of a one-argument
+ * operation over the enclosure a, given v = op(a) (interval_grad.c). */
+ic_interval ic_interval_unary_factor(const ic_instr *in, ic_interval a, ic_interval v);
+
 /* Name of the operation as written in formulas ("sin", "+", ...). */
 const char *ic_op_name(ic_opcode op);
 

@@ -21,9 +21,7 @@ static ic_interval sq(ic_interval a) { return ic_interval_pow_int(a, 2); }
 
 size_t ic_expr_interval_grad_work_len(const ic_expr *e) { return e ? (size_t)e->len : 0; }
 
-/* The factor f'(a) of the chain rule d op(a) = f'(a) da for one-argument
- * operations, given the value v = op(a). */
-static ic_interval unary_factor(const ic_instr *in, ic_interval a, ic_interval v)
+ic_interval ic_interval_unary_factor(const ic_instr *in, ic_interval a, ic_interval v)
 {
     switch (in->op) {
     case OP_NEG:
@@ -98,7 +96,7 @@ static void grad_op(const ic_instr *in, ic_interval_grad *r, const ic_interval_g
                                 ic_interval_add(sq(a), sq(b)));
             break;
         default:
-            d = ic_interval_mul(unary_factor(in, a, r->v), da);
+            d = ic_interval_mul(ic_interval_unary_factor(in, a, r->v), da);
             break;
         }
         r->d[k] = d;

@@ -168,4 +168,14 @@ int ic_pairing_sheet_may_degenerate(ic_surface *s, const double *lo, const doubl
 int ic_pairing_centred_excludes(ic_interval hc, const ic_interval *G, const double *lo,
                                 const double *hi, int n);
 
+/* The second-order Taylor form: h(c) + gc . (X - c) + (X - c)^T H (X - c) / 2
+ * excludes 0 over the n-dimensional cell X (n <= 3; Taylor's theorem with
+ * the Lagrange remainder, H enclosing h's Hessian over the convex cell, its
+ * entries placed by ic_interval_hess_index; hc and gc enclosing h and its
+ * gradient at the point c of X)? It separates surfaces that
+ * are nearly the same over a cell (concentric spheres 1e-9 apart), where
+ * first-order forms shrink the cell to the square root of the gap. */
+int ic_pairing_taylor2_excludes(ic_interval hc, const ic_interval *gc, const ic_interval *H,
+                                const ic_interval *X, const double *c, int n);
+
 #endif

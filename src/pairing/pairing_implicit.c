@@ -170,6 +170,25 @@ static int loop_free(const ic_pairing *p, const double *lo, const double *hi)
 
 /* Centred forms of f_A, f_B and f_B - mu f_A, mu making the combination's
  * gradient small at the centre (any common zero is a zero of it). */
+/* The Taylor form of h = f_B - mu f_A to second order (pairing.h): where
+ * the surfaces nearly coincide, h's gradient and Hessian nearly vanish. */
+static int second_order_excludes(const ic_pairing *p, const ic_interval *box,
+                                 const ic_interval *cbox, const ic_interval_grad *fc,
+                                 ic_interval mu, ic_interval hc)
+{
+    ic_interval_hess H[2];
+    for (int s = 0; s < 2; s++)
+        if (ic_surface_eval_interval_hess(p->S[s], &H[s], box, NULL) != IC_OK)
+            return 0;
+    ic_interval gc[3], Hh[IC_INTERVAL_HESS_LEN];
+    for (int k = 0; k < 3; k++)
+        gc[k] = ic_interval_sub(fc[1].d[k], ic_interval_mul(mu, fc[0].d[k]));
+    for (int i = 0; i < IC_INTERVAL_HESS_LEN; i++)
+        Hh[i] = ic_interval_sub(H[1].h[i], ic_interval_mul(mu, H[0].h[i]));
+    const double c[3] = {cbox[0].lo, cbox[1].lo, cbox[2].lo};
+    return ic_pairing_taylor2_excludes(hc, gc, Hh, box, c, 3);
+}
+
 static int excluded_centred(const ic_pairing *p, const double *lo, const double *hi)
 {
     ic_interval box[3], cbox[3];
@@ -197,7 +216,8 @@ static int excluded_centred(const ic_pairing *p, const double *lo, const double 
     for (int k = 0; k < 3; k++)
         G[k] = ic_interval_sub(f[1].d[k], ic_interval_mul(mu, f[0].d[k]));
     const ic_interval hc = ic_interval_sub(fc[1].v, ic_interval_mul(mu, fc[0].v));
-    return ic_pairing_centred_excludes(hc, G, lo, hi, 3);
+    return ic_pairing_centred_excludes(hc, G, lo, hi, 3) ||
+           second_order_excludes(p, box, cbox, fc, mu, hc);
 }
 
 static int may_degenerate(const ic_pairing *p, const double *lo, const double *hi)

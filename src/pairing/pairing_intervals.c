@@ -80,3 +80,22 @@ int ic_pairing_centred_excludes(ic_interval hc, const ic_interval *G, const doub
     }
     return ic_pairing_excludes_zero(sum);
 }
+
+int ic_pairing_taylor2_excludes(ic_interval hc, const ic_interval *gc, const ic_interval *H,
+                                const ic_interval *X, const double *c, int n)
+{
+    ic_interval dx[4], sum = hc;
+    for (int k = 0; k < n; k++) {
+        dx[k] = ic_interval_sub(X[k], ic_pairing_point(c[k]));
+        sum = ic_interval_add(sum, ic_interval_mul(gc[k], dx[k]));
+    }
+    const ic_interval half = {0.5, 0.5};
+    for (int j = 0; j < n; j++)
+        for (int k = j; k < n; k++) {
+            const ic_interval h = H[ic_interval_hess_index(j, k)];
+            const ic_interval term = j == k ? ic_interval_mul(half, ic_interval_pow_int(dx[j], 2))
+                                            : ic_interval_mul(dx[j], dx[k]);
+            sum = ic_interval_add(sum, ic_interval_mul(h, term));
+        }
+    return ic_pairing_excludes_zero(sum);
+}

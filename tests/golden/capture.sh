@@ -58,7 +58,7 @@ run() { # name, command...: the output and the exit status, both recorded
 # the first curves' points only: a case of thousands of curves would take minutes
 POINTS_PER_CASE=3
 # cases of a gigabyte in every format or 20 s a run: the json only
-HEAVY="tests/torture/eggcrate-k100.json tests/torture/near-spheres-1e-9.json"
+HEAVY="tests/torture/eggcrate-k100.json"
 # cases of 1.5 to 9 s a run (the certificate's tubes along a tangential
 # curve): the json, without the exact paths, and the text only; the other
 # formats are written by the same code for every other case

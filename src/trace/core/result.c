@@ -53,6 +53,7 @@ static void check_contact_place(ic_trace_result *r, ic_trace_special *s, ic_trac
     if (radius <= IC_TRACE_PLACE_REL * r->scale)
         return;
     s->approximate = 1;
+    loc->place_radius = radius;
     ic_trace_failure(&r->report,
                      "a contact point near (%.6g, %.6g, %.6g) is located only to about %.2g (a "
                      "contact of high order, a multiple root): its place and type are approximate",
@@ -78,28 +79,55 @@ static int grow_specials(ic_trace_result *r)
     return 0;
 }
 
+/* The first of the points 0 .. n - 1 that is the same as xyz (within
+ * IC_TRACE_SAME_APPROX L when either is approximate), or -1. */
+static int same_special(const ic_trace_result *r, int n, const double xyz[3], int approximate)
+{
+    for (int i = 0; i < n; i++) {
+        double d[3];
+        ic_axpy3(d, r->specials[i].xyz, -1.0, xyz);
+        const double same = (r->specials[i].approximate || approximate ? IC_TRACE_SAME_APPROX
+                                                                        : IC_TRACE_SAME_EXACT) *
+                            r->scale;
+        if (ic_norm3(d) < same)
+            return i;
+    }
+    return -1;
+}
+
+/* The first of the points before n that cannot be told from the
+ * approximate contact n: within IC_TRACE_SAME_APPROX L, or within twice
+ * the sum of the radii both are located to (ic_local_tangential_place
+ * gives them "about"); -1 when none. */
+static int same_approximate(const ic_trace_result *r, int n)
+{
+    for (int i = 0; i < n; i++) {
+        double d[3];
+        ic_axpy3(d, r->specials[i].xyz, -1.0, r->specials[n].xyz);
+        const double reach = 2.0 * (r->located[i].place_radius + r->located[n].place_radius);
+        if (ic_norm3(d) < fmax(IC_TRACE_SAME_APPROX * r->scale, reach))
+            return i;
+    }
+    return -1;
+}
+
 ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local_point *pt,
                                int approximate, const ic_trace_options *opt, int *index)
 {
     int dummy;
     if (!index)
         index = &dummy;
-    for (int i = 0; i < r->nspecials; i++) {
-        double d[3];
-        ic_axpy3(d, r->specials[i].xyz, -1.0, pt->xyz);
-        const double same = (r->specials[i].approximate || approximate ? IC_TRACE_SAME_APPROX
-                                                                        : IC_TRACE_SAME_EXACT) *
-                            r->scale;
-        if (ic_norm3(d) < same) { /* the same point met from another curve */
-            *index = i;
-            return IC_OK;
-        }
+    const int earlier = same_special(r, r->nspecials, pt->xyz, approximate);
+    if (earlier >= 0) { /* the same point met from another curve */
+        *index = earlier;
+        return IC_OK;
     }
     *index = r->nspecials;
     if (grow_specials(r) != 0)
         return IC_ERR_NOMEM;
     ic_trace_located *loc = &r->located[r->nspecials];
     loc->pt = *pt;
+    loc->place_radius = 0.0;
     ic_trace_special *s = &r->specials[r->nspecials++];
     memcpy(s->xyz, pt->xyz, sizeof s->xyz);
     s->approximate = approximate;
@@ -119,8 +147,16 @@ ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local
     if (loc->res_ok) {
         s->type = loc->res.type;
         s->nbranches = loc->res.nbranches;
-        if (!approximate)
+        if (!approximate) {
             check_contact_place(r, s, loc, pair, &o);
+            /* located only approximately: the same as a point met before
+             * within IC_TRACE_SAME_APPROX L or within both places' radii */
+            const int j = s->approximate ? same_approximate(r, *index) : -1;
+            if (j >= 0) {
+                r->nspecials--;
+                *index = j;
+            }
+        }
     } else if (ic_pairing_point_may_degenerate(ic_pair_pairing(pair), pt->xyz, pt->params,
                                                IC_TRACE_SINGULAR_CLEARANCE)) {
         /* where the parametrization degenerates (R_u x R_v = 0: the pinch

@@ -36,6 +36,7 @@ typedef struct {
     ic_local_point pt;
     ic_local_result res;
     int res_ok;
+    double place_radius; /* an approximate contact: the radius it is known to, else 0 */
 } ic_trace_located;
 
 /* The result of ic_trace (trace/core/result.c, trace/join.c, trace/singular.c). */

@@ -64,9 +64,11 @@ static void check_truth(const ic_expr *e, const char *path)
     while (fgets(line, sizeof line, f)) {
         if (sscanf(line, "case %d %lf %lf %lf", &k, &p[0], &p[1], &p[2]) == 4)
             continue;
-        if (sscanf(line, "v %lf", &v) == 1 || sscanf(line, "d %lf %lf %lf", &d[0], &d[1], &d[2]) == 3)
+        if (sscanf(line, "v %lf", &v) == 1 ||
+            sscanf(line, "d %lf %lf %lf", &d[0], &d[1], &d[2]) == 3)
             continue;
-        if (sscanf(line, "h %lf %lf %lf %lf %lf %lf", &h[0], &h[1], &h[2], &h[3], &h[4], &h[5]) != 6 ||
+        if (sscanf(line, "h %lf %lf %lf %lf %lf %lf", &h[0], &h[1], &h[2], &h[3], &h[4], &h[5]) !=
+                6 ||
             k < 0 || k >= NF)
             continue;
         box_of(p, p, x);

@@ -14,6 +14,7 @@
 #include "system.h"
 
 #include "imat.h"
+#include "surface/surface_access.h"
 
 #include <math.h>
 #include <string.h>
@@ -97,16 +98,42 @@ int ic_certify_centre(const ic_pairing *pg, const ic_interval *X, double *c,
 /* The same to second order (ic_pairing_taylor2_excludes), for two implicit
  * surfaces with second-order enclosures: where they nearly coincide, y.J
  * over X is of the order of the cell's width, y.H of the gap. */
-static int row_excludes_second(const ic_pairing *pg, const double *y, const ic_certify_eval *at,
-                               const ic_interval *X, const double *c)
+static int row_excludes_second(const ic_pairing *pg, const double *y, const ic_interval *hc,
+                               const ic_interval *gc, const ic_interval *X, const double *c)
 {
-    if (pg->kind->dim != 3)
-        return 0;
     ic_interval_hess H[2];
     for (int s = 0; s < 2; s++)
         if (ic_surface_eval_interval_hess(pg->S[s], &H[s], X, NULL) != IC_OK)
             return 0;
-    ic_interval hc = {0.0, 0.0}, gc[3], Hy[IC_INTERVAL_HESS_LEN];
+    ic_interval Hy[IC_INTERVAL_HESS_LEN];
+    for (int i = 0; i < IC_INTERVAL_HESS_LEN; i++) {
+        Hy[i] = (ic_interval){0.0, 0.0};
+        for (int s = 0; s < 2; s++)
+            Hy[i] = ic_interval_add(Hy[i], ic_interval_mul((ic_interval){y[s], y[s]}, H[s].h[i]));
+    }
+    return ic_pairing_taylor2_excludes(*hc, gc, Hy, X, c, 3);
+}
+
+
+/* y.F over X with the terms the two implicit formulas share enclosed
+ * once (ic_surface_combined_interval): surfaces written alike a gap apart. */
+static int row_excludes_common(const ic_pairing *pg, const double *y, const ic_interval *X)
+{
+    ic_interval h;
+    return pg->kind->dim == 3 &&
+           ic_surface_combined_interval(pg->S[0], (ic_interval){y[0], y[0]}, pg->S[1],
+                                        (ic_interval){y[1], y[1]}, X, &h) &&
+           (h.lo > 0.0 || h.hi < 0.0);
+}
+
+/* The two tighter forms for two implicit surfaces, tried only where y.F(c)
+ * is beyond its slope across the cell (ic_pairing_gap_beyond_slope). */
+static int row_excludes_closer(const ic_pairing *pg, const double *y, const ic_certify_eval *at,
+                               const ic_interval *X, const double *c)
+{
+    if (pg->kind->dim != 3)
+        return 0;
+    ic_interval hc = {0.0, 0.0}, gc[3];
     for (int s = 0; s < 2; s++)
         hc = ic_interval_add(hc, ic_interval_mul((ic_interval){y[s], y[s]}, at->F[s]));
     for (int k = 0; k < 3; k++) {
@@ -114,12 +141,8 @@ static int row_excludes_second(const ic_pairing *pg, const double *y, const ic_c
         for (int s = 0; s < 2; s++)
             gc[k] = ic_interval_add(gc[k], ic_interval_mul((ic_interval){y[s], y[s]}, at->J[s][k]));
     }
-    for (int i = 0; i < IC_INTERVAL_HESS_LEN; i++) {
-        Hy[i] = (ic_interval){0.0, 0.0};
-        for (int s = 0; s < 2; s++)
-            Hy[i] = ic_interval_add(Hy[i], ic_interval_mul((ic_interval){y[s], y[s]}, H[s].h[i]));
-    }
-    return ic_pairing_taylor2_excludes(hc, gc, Hy, X, c, 3);
+    return ic_pairing_gap_beyond_slope(hc, gc, X, c, 3) &&
+           (row_excludes_common(pg, y, X) || row_excludes_second(pg, y, &hc, gc, X, c));
 }
 
 int ic_certify_excludes_centred(const ic_pairing *pg, const ic_interval *X,
@@ -144,5 +167,5 @@ int ic_certify_excludes_centred(const ic_pairing *pg, const ic_interval *X,
         if (row_excludes(e, m, dim, at, over, X, c))
             return 1;
     }
-    return have_row && row_excludes_second(pg, y, at, X, c);
+    return have_row && row_excludes_closer(pg, y, at, X, c);
 }

@@ -188,9 +188,13 @@ int ic_certify_leaf(ic_certificate *c, long i, const ic_certify_limits *lim)
     ic_interval X[4];
     cell_box(&c->cells[i], c->dim, X);
     ic_certify_eval e;
-    if (!ic_certify_enclose(c->pg, X, &e))
-        return 0;
     ic_cell *cl = &c->cells[i];
+    if (!ic_certify_enclose(c->pg, X, &e)) {
+        if (!ic_certify_values_exclude(c->pg, X))
+            return 0;
+        cl->kind = IC_CELL_EMPTY;
+        return 1;
+    }
     double mid[4];
     ic_certify_eval at;
     const int centred = ic_certify_centre(c->pg, X, mid, &at);

@@ -123,3 +123,29 @@ int ic_certify_image_grad(const ic_pairing *pg, const ic_interval *X, int k, ic_
         g[j] = j < 2 ? R[k].d[j] : (ic_interval){0.0, 0.0};
     return finite(*v) && finite(g[0]) && finite(g[1]);
 }
+
+/* 1 when the interval [lo, hi] is finite and excludes 0. */
+static int finite_excludes(ic_interval a) { return finite(a) && (a.lo > 0.0 || a.hi < 0.0); }
+
+int ic_certify_values_exclude(const ic_pairing *pg, const ic_interval *X)
+{
+    ic_interval v[3], w[3];
+    const int dim = pg->kind->dim;
+    if (dim == 3) {
+        for (int s = 0; s < 2; s++)
+            if (ic_surface_eval_interval(pg->S[s], v, X, NULL) == IC_OK && finite_excludes(v[0]))
+                return 1;
+        return 0;
+    }
+    if (dim == 2)
+        return ic_surface_eval_interval(pg->S[pg->P], v, X, NULL) == IC_OK &&
+               ic_surface_eval_interval(pg->S[pg->I], w, v, NULL) == IC_OK &&
+               finite_excludes(w[0]);
+    if (ic_surface_eval_interval(pg->S[0], v, X, NULL) != IC_OK ||
+        ic_surface_eval_interval(pg->S[1], w, X + 2, NULL) != IC_OK)
+        return 0;
+    for (int i = 0; i < 3; i++)
+        if (finite_excludes(ic_interval_sub(v[i], w[i])))
+            return 1;
+    return 0;
+}

@@ -31,6 +31,11 @@ int ic_certify_enclose(const ic_pairing *pg, const ic_interval *X, ic_certify_ev
  * they cannot be evaluated. */
 int ic_certify_at(const ic_pairing *pg, const double *z, double F[3], double J[3][4]);
 
+/* 1 when the values alone (no derivatives) of some component of F exclude
+ * 0 over X: the cells where a formula's derivatives are unbounded (sqrt
+ * of x^2 + y^2 on the axis) but its values keep away from 0. */
+int ic_certify_values_exclude(const ic_pairing *pg, const ic_interval *X);
+
 /* 1 when some component of F excludes 0 over X. */
 int ic_certify_excludes(const ic_certify_eval *e, int m);
 

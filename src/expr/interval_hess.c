@@ -46,10 +46,9 @@ static ic_interval unary_second(const ic_instr *in, ic_interval a, ic_interval v
     case OP_NEG:
         return ZERO;
     case OP_POWI:
-        return in->n == 0 || in->n == 1
-                   ? ZERO
-                   : mul(scalar((double)in->n * (double)(in->n - 1)),
-                         ic_interval_pow_int(a, in->n - 2));
+        return in->n == 0 || in->n == 1 ? ZERO
+                                        : mul(scalar((double)in->n * (double)(in->n - 1)),
+                                              ic_interval_pow_int(a, in->n - 2));
     case OP_POWR:
         return mul(scalar(in->c * (in->c - 1.0)), ic_interval_pow_real(a, in->c - 2.0));
     case OP_SQRT: /* -1 / (4 v^3) = -f' / (2 v^2) */
@@ -151,17 +150,15 @@ static int unary(const ic_instr *in, ic_interval_hess *r, const ic_interval_hess
 /* a^b = exp(b log a), a > 0. */
 static int power(ic_interval_hess *r, const ic_interval_hess *A, const ic_interval_hess *B, int n)
 {
-    const ic_instr log_in = {.op = OP_LOG, .a = -1, .b = -1}, exp_in = {.op = OP_EXP, .a = -1, .b = -1};
+    const ic_instr log_in = {.op = OP_LOG, .a = -1, .b = -1},
+                   exp_in = {.op = OP_EXP, .a = -1, .b = -1};
     ic_interval_hess L, P;
     const int ok = unary(&log_in, &L, A, n);
     product(&P, B, &L, n);
     return unary(&exp_in, r, &P, n) && ok;
 }
 
-static void constant(ic_interval_hess *r, double c)
-{
-    *r = (ic_interval_hess){.v = scalar(c)};
-}
+static void constant(ic_interval_hess *r, double c) { *r = (ic_interval_hess){.v = scalar(c)}; }
 
 /* One instruction; 0 where it has no second derivative written here. */
 static int hess_op(const ic_instr *in, ic_interval_hess *r, const ic_interval_hess *A,

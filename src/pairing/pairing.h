@@ -178,4 +178,12 @@ int ic_pairing_centred_excludes(ic_interval hc, const ic_interval *G, const doub
 int ic_pairing_taylor2_excludes(ic_interval hc, const ic_interval *gc, const ic_interval *H,
                                 const ic_interval *X, const double *c, int n);
 
+/* 1 when |h(c)| exceeds |grad h(c)| . |X - c| over the cell: only then can
+ * a tighter enclosure of h than the first-order one exclude 0 (h changes
+ * by about that much across the cell), so the second-order and common-term
+ * forms, which cost a Hessian or a second evaluation, are tried only then
+ * (the cells that hold the curve, most of those examined, fail it). */
+int ic_pairing_gap_beyond_slope(ic_interval hc, const ic_interval *gc, const ic_interval *X,
+                                const double *c, int n);
+
 #endif

@@ -1,6 +1,7 @@
 /* Two implicit surfaces f_A = f_B = 0, searched over the box (x, y, z). */
 #include "pairing.h"
 #include "common/vec3.h"
+#include "surface/surface_access.h"
 
 #include <math.h>
 #include <string.h>
@@ -172,20 +173,16 @@ static int loop_free(const ic_pairing *p, const double *lo, const double *hi)
  * gradient small at the centre (any common zero is a zero of it). */
 /* The Taylor form of h = f_B - mu f_A to second order (pairing.h): where
  * the surfaces nearly coincide, h's gradient and Hessian nearly vanish. */
-static int second_order_excludes(const ic_pairing *p, const ic_interval *box,
-                                 const ic_interval *cbox, const ic_interval_grad *fc,
-                                 ic_interval mu, ic_interval hc)
+static int second_order_excludes(const ic_pairing *p, const ic_interval *box, const double *c,
+                                 const ic_interval *gc, ic_interval mu, ic_interval hc)
 {
     ic_interval_hess H[2];
     for (int s = 0; s < 2; s++)
         if (ic_surface_eval_interval_hess(p->S[s], &H[s], box, NULL) != IC_OK)
             return 0;
-    ic_interval gc[3], Hh[IC_INTERVAL_HESS_LEN];
-    for (int k = 0; k < 3; k++)
-        gc[k] = ic_interval_sub(fc[1].d[k], ic_interval_mul(mu, fc[0].d[k]));
+    ic_interval Hh[IC_INTERVAL_HESS_LEN];
     for (int i = 0; i < IC_INTERVAL_HESS_LEN; i++)
         Hh[i] = ic_interval_sub(H[1].h[i], ic_interval_mul(mu, H[0].h[i]));
-    const double c[3] = {cbox[0].lo, cbox[1].lo, cbox[2].lo};
     return ic_pairing_taylor2_excludes(hc, gc, Hh, box, c, 3);
 }
 
@@ -216,8 +213,18 @@ static int excluded_centred(const ic_pairing *p, const double *lo, const double 
     for (int k = 0; k < 3; k++)
         G[k] = ic_interval_sub(f[1].d[k], ic_interval_mul(mu, f[0].d[k]));
     const ic_interval hc = ic_interval_sub(fc[1].v, ic_interval_mul(mu, fc[0].v));
-    return ic_pairing_centred_excludes(hc, G, lo, hi, 3) ||
-           second_order_excludes(p, box, cbox, fc, mu, hc);
+    if (ic_pairing_centred_excludes(hc, G, lo, hi, 3))
+        return 1;
+    ic_interval gc[3], h;
+    const double c[3] = {cbox[0].lo, cbox[1].lo, cbox[2].lo};
+    for (int k = 0; k < 3; k++)
+        gc[k] = ic_interval_sub(fc[1].d[k], ic_interval_mul(mu, fc[0].d[k]));
+    if (!ic_pairing_gap_beyond_slope(hc, gc, box, c, 3))
+        return 0;
+    return (ic_surface_combined_interval(p->S[0], ic_interval_neg(mu), p->S[1],
+                                         ic_pairing_point(1.0), box, &h) &&
+            ic_pairing_excludes_zero(h)) ||
+           second_order_excludes(p, box, c, gc, mu, hc);
 }
 
 static int may_degenerate(const ic_pairing *p, const double *lo, const double *hi)

@@ -99,3 +99,16 @@ int ic_pairing_taylor2_excludes(ic_interval hc, const ic_interval *gc, const ic_
         }
     return ic_pairing_excludes_zero(sum);
 }
+
+int ic_pairing_gap_beyond_slope(ic_interval hc, const ic_interval *gc, const ic_interval *X,
+                                const double *c, int n)
+{
+    if (!(hc.lo > 0.0 || hc.hi < 0.0))
+        return 0;
+    double slope = 0.0;
+    for (int k = 0; k < n; k++) {
+        const double g = fmax(fabs(gc[k].lo), fabs(gc[k].hi));
+        slope += g * fmax(fabs(X[k].hi - c[k]), fabs(c[k] - X[k].lo));
+    }
+    return fmin(fabs(hc.lo), fabs(hc.hi)) > slope;
+}

@@ -27,4 +27,13 @@ const ic_primitive *ic_surface_primitive(const ic_surface *s);
  * for any other surface (frame untouched). */
 int ic_surface_primitive_frame(const ic_surface *s, double frame[3][3]);
 
+/* An enclosure of wA f_A + wB f_B over the box X, for two implicit formula
+ * surfaces, with the terms their sums share enclosed once (surface_combined.c):
+ * nearly coincident surfaces written alike, f_B = f_A + 1e-9, give 1e-9
+ * itself where plain intervals give the terms' width. 1, or 0 where it is
+ * not formed (another backend, a formula not defined over the whole box,
+ * no term in common, out of memory): then it proves nothing. */
+int ic_surface_combined_interval(ic_surface *A, ic_interval wA, ic_surface *B, ic_interval wB,
+                                 const ic_interval *X, ic_interval *out);
+
 #endif

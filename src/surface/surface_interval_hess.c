@@ -42,8 +42,8 @@ static ic_status quadric_hess(ic_surface *s, ic_interval_hess *out, const ic_int
     return IC_OK;
 }
 
-ic_status ic_surface_eval_interval_hess(ic_surface *s, ic_interval_hess *out,
-                                        const ic_interval *in, ic_error *err)
+ic_status ic_surface_eval_interval_hess(ic_surface *s, ic_interval_hess *out, const ic_interval *in,
+                                        ic_error *err)
 {
     IC_ARG_NOT_NULL(s, "s");
     IC_ARG_NOT_NULL(out, "out");

@@ -169,8 +169,6 @@ static int loop_free(const ic_pairing *p, const double *lo, const double *hi)
     return ic_pairing_one_sided(T);
 }
 
-/* Centred forms of f_A, f_B and f_B - mu f_A, mu making the combination's
- * gradient small at the centre (any common zero is a zero of it). */
 /* The Taylor form of h = f_B - mu f_A to second order (pairing.h): where
  * the surfaces nearly coincide, h's gradient and Hessian nearly vanish. */
 static int second_order_excludes(const ic_pairing *p, const ic_interval *box, const double *c,
@@ -186,6 +184,8 @@ static int second_order_excludes(const ic_pairing *p, const ic_interval *box, co
     return ic_pairing_taylor2_excludes(hc, gc, Hh, box, c, 3);
 }
 
+/* Centred forms of f_A, f_B and f_B - mu f_A, mu making the combination's
+ * gradient small at the centre (any common zero is a zero of it). */
 static int excluded_centred(const ic_pairing *p, const double *lo, const double *hi)
 {
     ic_interval box[3], cbox[3];

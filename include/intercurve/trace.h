@@ -196,6 +196,10 @@ typedef struct {
      *  edges whose image is one point), and where a curve meets the
      *  boundary at a corner or touches it (docs/tracing.md) */
     int poles, corners;
+    /** points of arcs the checker proved but found no traced curve on, that
+     *  the tracer started again from before the last check (docs/tracing.md,
+     *  "Starting again from the checker"); 0 when it did not */
+    int restarts;
     double seconds; /**< the checker's wall time */
     char reason[240]; /**< why it refused ("" when accepted or not run) */
 } ic_trace_certificate;

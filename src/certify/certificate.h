@@ -67,6 +67,11 @@ typedef struct {
  * self-intersection in both places. */
 #define IC_CERTIFY_MAX_POLES 16
 
+/* Untraced arcs a summary gives a point of, at most: one start point per
+ * missed curve is enough, and the tracer covers the rest of a curve's
+ * arcs by the curve it traces from the first. */
+#define IC_CERTIFY_MAX_SEEDS 16
+
 /* A tangential curve the result reports: n points (xyz), closed or not. */
 typedef struct {
     const double *xyz;
@@ -82,6 +87,11 @@ typedef struct {
     double seconds;
     int accepted;
     char reason[240];
+    /* refused for arcs no traced curve passes: a point of each of the
+     * first IC_CERTIFY_MAX_SEEDS (search coordinates, the crossing's
+     * enclosure's centre), where the tracer may start again */
+    double seeds[IC_CERTIFY_MAX_SEEDS][4];
+    int nseeds;
 } ic_certify_summary;
 
 /* The work limits of a certificate: cells, the smallest cell as a fraction

@@ -777,6 +777,29 @@ static void unwrap(const ic_certificate *c, const double *z, int n, double *out,
         }
 }
 
+/* Every crossing met by exactly one traced passage, or refused (the first
+ * reason kept); an arc no passage met gives its crossing's centre as a
+ * seed, once per arc. */
+static void count_passages(ic_certificate *c)
+{
+    for (long x = 0; x < c->ncross; x++) {
+        const ic_crossing *r = &c->cross[x];
+        if (r->outside || r->events == 1)
+            continue; /* outside: a face crossing outside the box, no curve meets it */
+        double q[4] = {0};
+        char where[120];
+        for (int k = 0; k < c->dim; k++)
+            q[k] = 0.5 * r->K[k].lo + 0.5 * r->K[k].hi;
+        format_point(c, q, where, sizeof where);
+        ic_certificate_refuse(c, "the arc of cell %d through %s is %s", r->cell, where,
+                              r->events == 0 ? "not traced" : "traced more than once");
+        const int seen = r->mate >= 0 && r->mate < x && c->cross[r->mate].events == 0;
+        ic_certify_summary *s = &c->summary;
+        if (r->events == 0 && !seen && s->nseeds < IC_CERTIFY_MAX_SEEDS)
+            memcpy(s->seeds[s->nseeds++], q, sizeof q);
+    }
+}
+
 ic_status ic_certify_curves(ic_certificate *c, const ic_certify_curve *curves, int ncurves,
                             ic_error *err)
 {
@@ -800,18 +823,7 @@ ic_status ic_certify_curves(ic_certificate *c, const ic_certify_curve *curves, i
             walk_pieces(&w, z, cv->npoints, cv->closed, z + (size_t)cv->npoints * c->dim);
             free(z);
         }
-    for (long x = 0; x < c->ncross && c->summary.accepted; x++) {
-        const ic_crossing *r = &c->cross[x];
-        double q[4];
-        char where[120];
-        for (int k = 0; k < c->dim; k++)
-            q[k] = 0.5 * r->K[k].lo + 0.5 * r->K[k].hi;
-        format_point(c, q, where, sizeof where);
-        if (r->outside)
-            continue; /* a face crossing outside the box: no curve meets it */
-        if (r->events != 1)
-            ic_certificate_refuse(c, "the arc of cell %d through %s is %s", r->cell, where,
-                                  r->events == 0 ? "not traced" : "traced more than once");
-    }
+    if (c->summary.accepted)
+        count_passages(c);
     return IC_OK;
 }

@@ -9,6 +9,7 @@
 #define IC_CERTIFY_MATCH_H
 
 #include "certificate.h"
+#include "intercurve/local.h"
 
 /* A traced curve in search coordinates: npoints x dim values. */
 typedef struct {
@@ -46,6 +47,19 @@ int ic_certificate_add_corner_ends(ic_certificate *c, const ic_certify_curve *cu
 ic_status ic_certify_curves(ic_certificate *c, const ic_certify_curve *curves, int ncurves,
                             ic_error *err);
 
+/* The most passages of traced curves through the singular box of a point
+ * of this type and number of branches (as the result reports them): 0 at
+ * an isolated contact, the half-branches at a cusp, 2 per branch at a
+ * branch point or a tacnode; -1 not bounded (approximate points,
+ * higher-order contacts, surface singular points). passages.c */
+int ic_certify_passages_allowed(ic_point_type type, int nbranches, int approximate);
+
+/* Refuses c when the curves pass through the box of a reported singular
+ * point s (s < nallowed) more often than allowed[s] (-1: any): 1, or -1
+ * out of memory. passages.c */
+int ic_certify_passages(ic_certificate *c, const ic_certify_curve *curves, int ncurves,
+                        const int *allowed, int nallowed);
+
 /* The work limits of a check after a search of search_cells cells (run.c),
  * with a deadline on the monotonic clock (0: none). */
 ic_certify_limits ic_certify_limits_for(long search_cells, double deadline);
@@ -58,6 +72,9 @@ typedef struct {
     int ncurves;
     const double (*singular)[3];
     const double *singular_scale; /* each box's size (certificate.h); NULL all 1 */
+    /* per singular point, the most passages of curves through its box
+     * (ic_certify_passages_allowed; -1 any); NULL: not checked */
+    const int *singular_passages;
     int nsingular;
     const ic_certify_tube *tubes; /* its tangential curves, each in a tube */
     int ntubes;

@@ -14,7 +14,7 @@
 #define IC_CERTIFY_CELLS_PER_SEARCH_CELL 4
 #define IC_CERTIFY_MIN_CELLS 20000
 #define IC_CERTIFY_MAX_CELLS 200000
-#define IC_CERTIFY_MIN_WIDTH 1e-6
+#define IC_CERTIFY_MIN_WIDTH 1e-8
 #define IC_CERTIFY_FACE_BOXES 256
 /* Cells more per tube radius of tangential curve: beside a tangential curve
  * the surfaces touch and cells at distance d are proven empty only when of
@@ -81,6 +81,10 @@ ic_status ic_certify_run(const ic_pairing *pg, const double box[3][2], int has_b
         st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");
     if (st == IC_OK && c->summary.accepted && apart)
         st = ic_certify_curves(c, claim->curves, claim->ncurves, err);
+    if (st == IC_OK && c->summary.accepted && apart && claim->singular_passages &&
+        ic_certify_passages(c, claim->curves, claim->ncurves, claim->singular_passages,
+                            claim->nsingular) < 0)
+        st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");
     *out = c->summary;
     ic_certificate_free(c);
     return st;

@@ -106,9 +106,11 @@ static double (*singular_points(const ic_trace_result *r, double *scale))[3]
 }
 
 ic_status ic_trace_certify(ic_trace_result *r, ic_pair *pair, const ic_trace_options *opt,
-                           ic_error *err)
+                           ic_certify_summary *sum_out, ic_error *err)
 {
     ic_trace_report *rep = &r->report;
+    if (sum_out)
+        sum_out->nseeds = 0;
     rep->tracer_complete = rep->complete;
     if (!rep->complete)
         return IC_OK;
@@ -128,6 +130,10 @@ ic_status ic_trace_certify(ic_trace_result *r, ic_pair *pair, const ic_trace_opt
     double *z = curves ? search_points(r, pg, curves) : NULL;
     double *scale = malloc((size_t)(r->nspecials + 1) * sizeof *scale);
     double(*sing)[3] = singular_points(r, scale);
+    int *passages = malloc((size_t)(r->nspecials + 1) * sizeof *passages);
+    for (int k = 0; passages && k < r->nspecials; k++)
+        passages[k] = ic_certify_passages_allowed(r->specials[k].type, r->specials[k].nbranches,
+                                                  r->specials[k].approximate);
     ic_certify_tube *tubes = malloc((size_t)(r->ncurves + 1) * sizeof *tubes);
     int ntubes = 0;
     double *txyz = tubes ? tangential_tubes(r, tubes, &ntubes) : NULL;
@@ -135,23 +141,32 @@ ic_status ic_trace_certify(ic_trace_result *r, ic_pair *pair, const ic_trace_opt
                                     .ncurves = r->ncurves,
                                     .singular = (const double(*)[3])sing,
                                     .singular_scale = scale,
+                                    .singular_passages = passages,
                                     .nsingular = r->nspecials,
                                     .tubes = tubes,
                                     .ntubes = ntubes};
     ic_certify_summary sum;
-    ic_status st = z && sing && scale && txyz
+    ic_status st = z && sing && scale && txyz && passages
                        ? ic_certify_run(pg, opt->box, opt->has_box, &lim, &claim, &sum, err)
                        : ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");
     free(txyz);
     free(tubes);
+    free(passages);
     free(sing);
     free(scale);
     free(z);
     free(curves);
     if (st == IC_OK)
         ic_trace_certificate_from(&rep->certificate, &sum);
+    if (st == IC_OK && sum_out)
+        *sum_out = sum;
     rep->complete = st == IC_OK && rep->certificate.accepted;
-    if (st == IC_OK && !rep->complete)
-        ic_trace_failure(rep, "not proven by the certificate: %s", rep->certificate.reason);
     return st;
+}
+
+void ic_trace_certify_verdict(ic_trace_result *r)
+{
+    ic_trace_report *rep = &r->report;
+    if (rep->certificate.checked && !rep->certificate.accepted)
+        ic_trace_failure(rep, "not proven by the certificate: %s", rep->certificate.reason);
 }

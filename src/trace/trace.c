@@ -106,25 +106,8 @@ static ic_status finish(ic_trace_result *r, ic_pair *pair, pipeline *p, ic_statu
                         ic_error *err)
 {
     const ic_trace_options *opt = &p->opt;
-    if (st == IC_OK && ic_trace_drop_duplicates(r, IC_TRACE_ON_CURVE * r->scale) != IC_OK)
-        st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory dropping duplicate curves");
-    if (st == IC_OK &&
-        ic_trace_join_curves(r, pair, opt->shape_tol,
-                             IC_TRACE_POLE_GAP_CHORDS * opt->chord) != IC_OK)
-        st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory joining curves");
     if (st == IC_OK)
-        ic_trace_drop_points_on_tangential(r, IC_TRACE_SAME_APPROX * r->scale);
-    /* a surface's singular point counted the curve ends met there: two a branch */
-    for (int k = 0; k < r->nspecials; k++)
-        if (r->specials[k].type == IC_POINT_SURFACE_SINGULAR)
-            r->specials[k].nbranches = (r->specials[k].nbranches + 1) / 2;
-    /* the curves changed: indexed anew */
-    if (st == IC_OK) {
-        ic_curve_index_clear(r->index);
-        for (int c = 0; c < r->ncurves && st == IC_OK; c++)
-            if (ic_curve_index_add(r->index, c, r->curves[c].points, r->curves[c].npoints) != 0)
-                st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory");
-    }
+        st = ic_trace_tidy_curves(r, pair, opt, err);
     /* after joining: the arcs meeting at a pole of a parametrization are
      * bridged there, and the cells around the pole are near the bridge */
     if (st == IC_OK) {
@@ -166,6 +149,8 @@ static ic_status general_path(ic_trace_result *r, ic_pair *pair, const ic_trace_
     if (st == IC_OK)
         st = trace_found(r, pair, &p, err);
     st = finish(r, pair, &p, st, err);
+    if (st == IC_OK) /* the tracer proposes, the checker proves */
+        st = ic_trace_certify_seeded(r, p.tr, pair, user_opt, &p.opt, err);
     ic_tracer_free(p.tr);
     ic_trace_workers_free(r->workers);
     r->workers = NULL;
@@ -186,8 +171,10 @@ static ic_status trace(ic_trace_result **out, ic_pair *pair, const ic_trace_opti
     st = ic_trace_exact(r, pair, user_opt, &exact, err);
     if (st == IC_OK && !exact)
         st = general_path(r, pair, user_opt, err);
-    if (st == IC_OK) /* the tracer proposes, the checker proves */
-        st = ic_trace_certify(r, pair, user_opt, err);
+    else if (st == IC_OK) { /* the tracer proposes, the checker proves */
+        st = ic_trace_certify(r, pair, user_opt, NULL, err);
+        ic_trace_certify_verdict(r);
+    }
     if (st != IC_OK) {
         ic_trace_result_free(r);
         return st;

@@ -117,6 +117,20 @@ ic_status ic_trace_join_curves(ic_trace_result *r, ic_pair *pair, double shape_t
 /* IC_ERR_NOMEM when out of memory (join.c) */
 ic_status ic_trace_drop_duplicates(ic_trace_result *r, double radius);
 
+/* retry.c: the curves traced twice dropped, the rest joined through the
+ * singular points at their ends, the points on tangential curves dropped,
+ * a surface's singular points' half-branches halved, and the curves
+ * indexed anew. */
+ic_status ic_trace_tidy_curves(ic_trace_result *r, ic_pair *pair, const ic_trace_options *opt,
+                               ic_error *err);
+/* retry.c: r certified (certify_result.h); while the checker refuses for
+ * arcs without a traced curve, the tracer tr (at the absolute options opt)
+ * marches from a point of each and the checker runs again, a few rounds at
+ * most; the last refusal goes to the failures. */
+ic_status ic_trace_certify_seeded(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
+                                  const ic_trace_options *user_opt, const ic_trace_options *opt,
+                                  ic_error *err);
+
 /* singular.c */
 int ic_trace_found_near(const ic_trace_result *r, const ic_unresolved *u);
 ic_status ic_trace_record_tangential(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,

@@ -169,7 +169,8 @@ static void write_certificate(json_out *j, const ic_trace_certificate *c)
                   {"tangential", c->tangential},
                   {"refused", c->refused},
                   {"crossings", c->crossings}, {"arcs", c->arcs},
-                  {"poles", c->poles},         {"corners", c->corners}};
+                  {"poles", c->poles},         {"corners", c->corners},
+                  {"restarts", c->restarts}};
     for (size_t i = 0; i < sizeof counts / sizeof counts[0]; i++)
         int_member(j, counts[i].key, (int)counts[i].n);
     ic_json_out_key(j, "reason");

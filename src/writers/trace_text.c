@@ -54,6 +54,9 @@ static void text_report(FILE *f, const ic_trace_report *rep)
                 c->accepted ? "accepted" : "refused", c->cells, c->empty, c->outside, c->diagonal,
                 c->regular, c->singular, c->tangential, c->refused, c->crossings, c->arcs,
                 c->poles, c->corners);
+    if (c->checked && c->restarts > 0)
+        fprintf(f, "certificate: the tracer started again from %d points of arcs it had missed\n",
+                c->restarts);
     fprintf(f,
             "search: %d cells, %d excluded by interval arithmetic (%s), %d loop-free, %d where a "
             "small loop is not excluded, %d refined, %d uncovered, %d unproven, %d undecided "

@@ -11,7 +11,8 @@
 # start (commit 309689a), so that a change of layout shows itself as a change of
 # no output at all; made again when issue 23's certificate changed the trace
 # documents (json and text only: the report's tracer_complete and certificate,
-# complete as the checker's verdict).
+# complete as the checker's verdict), and again for the certificate's `restarts`
+# and its region size from samples (the covers' counts of cells).
 #   capture.sh BUILD_DIR SOURCE_DIR OUTDIR [examples]
 # With "examples", only the bundled examples (the sanitized build's run: the
 # whole set takes 20 minutes under AddressSanitizer in a Debug build).

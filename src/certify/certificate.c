@@ -76,7 +76,8 @@ static double sampled_size(const ic_certificate *c)
         double z[4], xyz[3];
         long rest = i;
         for (int k = 0; k < c->dim; k++, rest /= IC_CERTIFY_SIZE_SAMPLES) {
-            const double t = (double)(rest % IC_CERTIFY_SIZE_SAMPLES) / (IC_CERTIFY_SIZE_SAMPLES - 1);
+            const double t =
+                (double)(rest % IC_CERTIFY_SIZE_SAMPLES) / (IC_CERTIFY_SIZE_SAMPLES - 1);
             z[k] = t == 1.0 ? c->hi[k] : c->lo[k] + t * (c->hi[k] - c->lo[k]);
         }
         ic_error e;

@@ -780,7 +780,7 @@ static void unwrap(const ic_certificate *c, const double *z, int n, double *out,
 /* Every crossing met by exactly one traced passage, or refused (the first
  * reason kept); an arc no passage met gives its crossing's centre as a
  * seed, once per arc. */
-static void count_passages(ic_certificate *c)
+static void check_arcs_met(ic_certificate *c)
 {
     for (long x = 0; x < c->ncross; x++) {
         const ic_crossing *r = &c->cross[x];
@@ -793,7 +793,9 @@ static void count_passages(ic_certificate *c)
         format_point(c, q, where, sizeof where);
         ic_certificate_refuse(c, "the arc of cell %d through %s is %s", r->cell, where,
                               r->events == 0 ? "not traced" : "traced more than once");
-        const int seen = r->mate >= 0 && r->mate < x && c->cross[r->mate].events == 0;
+        /* the arc's other crossing, looked at already, gave its seed */
+        const ic_crossing *m = r->mate >= 0 ? &c->cross[r->mate] : NULL;
+        const int seen = m && r->mate < x && m->events == 0 && !m->outside;
         ic_certify_summary *s = &c->summary;
         if (r->events == 0 && !seen && s->nseeds < IC_CERTIFY_MAX_SEEDS)
             memcpy(s->seeds[s->nseeds++], q, sizeof q);
@@ -824,6 +826,6 @@ ic_status ic_certify_curves(ic_certificate *c, const ic_certify_curve *curves, i
             free(z);
         }
     if (c->summary.accepted)
-        count_passages(c);
+        check_arcs_met(c);
     return IC_OK;
 }

@@ -88,21 +88,28 @@ ic_status ic_trace_certify_seeded(ic_trace_result *r, ic_tracer *tr, ic_pair *pa
                                   const ic_trace_options *user_opt, const ic_trace_options *opt,
                                   ic_error *err)
 {
+    ic_trace_report *rep = &r->report;
     ic_certify_summary sum;
     ic_status st = ic_trace_certify(r, pair, user_opt, &sum, err);
-    for (int round = 0; st == IC_OK && round < IC_TRACE_SEED_ROUNDS && !r->report.complete &&
+    int restarts = 0;
+    for (int round = 0; st == IC_OK && round < IC_TRACE_SEED_ROUNDS && !rep->complete &&
                         sum.nseeds > 0 && !ic_trace_out_of_time(&r->budget);
          round++) {
         int added = 0;
         st = trace_seeds(r, tr, pair, opt, &sum, &added, err);
         if (st != IC_OK || !added)
             break;
-        r->report.certificate.restarts += sum.nseeds;
-        const int restarts = r->report.certificate.restarts;
-        r->report.complete = r->report.tracer_complete;
+        restarts += sum.nseeds;
+        /* a seed the tracer could not follow (a failure listed, the budget
+         * spent) ends its own claim: nothing more to certify */
+        if (rep->nfailures > 0 || r->budget.stopped) {
+            rep->tracer_complete = 0;
+            break;
+        }
+        rep->complete = rep->tracer_complete;
         st = ic_trace_certify(r, pair, user_opt, &sum, err);
-        r->report.certificate.restarts = restarts;
     }
+    rep->certificate.restarts = restarts;
     ic_trace_certify_verdict(r);
     return st;
 }

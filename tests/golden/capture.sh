@@ -13,16 +13,32 @@
 # documents (json and text only: the report's tracer_complete and certificate,
 # complete as the checker's verdict), and again for the certificate's `restarts`
 # and its region size from samples (the covers' counts of cells).
-#   capture.sh BUILD_DIR SOURCE_DIR OUTDIR [examples]
+#   capture.sh BUILD_DIR SOURCE_DIR OUTDIR [examples] [K/N]
 # With "examples", only the bundled examples (the sanitized build's run: the
-# whole set takes 20 minutes under AddressSanitizer in a Debug build).
+# whole set takes 20 minutes under AddressSanitizer in a Debug build). With
+# K/N, only the K-th of every N cases (1 <= K <= N), so that the tests can run
+# the set in N parts side by side; the keys of the cases written (the names of
+# their documents up to the first dot after the key) go to OUTDIR/.keys.
 set -uo pipefail
-build="$1" src="$2" out="$3" only="${4:-}"
+build="$1" src="$2" out="$3"
+shift 3
+only="" shard_k=1 shard_n=1
+for arg in "$@"; do
+    case "$arg" in
+    examples) only=examples ;;
+    */*) shard_k="${arg%/*}" shard_n="${arg#*/}" ;;
+    *) echo "capture.sh: unknown argument '$arg' (examples or K/N)" >&2; exit 2 ;;
+    esac
+done
+if ! [[ "$shard_k" =~ ^[0-9]+$ && "$shard_n" =~ ^[0-9]+$ ]] || ((shard_k < 1 || shard_k > shard_n)); then
+    echo "capture.sh: the part '$shard_k/$shard_n' is not K/N with 1 <= K <= N" >&2
+    exit 2
+fi
 ic="$build/intercurve"
 mkdir -p "$out"
 cd "$src" || exit 2
 
-cases() {
+all_cases() {
     if [ "$only" = examples ]; then
         ls examples/*.json
     else
@@ -30,6 +46,9 @@ cases() {
             tests/data/cad/problem-*.json
     fi
 }
+# this part's cases: the K-th of every N
+cases() { all_cases | awk -v k="$shard_k" -v n="$shard_n" 'NR % n == k % n'; }
+
 
 # fixed-length time stamps: STEP's FILE_NAME and IGES's global section
 unstamp() {
@@ -67,8 +86,10 @@ MEDIUM="examples/torus-sphere.json examples/torus-plane-tangential.json
     tests/torture/tangent-sphere-cylinder-box.json tests/torture/tangent-sphere-cylinder-domain.json
     tests/torture/tangent-cylinder-plane-box.json tests/data/nurbs/problem-torus-sphere-tangential.json"
 
+: >"$out/.keys"
 for f in $(cases); do
     key="$(echo "${f%.json}" | tr '/' '_')"
+    echo "$key" >>"$out/.keys"
     if [[ " $HEAVY " == *" $f "* ]]; then
         "$ic" trace "$f" 2>"$out/$key.trace.json.err" | sha256sum >"$out/$key.trace.json.sha256"
         continue
@@ -94,7 +115,7 @@ for f in $(cases); do
         i=$((i + 1))
     done
 done
-for f in examples/*.json; do
+for f in $(cases | grep '^examples/'); do
     key="$(echo "${f%.json}" | tr '/' '_')"
     "$ic" plot "$f" -o "$out/$key.plot.svg" >/dev/null 2>"$out/$key.plot.err"
     echo "exit $?" >>"$out/$key.plot.err"

@@ -61,7 +61,7 @@ static inline int trace_json(traced *t, const char *name, const char *json)
     return trace_json_limited(t, name, json, 0.0);
 }
 
-/* The first `want` rows of ncols numbers (at most 4) of the truth file
+/* The first `want` rows of ncols numbers (at most 6) of the truth file
  * tests/truth/NAME under src, lines starting with '#' skipped, into out
  * (row after row): 0, or -1 when the file or a row is missing. */
 static inline int read_truth_rows(const char *src, const char *name, int ncols, int want,
@@ -75,9 +75,9 @@ static inline int read_truth_rows(const char *src, const char *name, int ncols, 
     char line[256];
     int n = 0;
     while (n < want && fgets(line, sizeof line, f)) {
-        double v[4];
-        if (line[0] != '#' &&
-            sscanf(line, "%lf %lf %lf %lf", &v[0], &v[1], &v[2], &v[3]) >= ncols) {
+        double v[6];
+        if (line[0] != '#' && sscanf(line, "%lf %lf %lf %lf %lf %lf", &v[0], &v[1], &v[2], &v[3],
+                                     &v[4], &v[5]) >= ncols) {
             memcpy(out + (size_t)n * (size_t)ncols, v, (size_t)ncols * sizeof *v);
             n++;
         }

@@ -673,15 +673,38 @@ static void walk_curve(walker *w, const double *z, int n, int closed)
 
 /* Consecutive points a, b of a curve lie on opposite edges of a domain that
  * is not periodic (a closed curve through the seam of a sphere's net, say):
- * farther apart than this fraction of its width. */
+ * farther apart than this fraction of its width, ... */
 #define IC_CERTIFY_JUMP 0.5
+/* ... and the straight way between them in the parameters is no step of
+ * the curve: through its middle's image it is longer in space than this
+ * many times the distance of their images (across a seam the images meet,
+ * the middle is across the surface; a step across a domain narrower than
+ * the steps, a strip 7e-4 wide, goes straight). */
+#define IC_CERTIFY_JUMP_DETOUR 2.0
+
+static double dist3(const double *p, const double *q)
+{
+    return hypot(hypot(p[0] - q[0], p[1] - q[1]), p[2] - q[2]);
+}
 
 static int jump(const ic_certificate *c, const double *a, const double *b)
 {
-    for (int k = 0; k < c->dim; k++)
-        if (!c->periodic[k] && fabs(b[k] - a[k]) > IC_CERTIFY_JUMP * width(c, k))
-            return 1;
-    return 0;
+    int far = 0;
+    double m[4];
+    for (int k = 0; k < c->dim; k++) {
+        far |= !c->periodic[k] && fabs(b[k] - a[k]) > IC_CERTIFY_JUMP * width(c, k);
+        m[k] = 0.5 * (a[k] + b[k]);
+    }
+    if (!far)
+        return 0;
+    double xa[3], xb[3], xm[3];
+    ic_error e;
+    if (c->pg->kind->position(c->pg, a, xa, &e) != IC_OK ||
+        c->pg->kind->position(c->pg, b, xb, &e) != IC_OK ||
+        c->pg->kind->position(c->pg, m, xm, &e) != IC_OK)
+        return 1;
+    const double way = dist3(xa, xm) + dist3(xm, xb);
+    return !(way <= IC_CERTIFY_JUMP_DETOUR * dist3(xa, xb));
 }
 
 /* The first point of a closed curve that lies strictly inside a regular

@@ -231,8 +231,11 @@ ic_status ic_trace_from_candidates(ic_trace_result *r, ic_tracer *tr, ic_pair *p
     int used = 0, lost = 0;
     ic_status st = IC_OK;
     for (int i = 0; st == IC_OK && i < nc; i++) {
+        /* a seed lies on an arc no curve met: never a sliver in a pole's gap
+         * (in a strip narrower than the gap every curve end is near) */
         if (cand[i].covered || ic_trace_point_near_found(r, cand[i].xyz, radius) ||
-            in_pole_gap(r, cand[i].xyz, IC_TRACE_POLE_GAP_CHORDS * opt->chord)) {
+            (!cand[i].seed &&
+             in_pole_gap(r, cand[i].xyz, IC_TRACE_POLE_GAP_CHORDS * opt->chord))) {
             lost += ahead && ahead[i].valid;
             continue;
         }

@@ -261,6 +261,13 @@ static int outside(const ic_tracer *tr, const ic_local_point *pt, ic_trace_event
     return 0;
 }
 
+int ic_tracer_outside(const ic_tracer *tr, const ic_local_point *pt)
+{
+    ic_trace_event ev;
+    boundary b;
+    return outside(tr, pt, &ev, &b);
+}
+
 static int corrected(const ic_tracer *tr, double h, ic_local_point *next, double *X);
 
 /* A step's two ends: the corrected point `next` at predictor step h and

@@ -68,6 +68,7 @@ static ic_status trace_seeds(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
     for (int i = 0; i < s->nseeds; i++) {
         ic_candidate *c = &cand[n];
         memset(c, 0, sizeof *c);
+        c->seed = 1;
         pg->kind->unflatten(pg, s->seeds[i], c->params);
         ic_error e;
         if (pg->kind->position(pg, s->seeds[i], c->xyz, &e) == IC_OK)

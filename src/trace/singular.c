@@ -77,6 +77,38 @@ ic_status ic_trace_record_tangential(ic_trace_result *r, ic_tracer *tr, ic_pair 
     return ic_trace_add_special(r, pair, &pt, approximate, opt, NULL);
 }
 
+/* A branch's first point is tried at delta along it, then at a quarter of
+ * that, up to this many times: in a domain or box narrower than delta
+ * (a strip 7e-4 wide beside a branch point) the first tries lie outside. */
+#define IC_TRACE_BRANCH_SHRINKS 6
+
+/* The point to start branch br out of the singular point `at` in direction
+ * sgn, a little way along it (second order): 1 found (*pt, transversal,
+ * inside the domains and box), 0 none or a traced curve passes there. */
+static int branch_start(const ic_trace_result *r, const ic_tracer *tr, ic_pair *pair,
+                        const ic_local_point *at, const ic_branch *br, int sgn, double delta,
+                        ic_local_options *lo, ic_local_point *pt)
+{
+    for (int shrink = 0; shrink <= IC_TRACE_BRANCH_SHRINKS; shrink++, delta *= 0.25) {
+        double q[3], d[3], e[3];
+        ic_axpy3(q, at->xyz, sgn * delta, br->t);
+        if (br->frame_defined)
+            ic_axpy3(q, q, 0.5 * delta * delta * br->kappa, br->n);
+        if (ic_trace_curves_near(r, q, 0.25 * delta))
+            return 0;
+        if (ic_local_locate(pair, pt, q, lo, NULL) != IC_OK)
+            continue;
+        ic_axpy3(d, pt->xyz, -1.0, q);
+        ic_axpy3(e, pt->xyz, -1.0, at->xyz);
+        if (ic_norm3(d) > 0.25 * delta || ic_norm3(e) < 0.5 * delta || ic_tracer_outside(tr, pt))
+            continue; /* the locator went elsewhere, or outside */
+        ic_local_result there;
+        return ic_local_apparatus(pair, &there, pt, 2, IC_METHOD_JET, lo, NULL) == IC_OK &&
+               there.type == IC_POINT_TRANSVERSAL;
+    }
+    return 0;
+}
+
 /* Every branch out of every recorded singular point is traced, even when no
  * start candidate lay on it: a point a little way along each branch (second
  * order), in both directions, that no traced curve passes near, starts a
@@ -96,23 +128,9 @@ ic_status ic_trace_complete_branches(ic_trace_result *r, ic_tracer *tr, ic_pair 
             for (int sgn = -1; sgn <= 1; sgn += 2) {
                 const ic_branch *br = &res.branches[b];
                 const double delta = fmin(20 * opt->chord, 0.2 / fmax(br->kappa, 1e-300));
-                double q[3];
-                ic_axpy3(q, at.xyz, sgn * delta, br->t);
-                if (br->frame_defined)
-                    ic_axpy3(q, q, 0.5 * delta * delta * br->kappa, br->n);
-                if (ic_trace_curves_near(r, q, 0.25 * delta))
-                    continue;
                 ic_local_point pt;
-                ic_local_result there;
-                double d[3], e[3];
-                if (ic_local_locate(pair, &pt, q, &lo, NULL) != IC_OK ||
-                    ic_local_apparatus(pair, &there, &pt, 2, IC_METHOD_JET, &lo, NULL) != IC_OK ||
-                    there.type != IC_POINT_TRANSVERSAL)
+                if (!branch_start(r, tr, pair, &at, br, sgn, delta, &lo, &pt))
                     continue;
-                ic_axpy3(d, pt.xyz, -1.0, q);
-                ic_axpy3(e, pt.xyz, -1.0, at.xyz);
-                if (ic_norm3(d) > 0.25 * delta || ic_norm3(e) < 0.5 * delta)
-                    continue; /* the locator went elsewhere */
                 if (start_curve(r, tr, pair, &pt, opt, "a branch out of a singular point") ==
                     IC_ERR_NOMEM)
                     return IC_ERR_NOMEM;

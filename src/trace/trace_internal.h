@@ -33,6 +33,8 @@ ic_status ic_tracer_new_absolute(ic_tracer **tr, ic_pair *pair, const ic_trace_o
                                  ic_error *err);
 /* ic_tracer_run stops a curve (IC_TRACE_BUDGET) past this time (march.c). */
 void ic_tracer_set_deadline(ic_tracer *tr, double deadline);
+/* 1 when pt lies outside a non-periodic domain of a sheet or the box (march.c). */
+int ic_tracer_outside(const ic_tracer *tr, const ic_local_point *pt);
 
 /* The threads of a trace (workers.h) and a part of the search done ahead
  * by them (search_internal.h). */

@@ -12,11 +12,13 @@ typedef struct ic_curve_index ic_curve_index;
 typedef struct ic_trace_workers ic_trace_workers;
 
 /* A start candidate: a point on both surfaces found in a cell the interval
- * test could not exclude. */
+ * test could not exclude, or (seed) a point of an arc the checker proved
+ * and no traced curve met (retry.c). */
 typedef struct {
     double xyz[3];
     double params[2][2];
     int covered;
+    int seed;
 } ic_candidate;
 
 /* The work limits of one trace (docs/tracing.md, "Work limits"): a wall

@@ -9,6 +9,76 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* Points along each line of the region on which a coordinate's length in
+ * space is measured: the polylines' chords, 9 lines of a sheet's other
+ * parameter (81 positions a coordinate). */
+#define IC_CERTIFY_SPAN_SAMPLES 9
+
+/* The sheet and its parameter that search coordinate k is: -1 for a point
+ * of space (x, y, z over the box, its own length). */
+static int coordinate_sheet(const ic_pairing *pg, int dim, int k, int *param)
+{
+    if (pg->kind->nparams == 0)
+        return -1;
+    *param = k % 2;
+    if (dim == 2)
+        return pg->P;
+    return k < 2 || !pg->S[1] ? 0 : 1;
+}
+
+/* The length in space of coordinate k across the region: the longest
+ * polyline through IC_CERTIFY_SPAN_SAMPLES points along it, over as many
+ * values of the sheet's other parameter; 0 where nothing evaluates. */
+static double coordinate_span(const ic_certificate *c, int k)
+{
+    int param = 0;
+    const int sheet = coordinate_sheet(c->pg, c->dim, k, &param);
+    if (sheet < 0)
+        return c->hi[k] - c->lo[k];
+    const int other = param ? k - 1 : k + 1;
+    const int N = IC_CERTIFY_SPAN_SAMPLES;
+    double longest = 0.0;
+    for (int j = 0; j < N; j++) {
+        double at[2], prev[3], len = 0.0;
+        at[1 - param] = c->lo[other] + (c->hi[other] - c->lo[other]) * j / (N - 1);
+        int have = 0;
+        for (int i = 0; i < N; i++) {
+            double xyz[3];
+            ic_error e;
+            at[param] = c->lo[k] + (c->hi[k] - c->lo[k]) * i / (N - 1);
+            if (ic_surface_eval(c->pg->S[sheet], xyz, at, &e) != IC_OK) {
+                have = 0;
+                continue;
+            }
+            if (have)
+                len += hypot(hypot(xyz[0] - prev[0], xyz[1] - prev[1]), xyz[2] - prev[2]);
+            memcpy(prev, xyz, sizeof prev);
+            have = 1;
+        }
+        if (isfinite(len))
+            longest = fmax(longest, len);
+    }
+    return longest;
+}
+
+/* Coordinates whose lengths in space differ by at most this factor are
+ * split by their widths relative to the region, as if equal (the covers of
+ * every bundled case but two; a torus against a plane by lengths in space
+ * took twice the cells); farther apart, by their lengths in space. */
+#define IC_CERTIFY_SPAN_RATIO 8.0
+
+static void set_spans(ic_certificate *c)
+{
+    double lo = INFINITY, hi = 0.0;
+    for (int k = 0; k < c->dim; k++) {
+        c->span[k] = coordinate_span(c, k);
+        lo = fmin(lo, c->span[k]), hi = fmax(hi, c->span[k]);
+    }
+    if (!(hi > IC_CERTIFY_SPAN_RATIO * lo))
+        for (int k = 0; k < c->dim; k++)
+            c->span[k] = 1.0;
+}
+
 ic_certificate *ic_certificate_new(const ic_pairing *pg, const double box[3][2], int has_box,
                                    ic_error *err)
 {
@@ -30,6 +100,7 @@ ic_certificate *ic_certificate_new(const ic_pairing *pg, const double box[3][2],
         ic_certificate_free(c);
         return NULL;
     }
+    set_spans(c);
     return c;
 }
 

@@ -109,6 +109,10 @@ typedef struct {
     int dim, m;
     double lo[4], hi[4];
     int periodic[4];
+    /* each coordinate's length in space across the region (cover.c splits
+     * by it): the longest of its sampled lines, 0 unknown; all 1 when they
+     * are within IC_CERTIFY_SPAN_RATIO of each other (certificate.c) */
+    double span[4];
     int has_box;
     double box[3][2];
     ic_cell *cells;

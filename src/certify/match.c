@@ -782,8 +782,14 @@ static void walk_pieces(walker *w, const double *z, int n, int closed, double *b
     }
 }
 
+/* A curve's point this fraction of the region's width outside it, or less,
+ * is a rounding away from its face (the tracer lands on faces to rounding). */
+#define IC_CERTIFY_ONTO_FACE 1e-12
+
 /* The curve's points made continuous across the seams of periodic
- * coordinates (a point may have been brought into the period). */
+ * coordinates (a point may have been brought into the period), and a point
+ * a rounding outside the region put on its face (a branch point on the
+ * face, located 1e-37 beyond it: outside, no cell holds it). */
 static void unwrap(const ic_certificate *c, const double *z, int n, double *out, int mirror)
 {
     const int dim = c->dim;
@@ -796,6 +802,9 @@ static void unwrap(const ic_certificate *c, const double *z, int n, double *out,
                 const double T = width(c, k), prev = out[(size_t)(i - 1) * dim + k];
                 v += T * nearbyint((prev - v) / T);
             }
+            const double on = fmin(fmax(v, c->lo[k]), c->hi[k]);
+            if (!c->periodic[k] && fabs(v - on) <= IC_CERTIFY_ONTO_FACE * width(c, k))
+                v = on;
             out[(size_t)i * dim + k] = v;
         }
 }

@@ -605,7 +605,8 @@ static ic_status close_at_start(ic_tracer *tr, double hs, ic_trace_event *event,
 /* The step left the region across bd: the curve ends exactly on it (a
  * tangential curve too: its edge point is a point of the tangential curve,
  * oriented along the march), or at its last point where that fails. */
-static ic_status end_on_boundary(ic_tracer *tr, double h, boundary bd, ic_error *err)
+static ic_status end_on_boundary(ic_tracer *tr, double h, boundary bd, ic_trace_event *event,
+                                 ic_error *err)
 {
     tr->done = 1;
     ic_local_point edge;
@@ -613,10 +614,16 @@ static ic_status end_on_boundary(ic_tracer *tr, double h, boundary bd, ic_error 
     double hb;
     int tangential;
     if (land_on_boundary(tr, h, bd, &edge, &hb) != 0 ||
-        apparatus(tr, &res, &edge, &tangential, NULL) != IC_OK ||
-        (tangential &&
-         !(tr->tcurve && res.type == IC_POINT_TANGENTIAL_CURVE && res.nbranches >= 1)))
+        apparatus(tr, &res, &edge, &tangential, NULL) != IC_OK)
         return IC_OK;
+    if (tangential && !(tr->tcurve && res.type == IC_POINT_TANGENTIAL_CURVE && res.nbranches >= 1)) {
+        /* the curve meets the boundary at a singular point (a branch point
+         * on a strip's edge): it ends at a tangential point ahead, where the
+         * singular points are located and the curves joined through them */
+        if (!tr->tcurve)
+            *event = IC_TRACE_TANGENTIAL;
+        return IC_OK;
+    }
     if (tr->tcurve) {
         double t0[3], te[3];
         march_t(tr, &tr->res, t0);
@@ -843,7 +850,7 @@ static ic_status step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
             return close_at_start(tr, hs, event, err);
         boundary bd;
         if (outside(tr, &next, event, &bd))
-            return end_on_boundary(tr, h, bd, err);
+            return end_on_boundary(tr, h, bd, event, err);
         ic_status st;
         if (crosses_knot_line(tr, &next, &bd) && step_onto_knot_line(tr, h, bd, &next, t, &st, err))
             return st;
@@ -853,7 +860,7 @@ static ic_status step(ic_tracer *tr, ic_trace_event *event, ic_error *err)
         double hx = h;
         const step_ends ends = {tr, h, &next, &res};
         if (excursion(&ends, &hx, &bd, event))
-            return end_on_boundary(tr, hx, bd, err);
+            return end_on_boundary(tr, hx, bd, event, err);
         const double ds = step_arc(tr, h, X, next.xyz);
         tr->cur = next;
         tr->res = res;

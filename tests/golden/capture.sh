@@ -12,7 +12,9 @@
 # no output at all; made again when issue 23's certificate changed the trace
 # documents (json and text only: the report's tracer_complete and certificate,
 # complete as the checker's verdict), and again for the certificate's `restarts`
-# and its region size from samples (the covers' counts of cells).
+# and its region size from samples (the covers' counts of cells), and for the
+# cover's split by lengths in space (overflow-exp proven, cut-open-torus
+# refused at another cell: their json and text).
 #   capture.sh BUILD_DIR SOURCE_DIR OUTDIR [examples] [K/N]
 # With "examples", only the bundled examples (the sanitized build's run: the
 # whole set takes 20 minutes under AddressSanitizer in a Debug build). With

@@ -74,9 +74,19 @@ static void set_spans(ic_certificate *c)
         c->span[k] = coordinate_span(c, k);
         lo = fmin(lo, c->span[k]), hi = fmax(hi, c->span[k]);
     }
-    if (!(hi > IC_CERTIFY_SPAN_RATIO * lo))
-        for (int k = 0; k < c->dim; k++)
-            c->span[k] = 1.0;
+    c->by_span = hi > IC_CERTIFY_SPAN_RATIO * lo && isfinite(hi);
+}
+
+double ic_certificate_rel(const ic_certificate *c, int k, double d, int floor)
+{
+    const double w = c->hi[k] - c->lo[k];
+    if (!c->by_span)
+        return d / w;
+    double longest = 0.0;
+    for (int j = 0; j < c->dim; j++)
+        longest = fmax(longest, c->span[j]);
+    const double least = floor || !(c->span[k] > 0.0) ? IC_CERTIFY_SPAN_FLOOR * longest : 0.0;
+    return d / w * (fmax(c->span[k], least) / longest);
 }
 
 ic_certificate *ic_certificate_new(const ic_pairing *pg, const double box[3][2], int has_box,
@@ -114,6 +124,8 @@ void ic_certificate_free(ic_certificate *c)
     free(c->chunk_box);
     free(c->singular);
     free(c->singular_scale);
+    free(c->box_cells);
+    free(c->box_smooth);
     free(c);
 }
 
@@ -194,11 +206,13 @@ int ic_certificate_set_singular(ic_certificate *c, const double (*xyz)[3], const
     if (d == 0.0)
         return n == 0;
     ic_certificate_find_poles(c);
-    free(c->singular), free(c->singular_scale);
+    free(c->singular), free(c->singular_scale), free(c->box_cells), free(c->box_smooth);
     const size_t room = (size_t)n + (size_t)c->npoles + 1;
     c->singular = malloc(room * sizeof *c->singular);
     c->singular_scale = malloc(room * sizeof *c->singular_scale);
-    if (!c->singular || !c->singular_scale)
+    c->box_cells = calloc(room, sizeof *c->box_cells);
+    c->box_smooth = calloc(room, sizeof *c->box_smooth);
+    if (!c->singular || !c->singular_scale || !c->box_cells || !c->box_smooth)
         return -1;
     if (n > 0)
         memcpy(c->singular, xyz, (size_t)n * sizeof *c->singular);
@@ -241,7 +255,7 @@ int ic_certificate_against_box(const ic_certificate *c, const ic_interval *X)
     return inside ? 0 : -1;
 }
 
-/* 1 when img lies within the box of a singular point. */
+/* The singular point whose box holds img (the first), or -1. */
 static int image_in_singular_box(const ic_certificate *c, const ic_interval img[3])
 {
     for (int s = 0; s < c->nsingular; s++) {
@@ -250,26 +264,44 @@ static int image_in_singular_box(const ic_certificate *c, const ic_interval img[
         for (int k = 0; k < 3 && in; k++)
             in = img[k].lo >= p[k] - h && img[k].hi <= p[k] + h;
         if (in)
-            return 1;
+            return s;
     }
-    return 0;
+    return -1;
 }
 
 /* Either sheet's image will do: where F = 0 the two are one point (a
  * sheet's pole strip is thin only in its own parameters). */
-int ic_certificate_in_singular_box(const ic_certificate *c, long i)
+int ic_certificate_singular_box(const ic_certificate *c, long i)
 {
     ic_interval img[3];
     if (c->nsingular == 0)
-        return 0;
-    if (ic_certificate_cell_image(c, i, img) && image_in_singular_box(c, img))
-        return 1;
-    if (c->dim != 4)
-        return 0;
+        return -1;
+    int s = ic_certificate_cell_image(c, i, img) ? image_in_singular_box(c, img) : -1;
+    if (s >= 0 || c->dim != 4)
+        return s;
     ic_interval pq[2] = {{c->cells[i].lo[2], c->cells[i].hi[2]},
                          {c->cells[i].lo[3], c->cells[i].hi[3]}};
-    return ic_surface_eval_interval(c->pg->S[1], img, pq, NULL) == IC_OK &&
-           image_in_singular_box(c, img);
+    return ic_surface_eval_interval(c->pg->S[1], img, pq, NULL) == IC_OK
+               ? image_in_singular_box(c, img)
+               : -1;
+}
+
+int ic_certificate_refute_smooth(ic_certificate *c, int nclaimed)
+{
+    for (int s = 0; s < nclaimed && s < c->nsingular; s++) {
+        if (c->box_cells[s] > c->box_smooth[s])
+            continue;
+        const double *p = c->singular[s];
+        ic_certificate_refuse(c, "singular point %d (of the result's) near (%.9g, %.9g, %.9g) is "
+                                 "none: %s",
+                              s, p[0], p[1], p[2],
+                              c->box_cells[s] ? "the intersection is proven smooth all through "
+                                                "its box"
+                                              : "no cell of the cover lies in its box (the "
+                                                "cells about it are proven empty or smooth)");
+        return 0;
+    }
+    return 1;
 }
 
 long ic_certificate_add_cell(ic_certificate *c, const double *lo, const double *hi)

@@ -109,10 +109,11 @@ typedef struct {
     int dim, m;
     double lo[4], hi[4];
     int periodic[4];
-    /* each coordinate's length in space across the region (cover.c splits
-     * by it): the longest of its sampled lines, 0 unknown; all 1 when they
-     * are within IC_CERTIFY_SPAN_RATIO of each other (certificate.c) */
+    /* each coordinate's length in space across the region: the longest of
+     * its sampled lines, 0 unknown; by_span when they differ by more than
+     * IC_CERTIFY_SPAN_RATIO (certificate.c: ic_certificate_rel) */
     double span[4];
+    int by_span;
     int has_box;
     double box[3][2];
     ic_cell *cells;
@@ -124,6 +125,10 @@ typedef struct {
      * IC_CERTIFY_SINGULAR_HALF of the region's image diagonal) */
     double (*singular)[3];
     double *singular_scale; /* each box's half width over singular_half */
+    /* per box, its cells, and those of them where the intersection is
+     * proven smooth (leaf.c): a claimed point whose box is smooth all
+     * through is no singular point (ic_certificate_refute_smooth) */
+    long *box_cells, *box_smooth;
     int nsingular;
     double singular_half;
     /* the poles (poles.c): the search coordinate j whose edge z[j] = edge
@@ -167,6 +172,16 @@ void ic_certificate_free(ic_certificate *c);
  * IC_CERTIFY_SINGULAR_HALF's, NULL all 1), and a box at each pole of a
  * parametric sheet (ic_certificate_find_poles): 1, 0 when the region's
  * image cannot be enclosed (then no box is given), -1 out of memory. */
+/* A width d of coordinate k as a fraction of the region: d over the
+ * region's width, or with by_span d's length in space (the coordinate's
+ * over the region's width) over the longest coordinate's; with `floor` (or
+ * where its length is 0) at least IC_CERTIFY_SPAN_FLOOR of the longest's.
+ * The cover splits the cell whose width so measured (floored: a coordinate
+ * whose lines collapse is still split) is largest; Newton's steps are
+ * measured by it. */
+#define IC_CERTIFY_SPAN_FLOOR (1.0 / 64)
+double ic_certificate_rel(const ic_certificate *c, int k, double d, int floor);
+
 int ic_certificate_set_singular(ic_certificate *c, const double (*xyz)[3], const double *scale,
                                 int n);
 
@@ -203,8 +218,15 @@ int ic_certificate_cell_image(const ic_certificate *c, long i, ic_interval img[3
  * box, 0 it lies inside, -1 it straddles a face or cannot be enclosed. */
 int ic_certificate_against_box(const ic_certificate *c, const ic_interval *X);
 
-/* 1 when cell i's image lies within the box of a singular point. */
-int ic_certificate_in_singular_box(const ic_certificate *c, long i);
+/* The singular point whose box holds cell i's image (the first), or -1. */
+int ic_certificate_singular_box(const ic_certificate *c, long i);
+#define ic_certificate_in_singular_box(c, i) (ic_certificate_singular_box((c), (i)) >= 0)
+
+/* Refuses the certificate at the first of the claimed singular points
+ * 0..nclaimed-1 whose box holds no cell, or only cells where the
+ * intersection is proven smooth (a full-rank Jacobian: no branch point,
+ * contact, cusp or tacnode there): 1 none such, 0 refused. */
+int ic_certificate_refute_smooth(ic_certificate *c, int nclaimed);
 
 /* The tubes' radius: of the region's image diagonal (a fraction). */
 #define IC_CERTIFY_TUBE_HALF 5e-4

@@ -62,10 +62,17 @@ static int add_point(ic_certificate *c, const double p[3])
     if (grown)
         c->singular = grown;
     double *scale = grown ? realloc(c->singular_scale, n * sizeof *scale) : NULL;
-    if (!scale)
+    if (scale)
+        c->singular_scale = scale;
+    long *cells = scale ? realloc(c->box_cells, n * sizeof *cells) : NULL;
+    if (cells)
+        c->box_cells = cells;
+    long *smooth = cells ? realloc(c->box_smooth, n * sizeof *smooth) : NULL;
+    if (!smooth)
         return 0;
-    c->singular_scale = scale;
+    c->box_smooth = smooth;
     scale[c->nsingular] = 1.0;
+    cells[c->nsingular] = smooth[c->nsingular] = 0;
     memcpy(c->singular[c->nsingular++], p, sizeof grown[0]);
     return 1;
 }

@@ -29,29 +29,21 @@ static double now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-/* A coordinate counts as at least this fraction of the longest in space
- * when the widest is chosen: one whose lines collapse (a pole's, a sheet
- * that does not depend on it) is still split, later. */
-#define IC_CERTIFY_SPAN_FLOOR (1.0 / 64)
-
-/* The coordinate of cell i to split: the widest in space (its width
- * relative to the region times the coordinate's length across the region,
- * so that a region 3 wide and 7e-4 high is cut into cells of about equal
- * sides in space, not of the region's shape); *rel the largest width of the
- * cell relative to the region's. */
+/* The coordinate of cell i to split: the widest by ic_certificate_rel
+ * (relative to the region, or in space where the coordinates' lengths
+ * differ much: a region 3 wide and 7e-4 high is then cut into cells of
+ * about equal sides in space, not of the region's shape); *rel the largest
+ * width of the cell relative to the region's. */
 static int widest(const ic_certificate *c, long i, double *rel)
 {
     const ic_cell *cl = &c->cells[i];
-    double longest = 0.0;
-    for (int k = 0; k < c->dim; k++)
-        longest = fmax(longest, c->span[k]);
     int best = 0;
     double best_len = -1.0;
     *rel = -1.0;
     for (int k = 0; k < c->dim; k++) {
-        const double w = (cl->hi[k] - cl->lo[k]) / (c->hi[k] - c->lo[k]);
-        const double len = w * fmax(c->span[k], IC_CERTIFY_SPAN_FLOOR * longest);
-        *rel = fmax(*rel, w);
+        const double w = cl->hi[k] - cl->lo[k];
+        const double len = ic_certificate_rel(c, k, w, 1);
+        *rel = fmax(*rel, w / (c->hi[k] - c->lo[k]));
         if (len > best_len)
             best = k, best_len = len;
     }

@@ -79,6 +79,30 @@ static int monotone_along(const ic_certificate *c, const ic_certify_eval *e, int
     return ic_imat_regular(M, c->m);
 }
 
+/* A cell is grown by this fraction of the region's width each way before
+ * it is called smooth: a singular point a rounding outside every cell (on
+ * a periodic seam at u = pi, the domain [-pi, pi] rounded inwards at both
+ * ends) is then in one. */
+#define IC_CERTIFY_SMOOTH_GROW 1e-9
+
+/* The curve's tangent has a component away from zero over the cell X grown
+ * by IC_CERTIFY_SMOOTH_GROW: no singular point there. */
+static int smooth(const ic_certificate *c, const ic_interval *X)
+{
+    ic_interval G[4];
+    for (int k = 0; k < c->dim; k++) {
+        const double g = IC_CERTIFY_SMOOTH_GROW * (c->hi[k] - c->lo[k]);
+        G[k] = (ic_interval){X[k].lo - g, X[k].hi + g};
+    }
+    ic_certify_eval e;
+    if (!ic_certify_enclose(c->pg, G, &e))
+        return 0;
+    for (int k = 0; k < c->dim; k++)
+        if (monotone_along(c, &e, k))
+            return 1;
+    return 0;
+}
+
 /* Sorts the crossings x[0..n-1] along axis: 1 when their ranges there
  * are disjoint, else 0 with *at the first that overlaps the one before. */
 static int sorted_apart(ic_crossing *x, long n, int axis, long *at)
@@ -221,15 +245,26 @@ int ic_certify_leaf(ic_certificate *c, long i, const ic_certify_limits *lim)
         /* beside the diagonal the trivial solutions fill the cell: it is
          * never regular, and singular when a box holds it (a pinch point
          * where the double curve's two preimages meet) */
-        if (!ic_certificate_in_singular_box(c, i))
+        const int box = ic_certificate_singular_box(c, i);
+        if (box < 0)
             return 0;
         cl->kind = IC_CELL_SINGULAR;
+        c->box_cells[box]++; /* never smooth: the trivial solutions meet it */
         return 1;
     }
     /* in a singular box or a tube nothing more is examined: not even
-     * whether the cell is regular (its faces would be isolated in vain) */
-    if (ic_certificate_in_singular_box(c, i) || ic_certificate_in_tube(c, i)) {
-        cl->kind = ic_certificate_in_singular_box(c, i) ? IC_CELL_SINGULAR : IC_CELL_TANGENTIAL;
+     * whether the cell is regular (its faces would be isolated in vain);
+     * a box's cells are counted, and those where the curve's tangent has a
+     * component away from zero (a full-rank Jacobian: no singular point) */
+    const int box = ic_certificate_singular_box(c, i);
+    if (box >= 0) {
+        cl->kind = IC_CELL_SINGULAR;
+        c->box_cells[box]++;
+        c->box_smooth[box] += smooth(c, X);
+        return 1;
+    }
+    if (ic_certificate_in_tube(c, i)) {
+        cl->kind = IC_CELL_TANGENTIAL;
         return 1;
     }
     const long first = c->ncross;

@@ -108,7 +108,7 @@ int ic_certify_project(const ic_certificate *c, double *z, int j)
         double big = 0.0;
         for (int k = 0; k < dim; k++) {
             z[k] -= step[k];
-            big = fmax(big, fabs(step[k]) / width(c, k));
+            big = fmax(big, ic_certificate_rel(c, k, fabs(step[k]), 0));
         }
         if (!isfinite(big))
             return 0;

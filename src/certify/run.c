@@ -76,6 +76,9 @@ ic_status ic_certify_run(const ic_pairing *pg, const double box[3][2], int has_b
         const ic_certify_limits grown = with_tubes(c, lim);
         st = ic_certify_cover(c, &grown, err);
     }
+    /* a claimed singular point where the cover proves the curve smooth */
+    if (st == IC_OK && c->summary.accepted)
+        ic_certificate_refute_smooth(c, claim->nsingular);
     int apart = 1;
     if (st == IC_OK && c->summary.accepted && (apart = ic_certificate_tubes_apart(c)) < 0)
         st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");

@@ -100,6 +100,34 @@ static int end_at_surface_singular(ic_trace_result *r, ic_trace_point *pts, int 
     return index;
 }
 
+/* A curve's end this many chord heights or less before a singular point
+ * located already, heading at it, ends there: the branches out of a point
+ * start up to 20 chord heights from it (singular.c), and one started inside
+ * the region where the normals are nearly parallel stops at once, beyond
+ * the locator's reach (a strip 7e-4 wide beside a branch point). */
+#define IC_TRACE_KNOWN_END_CHORDS 24
+/* ... within this angle of the end's tangent (its cosine) */
+#define IC_TRACE_KNOWN_END_COS 0.9
+
+/* The exact singular point ahead of the end `last`, as above: 1 and *P. */
+static int known_end(const ic_trace_result *r, const ic_trace_point *last,
+                     const ic_trace_options *opt, ic_local_point *P)
+{
+    const double reach = IC_TRACE_KNOWN_END_CHORDS * opt->chord;
+    for (int k = 0; k < r->nspecials; k++) {
+        if (r->specials[k].approximate || !r->located[k].res_ok)
+            continue;
+        double d[3];
+        ic_axpy3(d, r->located[k].pt.xyz, -1.0, last->xyz);
+        const double dist = ic_norm3(d);
+        if (dist > 0.0 && dist <= reach && ic_dot3(d, last->t) >= IC_TRACE_KNOWN_END_COS * dist) {
+            *P = r->located[k].pt;
+            return 1;
+        }
+    }
+    return 0;
+}
+
 /* A curve end at a tangential point: the point located precisely, appended
  * (the last step, about 2e-5, is straight to 1e-16) with the apparatus of
  * the branch continuing the curve, and recorded. Returns the special index,
@@ -114,7 +142,7 @@ static int finish_end(ic_trace_result *r, ic_pair *pair, const ic_trace_options 
     memcpy(near.xyz, last->xyz, sizeof near.xyz);
     memcpy(near.params, last->params, sizeof near.params);
     int index = -1;
-    if (!locate_end(pair, &opt->local, &near, &P)) {
+    if (!locate_end(pair, &opt->local, &near, &P) && !known_end(r, last, opt, &P)) {
         double X[3];
         if (ic_trace_locate_surface_singular(pair, near.xyz, r->scale, X)) {
             index = end_at_surface_singular(r, pts, np, X);

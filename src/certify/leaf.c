@@ -128,6 +128,8 @@ static int pair_arcs(ic_certificate *c, long first, long n, int axis)
 {
     if (n % 2 != 0)
         return 0;
+    if (n == 0) /* no crossing: no arc (and c->cross may not exist yet) */
+        return 1;
     ic_crossing *x = c->cross + first;
     long at;
     int narrowed = 0;

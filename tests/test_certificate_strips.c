@@ -27,7 +27,7 @@
 #define NWHOLE_B 6
 
 typedef struct {
-    double a0, a1, b0, b1, length, arcs;
+    double a0, a1, b0, b1, length, arcs; /* arcs: for the reader (a curve may be cut at a point) */
 } strip_truth;
 
 /* Each branch point (+-1, 0, 0) found once within TIER_LOCATED when both

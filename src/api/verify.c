@@ -100,28 +100,36 @@ static double box_scale(const cJSON *q)
     return wide ? IC_CERTIFY_CONTACT_SCALE : 1.0;
 }
 
+/* A point's type as the document names it, or -1. */
+static int point_type(const cJSON *q)
+{
+    const cJSON *t = cJSON_GetObjectItemCaseSensitive(q, "type");
+    for (int k = IC_POINT_TRANSVERSAL; cJSON_IsString(t) && k <= IC_POINT_SURFACE_SINGULAR; k++)
+        if (strcmp(t->valuestring, ic_point_type_name((ic_point_type)k)) == 0)
+            return k;
+    return -1;
+}
+
 /* The most passages of curves through a point's box, from its type,
  * branches and approximate (ic_certify_passages_allowed); -1 when the
  * document does not say them. */
 static int passages_allowed(const cJSON *q)
 {
-    const cJSON *t = cJSON_GetObjectItemCaseSensitive(q, "type");
+    const int type = point_type(q);
     const cJSON *b = cJSON_GetObjectItemCaseSensitive(q, "branches");
     const cJSON *a = cJSON_GetObjectItemCaseSensitive(q, "approximate");
-    if (!cJSON_IsString(t) || !cJSON_IsNumber(b) || !cJSON_IsBool(a))
+    if (type < 0 || !cJSON_IsNumber(b) || !cJSON_IsBool(a))
         return -1;
-    for (int k = IC_POINT_TRANSVERSAL; k <= IC_POINT_SURFACE_SINGULAR; k++)
-        if (strcmp(t->valuestring, ic_point_type_name((ic_point_type)k)) == 0)
-            return ic_certify_passages_allowed((ic_point_type)k, (int)b->valuedouble,
-                                               cJSON_IsTrue(a));
-    return -1;
+    return ic_certify_passages_allowed((ic_point_type)type, (int)b->valuedouble,
+                                       cJSON_IsTrue(a));
 }
 
 /* The document's singular points (points[].xyz): *p, their boxes' sizes
- * *scale and the passages their types allow, the caller's to free, and
- * their number. */
+ * *scale, the passages their types allow and whether each is a surface's
+ * own singular point, the caller's to free, and their number. */
 static ic_status read_singular(const cJSON *doc, const char *name, double (**p)[3],
-                               double **scale, int **passages, int *n, ic_error *err)
+                               double **scale, int **passages, int **of_surface, int *n,
+                               ic_error *err)
 {
     const cJSON *ps = cJSON_GetObjectItemCaseSensitive(doc, "points");
     if (ps && !cJSON_IsArray(ps))
@@ -130,7 +138,8 @@ static ic_status read_singular(const cJSON *doc, const char *name, double (**p)[
     *p = malloc((size_t)(*n + 1) * sizeof **p);
     *scale = malloc((size_t)(*n + 1) * sizeof **scale);
     *passages = malloc((size_t)(*n + 1) * sizeof **passages);
-    if (!*p || !*scale || !*passages)
+    *of_surface = malloc((size_t)(*n + 1) * sizeof **of_surface);
+    if (!*p || !*scale || !*passages || !*of_surface)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory reading %s", name);
     int k = 0;
     for (const cJSON *q = ps ? ps->child : NULL; q; q = q->next, k++) {
@@ -139,6 +148,7 @@ static ic_status read_singular(const cJSON *doc, const char *name, double (**p)[
                                 name, k);
         (*scale)[k] = box_scale(q);
         (*passages)[k] = passages_allowed(q);
+        (*of_surface)[k] = point_type(q) == IC_POINT_SURFACE_SINGULAR;
     }
     return IC_OK;
 }
@@ -184,7 +194,7 @@ ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const c
     double *z = NULL;
     double(*sing)[3] = NULL;
     double *scale = NULL;
-    int *passages = NULL;
+    int *passages = NULL, *of_surface = NULL;
     ic_certify_tube *tubes = NULL;
     double *txyz = NULL;
     int n = 0, nsing = 0, ntubes = 0;
@@ -192,7 +202,7 @@ ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const c
     if (st == IC_OK)
         st = read_curves(doc, ic_pair_pairing(pair), name, &curves, &n, &z, err);
     if (st == IC_OK)
-        st = read_singular(doc, name, &sing, &scale, &passages, &nsing, err);
+        st = read_singular(doc, name, &sing, &scale, &passages, &of_surface, &nsing, err);
     if (st == IC_OK)
         st = read_tubes(doc, name, &tubes, &ntubes, &txyz, err);
     if (st == IC_OK) {
@@ -208,6 +218,7 @@ ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const c
                                         .singular = (const double(*)[3])sing,
                                         .singular_scale = scale,
                                         .singular_passages = passages,
+                                        .singular_of_surface = of_surface,
                                         .nsingular = nsing,
                                         .tubes = tubes,
                                         .ntubes = ntubes};
@@ -220,6 +231,7 @@ ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const c
     free(sing);
     free(scale);
     free(passages);
+    free(of_surface);
     free(tubes);
     free(txyz);
     ic_pair_free(pair);

@@ -158,6 +158,16 @@ ic_certificate *ic_certificate_new(const ic_pairing *pg, const double box[3][2],
                                    ic_error *err);
 void ic_certificate_free(ic_certificate *c);
 
+/* A width d of coordinate k as a fraction of the region: d over the
+ * region's width, or with by_span d's length in space (the coordinate's
+ * over the region's width) over the longest coordinate's; with `floor` (or
+ * where its length is 0) at least IC_CERTIFY_SPAN_FLOOR of the longest's.
+ * The cover splits the cell whose width so measured (floored: a coordinate
+ * whose lines collapse is still split) is largest; Newton's steps are
+ * measured by it. */
+#define IC_CERTIFY_SPAN_FLOOR (1.0 / 64)
+double ic_certificate_rel(const ic_certificate *c, int k, double d, int floor);
+
 /* The singular half width: of the region's image diagonal (a fraction). */
 #define IC_CERTIFY_SINGULAR_HALF 1e-5
 
@@ -172,16 +182,6 @@ void ic_certificate_free(ic_certificate *c);
  * IC_CERTIFY_SINGULAR_HALF's, NULL all 1), and a box at each pole of a
  * parametric sheet (ic_certificate_find_poles): 1, 0 when the region's
  * image cannot be enclosed (then no box is given), -1 out of memory. */
-/* A width d of coordinate k as a fraction of the region: d over the
- * region's width, or with by_span d's length in space (the coordinate's
- * over the region's width) over the longest coordinate's; with `floor` (or
- * where its length is 0) at least IC_CERTIFY_SPAN_FLOOR of the longest's.
- * The cover splits the cell whose width so measured (floored: a coordinate
- * whose lines collapse is still split) is largest; Newton's steps are
- * measured by it. */
-#define IC_CERTIFY_SPAN_FLOOR (1.0 / 64)
-double ic_certificate_rel(const ic_certificate *c, int k, double d, int floor);
-
 int ic_certificate_set_singular(ic_certificate *c, const double (*xyz)[3], const double *scale,
                                 int n);
 
@@ -223,10 +223,11 @@ int ic_certificate_singular_box(const ic_certificate *c, long i);
 #define ic_certificate_in_singular_box(c, i) (ic_certificate_singular_box((c), (i)) >= 0)
 
 /* Refuses the certificate at the first of the claimed singular points
- * 0..nclaimed-1 whose box holds no cell, or only cells where the
- * intersection is proven smooth (a full-rank Jacobian: no branch point,
- * contact, cusp or tacnode there): 1 none such, 0 refused. */
-int ic_certificate_refute_smooth(ic_certificate *c, int nclaimed);
+ * 0..nclaimed-1 (of_surface[s] set: a surface's own point, skipped; NULL
+ * none) whose box holds no cell, or only cells where the intersection is
+ * proven smooth (a full-rank Jacobian: no branch point, contact, cusp or
+ * tacnode there): 1 none such, 0 refused. */
+int ic_certificate_refute_smooth(ic_certificate *c, int nclaimed, const int *of_surface);
 
 /* The tubes' radius: of the region's image diagonal (a fraction). */
 #define IC_CERTIFY_TUBE_HALF 5e-4

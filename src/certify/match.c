@@ -8,6 +8,7 @@
  * walk sees every cell the curve passes through.
  */
 #include "match.h"
+#include "common/vec3.h"
 #include "system.h"
 
 #include <math.h>
@@ -682,11 +683,6 @@ static void walk_curve(walker *w, const double *z, int n, int closed)
  * the steps, a strip 7e-4 wide, goes straight). */
 #define IC_CERTIFY_JUMP_DETOUR 2.0
 
-static double dist3(const double *p, const double *q)
-{
-    return hypot(hypot(p[0] - q[0], p[1] - q[1]), p[2] - q[2]);
-}
-
 static int jump(const ic_certificate *c, const double *a, const double *b)
 {
     int far = 0;
@@ -703,8 +699,9 @@ static int jump(const ic_certificate *c, const double *a, const double *b)
         c->pg->kind->position(c->pg, b, xb, &e) != IC_OK ||
         c->pg->kind->position(c->pg, m, xm, &e) != IC_OK)
         return 1;
-    const double way = dist3(xa, xm) + dist3(xm, xb);
-    return !(way <= IC_CERTIFY_JUMP_DETOUR * dist3(xa, xb));
+    double am[3], mb[3], ab[3];
+    ic_axpy3(am, xm, -1.0, xa), ic_axpy3(mb, xb, -1.0, xm), ic_axpy3(ab, xb, -1.0, xa);
+    return !(ic_norm3(am) + ic_norm3(mb) <= IC_CERTIFY_JUMP_DETOUR * ic_norm3(ab));
 }
 
 /* The first point of a closed curve that lies strictly inside a regular

@@ -75,6 +75,11 @@ typedef struct {
     /* per singular point, the most passages of curves through its box
      * (ic_certify_passages_allowed; -1 any); NULL: not checked */
     const int *singular_passages;
+    /* per singular point, 1 when it is a surface's own singular point
+     * (a pole, an apex), which a smooth curve may pass through: never
+     * refuted as no singular point (ic_certificate_refute_smooth); NULL:
+     * none is */
+    const int *singular_of_surface;
     int nsingular;
     const ic_certify_tube *tubes; /* its tangential curves, each in a tube */
     int ntubes;

@@ -78,7 +78,7 @@ ic_status ic_certify_run(const ic_pairing *pg, const double box[3][2], int has_b
     }
     /* a claimed singular point where the cover proves the curve smooth */
     if (st == IC_OK && c->summary.accepted)
-        ic_certificate_refute_smooth(c, claim->nsingular);
+        ic_certificate_refute_smooth(c, claim->nsingular, claim->singular_of_surface);
     int apart = 1;
     if (st == IC_OK && c->summary.accepted && (apart = ic_certificate_tubes_apart(c)) < 0)
         st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");

@@ -188,9 +188,11 @@ int ic_certificate_set_singular(ic_certificate *c, const double (*xyz)[3], const
 /* The box of a cusp, a tacnode or a higher-order contact, over the
  * others': there two branches share a tangent and lie d^(3/2) (a cusp) or
  * d^2 (the surfaces osculate) apart at distance d, and so are the cells
- * that prove them apart; with a box 100 times wider they are 10^3 to 10^4
- * times wider at its edge. */
-#define IC_CERTIFY_CONTACT_SCALE 100.0
+ * that prove them apart; with a box 400 times wider they are 10^4 to 10^5
+ * times wider at its edge. At 100 the cells just outside the box of a
+ * crossing of a tangential curve (docs/tracing.md), where the normals are
+ * 1.4e-5 apart, stayed undecided to the finest width. */
+#define IC_CERTIFY_CONTACT_SCALE 400.0
 
 /* A pole: a domain edge (not a seam) whose image lies within this fraction
  * of the region's size of one point (the sphere's u at v = +-pi/2, a NURBS

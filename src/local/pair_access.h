@@ -42,4 +42,12 @@ const ic_jet_space *ic_pair_near_space(const ic_pair *pair, int nvars);
 ic_status ic_local_project(ic_pair *pair, int which, double uv[2], const double X[3],
                            const ic_local_options *opt, double *dist);
 
+/* The bend across a tangential curve at its point pt (1/length,
+ * docs/tracing.md "Crossings of a tangential curve"): the trace of
+ * II_B - II_A over the tangent plane, B's normal turned to A's side, which
+ * on the curve is the relative normal curvature across it. It changes sign
+ * where a transversal curve crosses. */
+ic_status ic_local_tangential_bend(ic_pair *pair, const ic_local_point *pt, double *bend,
+                                   ic_error *err);
+
 #endif

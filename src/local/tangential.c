@@ -228,33 +228,42 @@ static double shift_noise(const ic_jet_space *sp, const double *g, int j, int H,
     return noise;
 }
 
-/* Simple real roots phi in [0, pi) of the leading form g_m(cos phi, sin phi). */
+/* The leading form g_m(cos phi, sin phi). */
+static double form_at(const tctx *cx, const double *g, int m, double phi)
+{
+    double val = 0.0;
+    for (int i = 0; i <= m; i++)
+        val += g[idx2(cx->sp2, i, m - i)] * pow(cos(phi), i) * pow(sin(phi), m - i);
+    return val;
+}
+
+/* Simple real roots phi in [0, pi) of the leading form g_m(cos phi, sin
+ * phi), by sign changes on a grid offset by half a step from 0, so that a
+ * root at phi = 0 (a branch along e1: a circle crossing a tangential
+ * equator, crossing.c) lies inside a step. */
 static int form_roots(const tctx *cx, const double *g, int m, double *roots, int max)
 {
-    const ic_jet_space *sp = cx->sp2;
     const int M = 1440;
+    const double step = IC_PI / M, start = -0.5 * step;
     int count = 0;
-    double prev = 0.0;
-    for (int k = 0; k <= M; k++) {
-        const double phi = IC_PI * k / M;
-        double val = 0.0;
-        for (int i = 0; i <= m; i++)
-            val += g[idx2(sp, i, m - i)] * pow(cos(phi), i) * pow(sin(phi), m - i);
-        if (k > 0 && ((prev < 0 && val >= 0) || (prev > 0 && val <= 0)) && count < max) {
-            double lo = IC_PI * (k - 1) / M, hi = phi, flo = prev;
+    double prev = form_at(cx, g, m, start);
+    for (int k = 1; k <= M; k++) {
+        const double phi = start + step * k;
+        const double val = form_at(cx, g, m, phi);
+        if (((prev < 0 && val >= 0) || (prev > 0 && val <= 0)) && count < max) {
+            double lo = phi - step, hi = phi, flo = prev;
             for (int it = 0; it < 80; it++) {
                 const double mid = 0.5 * (lo + hi);
-                double fm = 0.0;
-                for (int i = 0; i <= m; i++)
-                    fm += g[idx2(sp, i, m - i)] * pow(cos(mid), i) * pow(sin(mid), m - i);
+                const double fm = form_at(cx, g, m, mid);
                 if ((fm < 0) == (flo < 0))
                     lo = mid, flo = fm;
                 else
                     hi = mid;
             }
-            const double root = 0.5 * (lo + hi);
-            if (root < IC_PI - 1e-12) /* phi and phi + pi are one direction */
-                roots[count++] = root;
+            double root = 0.5 * (lo + hi);
+            if (root < 0) /* phi and phi + pi are one direction */
+                root += IC_PI;
+            roots[count++] = root;
         }
         prev = val;
     }

@@ -8,6 +8,7 @@
 #include "common/vec3.h"
 #include "core/trace_constants.h"
 #include "local/pair_access.h"
+#include "crossing.h"
 #include "curve_ends.h"
 #include "march_ahead.h"
 #include "trace_internal.h"
@@ -109,6 +110,12 @@ static int end_at_surface_singular(ic_trace_result *r, ic_trace_point *pts, int 
 /* ... within this angle of the end's tangent (its cosine) */
 #define IC_TRACE_KNOWN_END_COS 0.9
 
+/* A curve's end this many chord heights or less beside a tangential curve
+ * ends at the crossing of the two (crossing.c): the march stops where the
+ * normals come parallel, 0.0046 to 0.008 (16 to 28 chord heights) short of
+ * the crossing for circles across a sphere's tangential equator. */
+#define IC_TRACE_CROSSING_CHORDS 64
+
 /* The exact singular point ahead of the end `last`, as above: 1 and *P. */
 static int known_end(const ic_trace_result *r, const ic_trace_point *last,
                      const ic_trace_options *opt, ic_local_point *P)
@@ -142,7 +149,10 @@ static int finish_end(ic_trace_result *r, ic_pair *pair, const ic_trace_options 
     memcpy(near.xyz, last->xyz, sizeof near.xyz);
     memcpy(near.params, last->params, sizeof near.params);
     int index = -1;
-    if (!locate_end(pair, &opt->local, &near, &P) && !known_end(r, last, opt, &P)) {
+    double place = 0.0;
+    if (!ic_trace_locate_crossing(pair, &opt->local, &near, IC_TRACE_CROSSING_CHORDS * opt->chord,
+                                  &P, &place) &&
+        !locate_end(pair, &opt->local, &near, &P) && !known_end(r, last, opt, &P)) {
         double X[3];
         if (ic_trace_locate_surface_singular(pair, near.xyz, r->scale, X)) {
             index = end_at_surface_singular(r, pts, np, X);
@@ -154,7 +164,7 @@ static int finish_end(ic_trace_result *r, ic_pair *pair, const ic_trace_options 
         return -1;
     }
     /* classified once, where it was first recorded */
-    const ic_status added = ic_trace_add_special(r, pair, &P, 0, opt, &index);
+    const ic_status added = ic_trace_add_placed_special(r, pair, &P, 0, place, opt, &index);
     note_nomem(pair, added);
     if (added != IC_OK || !r->located[index].res_ok)
         return -1;

@@ -14,7 +14,9 @@
 # complete as the checker's verdict), and again for the certificate's `restarts`
 # and its region size from samples (the covers' counts of cells), and for the
 # cover's split by lengths in space (overflow-exp proven, cut-open-torus
-# refused at another cell: their json and text).
+# refused at another cell: their json and text), and for the boxes of cusps,
+# tacnodes and higher-order contacts 400 times wider (the certificate's counts
+# of cells of the cusp, tacnode and contact-x4y4 cases: json and text).
 #   capture.sh BUILD_DIR SOURCE_DIR OUTDIR [examples] [K/N]
 # With "examples", only the bundled examples (the sanitized build's run: the
 # whole set takes 20 minutes under AddressSanitizer in a Debug build). With

@@ -29,6 +29,19 @@ static int is_contact(ic_point_type t)
     return t == IC_POINT_ISOLATED_CONTACT || t == IC_POINT_HIGHER_ORDER_CONTACT;
 }
 
+/* A point located only to within radius (above IC_TRACE_PLACE_REL L):
+ * approximate, and said. */
+static void not_placed(ic_trace_result *r, ic_trace_special *s, ic_trace_located *loc,
+                       double radius)
+{
+    s->approximate = 1;
+    loc->place_radius = radius;
+    ic_trace_failure(&r->report,
+                     "a contact point near (%.6g, %.6g, %.6g) is located only to about %.2g (a "
+                     "contact of high order, a multiple root): its place and type are approximate",
+                     s->xyz[0], s->xyz[1], s->xyz[2], radius);
+}
+
 /* An isolated contact is located by Gauss-Newton on a root of multiplicity
  * m - 1 (m its order): where its formulas cancel, only to the radius where
  * the residuals sink into rounding (ic_local_tangential_place). The point is
@@ -50,14 +63,8 @@ static void check_contact_place(ic_trace_result *r, ic_trace_special *s, ic_trac
             s->nbranches = res.nbranches;
         }
     }
-    if (radius <= IC_TRACE_PLACE_REL * r->scale)
-        return;
-    s->approximate = 1;
-    loc->place_radius = radius;
-    ic_trace_failure(&r->report,
-                     "a contact point near (%.6g, %.6g, %.6g) is located only to about %.2g (a "
-                     "contact of high order, a multiple root): its place and type are approximate",
-                     s->xyz[0], s->xyz[1], s->xyz[2], radius);
+    if (radius > IC_TRACE_PLACE_REL * r->scale)
+        not_placed(r, s, loc, radius);
 }
 
 /* Room for one more special point (and its located record): 0, or -1 out
@@ -81,14 +88,17 @@ static int grow_specials(ic_trace_result *r)
 
 /* The first of the points 0 .. n - 1 that is the same as xyz (within
  * IC_TRACE_SAME_APPROX L when either is approximate), or -1. */
-static int same_special(const ic_trace_result *r, int n, const double xyz[3], int approximate)
+static int same_special(const ic_trace_result *r, int n, const double xyz[3], int approximate,
+                        double place)
 {
     for (int i = 0; i < n; i++) {
         double d[3];
         ic_axpy3(d, r->specials[i].xyz, -1.0, xyz);
-        const double same = (r->specials[i].approximate || approximate ? IC_TRACE_SAME_APPROX
-                                                                        : IC_TRACE_SAME_EXACT) *
-                            r->scale;
+        const double same = fmax((r->specials[i].approximate || approximate
+                                      ? IC_TRACE_SAME_APPROX
+                                      : IC_TRACE_SAME_EXACT) *
+                                     r->scale,
+                                 IC_TRACE_SAME_PLACES * fmax(place, r->located[i].place_radius));
         if (ic_norm3(d) < same)
             return i;
     }
@@ -114,10 +124,17 @@ static int same_approximate(const ic_trace_result *r, int n)
 ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local_point *pt,
                                int approximate, const ic_trace_options *opt, int *index)
 {
+    return ic_trace_add_placed_special(r, pair, pt, approximate, -1.0, opt, index);
+}
+
+ic_status ic_trace_add_placed_special(ic_trace_result *r, ic_pair *pair, const ic_local_point *pt,
+                                      int approximate, double place, const ic_trace_options *opt,
+                                      int *index)
+{
     int dummy;
     if (!index)
         index = &dummy;
-    const int earlier = same_special(r, r->nspecials, pt->xyz, approximate);
+    const int earlier = same_special(r, r->nspecials, pt->xyz, approximate, place);
     if (earlier >= 0) { /* the same point met from another curve */
         *index = earlier;
         return IC_OK;
@@ -137,7 +154,7 @@ ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local
     if (approximate)
         o.tangential_angle = IC_TRACE_APPROX_TANGENTIAL_ANGLE;
     else /* located to a few units in the last place of L */
-        o.place_tol = IC_TRACE_PLACE_ULPS * DBL_EPSILON * r->scale;
+        o.place_tol = fmax(IC_TRACE_PLACE_ULPS * DBL_EPSILON * r->scale, place);
     /* order 12: the branches' series also serve the curve points nearby
      * (ic_trace_refit_near_special) */
     loc->res_ok = ic_local_apparatus(pair, &loc->res, pt, 12, IC_METHOD_AUTO, &o, NULL) == IC_OK;
@@ -148,7 +165,12 @@ ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local
         s->type = loc->res.type;
         s->nbranches = loc->res.nbranches;
         if (!approximate) {
-            check_contact_place(r, s, loc, pair, &o);
+            if (place >= 0)
+                loc->place_radius = place;
+            if (place < 0) /* the place not known: measured */
+                check_contact_place(r, s, loc, pair, &o);
+            else if (place > IC_TRACE_CROSSING_PLACE_REL * r->scale)
+                not_placed(r, s, loc, place);
             /* located only approximately: the same as a point met before
              * within IC_TRACE_SAME_APPROX L or within both places' radii */
             const int j = s->approximate ? same_approximate(r, *index) : -1;

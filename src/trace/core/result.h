@@ -38,7 +38,8 @@ typedef struct {
     ic_local_point pt;
     ic_local_result res;
     int res_ok;
-    double place_radius; /* an approximate contact: the radius it is known to, else 0 */
+    double place_radius; /* the radius it is known to: an approximate contact's, a
+                          * crossing's (crossing.c); else 0 */
 } ic_trace_located;
 
 /* The result of ic_trace (trace/core/result.c, trace/join.c, trace/singular.c). */
@@ -83,6 +84,12 @@ void ic_trace_failure(ic_trace_report *rep, const char *fmt, ...) IC_PRINTF(2, 3
  * (result.c). */
 ic_status ic_trace_add_special(ic_trace_result *r, ic_pair *pair, const ic_local_point *pt,
                                int approximate, const ic_trace_options *opt, int *index);
+/* The same for a point known to within place (a length: a crossing of a
+ * tangential curve, crossing.c), classified with that uncertainty;
+ * place < 0: not known, measured for a contact (ic_local_tangential_place). */
+ic_status ic_trace_add_placed_special(ic_trace_result *r, ic_pair *pair, const ic_local_point *pt,
+                                      int approximate, double place, const ic_trace_options *opt,
+                                      int *index);
 
 /* Adds the curve of the points pts (the result's from now on, freed with it
  * even when this fails) of a shape known; and a special point known exactly

@@ -85,6 +85,18 @@
  * written out: 1.0000 e-8 L, approximate), and a tenfold change only moves
  * the threshold onto the next rung. A test would pin rounding. */
 #define IC_TRACE_PLACE_REL 1e-8
+/* The same for a crossing of a tangential curve (crossing.c), placed by
+ * the change of sign of the bend across the curve between two points of
+ * it: the tangential curve, a double root, is known to about sqrt(eps) L
+ * across (a parametric sphere's tangential equator: 1e-8 L), and the
+ * bracket stops there, at 2e-8 to 6e-8 L on the sweep of
+ * tests/test_certificate_crossings.c. */
+#define IC_TRACE_CROSSING_PLACE_REL 1e-6
+/* A point known to within place (a crossing) is the same as one recorded
+ * within this many places of it: the crossing met from both sides of the
+ * transversal curve, each bracket stopping 2e-8 to 6e-8 L wide and up to
+ * about a bracket from the other's. */
+#define IC_TRACE_SAME_PLACES 16
 
 /* relative (of a domain's width, or of L for a box face): a curve whose
  * every step fails, this near a bound it heads across, has left there (a

@@ -8,6 +8,7 @@
  * the march's angle threshold; this finds the crossing itself.
  */
 #include "crossing.h"
+#include "common/mathconst.h"
 #include "common/vec3.h"
 #include "local/pair_access.h"
 
@@ -20,7 +21,7 @@
 #define IC_TRACE_CROSSING_STEPS 64
 /* Directions of the tangent plane tried for the tangential curve's. */
 #define IC_TRACE_CROSSING_PROBES 12
-/* Bisections of the bracket: from reach / 32 down to rounding. */
+/* Bisections of the bracket: from up to 2 reach down to rounding. */
 #define IC_TRACE_CROSSING_BISECTIONS 60
 /* A bend below this (1/length, relative to 1 / L) is noise: a contact of
  * higher order all along the curve has none to change sign. */
@@ -107,8 +108,8 @@ static ic_local_point bisect(const walk *w, bent a, bent b, double *place)
 }
 
 /* The tangential curve's direction at Q: of the tangent plane's directions
- * (normal N), the one whose step of h the locator keeps most of. 1 and T,
- * or 0. */
+ * (normal N), the one whose step of h the locator keeps most of, there on
+ * a tangential curve. 1 and T, or 0. */
 static int curve_direction(const walk *w, const ic_local_point *Q, const double N[3], double h,
                            double T[3])
 {
@@ -119,8 +120,10 @@ static int curve_direction(const walk *w, const ic_local_point *Q, const double 
     ic_cross3(e2, N, e1);
     double best = 0.5 * h;
     int found = 0;
+    ic_local_point far;
+    memset(&far, 0, sizeof far);
     for (int k = 0; k < IC_TRACE_CROSSING_PROBES; k++) {
-        const double phi = 3.14159265358979323846 * k / IC_TRACE_CROSSING_PROBES;
+        const double phi = IC_PI * k / IC_TRACE_CROSSING_PROBES;
         double dir[3], X[3];
         ic_scale3(dir, e1, cos(phi));
         ic_axpy3(dir, dir, sin(phi), e2);
@@ -132,23 +135,30 @@ static int curve_direction(const walk *w, const ic_local_point *Q, const double 
         ic_axpy3(d, q.p.xyz, -1.0, Q->xyz);
         const double kept = fabs(ic_dot3(d, dir));
         if (kept > best)
-            best = kept, found = 1, memcpy(T, d, sizeof d);
+            best = kept, found = 1, memcpy(T, d, sizeof d), far = q.p;
     }
-    return found && ic_normalize3(T) > 0.0;
+    /* the point kept lies on a tangential curve (not in the flat
+     * neighbourhood of a contact of high order) */
+    ic_local_result res;
+    ic_local_options o = *w->lopt;
+    return found && ic_normalize3(T) > 0.0 &&
+           ic_local_apparatus(w->pair, &res, &far, 2, IC_METHOD_AUTO, &o, NULL) == IC_OK &&
+           res.type == IC_POINT_TANGENTIAL_CURVE;
 }
 
 /* From Q along the tangential curve in direction T, steps of h up to
- * reach: the first point whose bend is above noise (*anchor, 1 when found)
- * and the bracket of the first change of sign after it (1 and *lo, *hi). */
+ * reach: the first point whose bend is above noise (*first, *anchored)
+ * and the bracket of the first change of sign after it, between the last
+ * two points above noise (1 and *lo, *hi). */
 static int walk_along(const walk *w, bent Q, const double T[3], double h, double reach,
-                      bent *anchor, int *anchored, bent *lo, bent *hi)
+                      bent *first, int *anchored, bent *lo, bent *hi)
 {
     double dir[3];
     memcpy(dir, T, sizeof dir);
     *anchored = fabs(Q.bend) > w->floor;
     if (*anchored)
-        *anchor = Q;
-    bent last = Q;
+        *first = Q;
+    bent last = Q, ref = Q; /* the walk's last point, and its last above the floor */
     for (double gone = 0.0; gone < reach; gone += h) {
         double X[3];
         ic_axpy3(X, last.p.xyz, h, dir);
@@ -162,12 +172,13 @@ static int walk_along(const walk *w, bent Q, const double T[3], double h, double
             return 0; /* stuck, or turned back: not a curve here */
         ic_scale3(dir, d, 1.0 / len);
         if (fabs(next.bend) > w->floor) {
-            if (!*anchored) {
-                *anchor = next, *anchored = 1;
-            } else if ((next.bend < 0) != (last.bend < 0) && fabs(last.bend) > w->floor) {
-                *lo = last, *hi = next;
+            if (*anchored && (next.bend < 0) != (ref.bend < 0)) {
+                *lo = ref, *hi = next; /* across any steps in the noise band */
                 return 1;
             }
+            if (!*anchored)
+                *first = next;
+            ref = next, *anchored = 1;
         }
         last = next;
     }
@@ -199,10 +210,10 @@ int ic_trace_locate_crossing(ic_pair *pair, const ic_local_options *lopt,
     ic_scale3(back, T, -1.0);
     found[0] = walk_along(&w, Q, T, h, reach, &anchor[0], &anchored[0], &lo[0], &hi[0]);
     found[1] = walk_along(&w, Q, back, h, reach, &anchor[1], &anchored[1], &lo[1], &hi[1]);
-    /* Q itself at the crossing, its bend noise: the first bends either side */
-    if (!found[0] && !found[1] && anchored[0] && anchored[1] &&
-        (anchor[0].bend < 0) != (anchor[1].bend < 0) &&
-        dist3(anchor[0].p.xyz, anchor[1].p.xyz) > 0.0) {
+    /* Q itself at the crossing, its bend noise: the first bends either side
+     * bracket it, at distance 0 from Q */
+    if (!(fabs(Q.bend) > w.floor) && anchored[0] && anchored[1] &&
+        (anchor[0].bend < 0) != (anchor[1].bend < 0)) {
         *P = bisect(&w, anchor[0], anchor[1], place);
         return 1;
     }

@@ -135,6 +135,24 @@ static int known_end(const ic_trace_result *r, const ic_trace_point *last,
     return 0;
 }
 
+/* The crossing of a tangential curve beside the end `last` (crossing.c),
+ * when it lies ahead of the end as known_end asks of a point: 1, *P and
+ * *place. */
+static int crossing_ahead(ic_pair *pair, const ic_trace_options *opt, const ic_local_point *near,
+                          const ic_trace_point *last, ic_local_point *P, double *place)
+{
+    if (!ic_trace_locate_crossing(pair, &opt->local, near, IC_TRACE_CROSSING_CHORDS * opt->chord,
+                                  P, place))
+        return 0;
+    double d[3];
+    ic_axpy3(d, P->xyz, -1.0, last->xyz);
+    const double dist = ic_norm3(d);
+    if (dist == 0.0 || ic_dot3(d, last->t) >= IC_TRACE_KNOWN_END_COS * dist)
+        return 1;
+    *place = -1.0;
+    return 0;
+}
+
 /* A curve end at a tangential point: the point located precisely, appended
  * (the last step, about 2e-5, is straight to 1e-16) with the apparatus of
  * the branch continuing the curve, and recorded. Returns the special index,
@@ -149,9 +167,8 @@ static int finish_end(ic_trace_result *r, ic_pair *pair, const ic_trace_options 
     memcpy(near.xyz, last->xyz, sizeof near.xyz);
     memcpy(near.params, last->params, sizeof near.params);
     int index = -1;
-    double place = 0.0;
-    if (!ic_trace_locate_crossing(pair, &opt->local, &near, IC_TRACE_CROSSING_CHORDS * opt->chord,
-                                  &P, &place) &&
+    double place = -1.0; /* not known: measured where it is a contact */
+    if (!crossing_ahead(pair, opt, &near, last, &P, &place) &&
         !locate_end(pair, &opt->local, &near, &P) && !known_end(r, last, opt, &P)) {
         double X[3];
         if (ic_trace_locate_surface_singular(pair, near.xyz, r->scale, X)) {

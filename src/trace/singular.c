@@ -184,10 +184,20 @@ static int inside_tangential(const ic_trace_result *r, const double *x, double r
 void ic_trace_drop_points_on_tangential(ic_trace_result *r, double radius)
 {
     int n = 0;
-    for (int k = 0; k < r->nspecials; k++)
-        if (!point_of_tangential_curve(r->specials[k].type) ||
-            !inside_tangential(r, r->specials[k].xyz, radius))
+    for (int k = 0; k < r->nspecials; k++) {
+        const int keep = !point_of_tangential_curve(r->specials[k].type) ||
+                         !inside_tangential(r, r->specials[k].xyz, radius);
+        /* the curve ends' indices follow their points (no end is at a
+         * dropped one: inside_tangential keeps the points at curve ends) */
+        for (int c = 0; c < r->ncurves; c++)
+            for (int e = 0; e < 2; e++)
+                if (r->at[c][e] == k)
+                    r->at[c][e] = keep ? n : -1;
+        if (keep) {
+            r->located[n] = r->located[k];
             r->specials[n++] = r->specials[k];
+        }
+    }
     r->nspecials = n;
 }
 

@@ -32,14 +32,14 @@ static int is_contact(ic_point_type t)
 /* A point located only to within radius (above IC_TRACE_PLACE_REL L):
  * approximate, and said. */
 static void not_placed(ic_trace_result *r, ic_trace_special *s, ic_trace_located *loc,
-                       double radius)
+                       double radius, const char *why)
 {
     s->approximate = 1;
     loc->place_radius = radius;
     ic_trace_failure(&r->report,
-                     "a contact point near (%.6g, %.6g, %.6g) is located only to about %.2g (a "
-                     "contact of high order, a multiple root): its place and type are approximate",
-                     s->xyz[0], s->xyz[1], s->xyz[2], radius);
+                     "a contact point near (%.6g, %.6g, %.6g) is located only to about %.2g (%s): "
+                     "its place and type are approximate",
+                     s->xyz[0], s->xyz[1], s->xyz[2], radius, why);
 }
 
 /* An isolated contact is located by Gauss-Newton on a root of multiplicity
@@ -64,7 +64,7 @@ static void check_contact_place(ic_trace_result *r, ic_trace_special *s, ic_trac
         }
     }
     if (radius > IC_TRACE_PLACE_REL * r->scale)
-        not_placed(r, s, loc, radius);
+        not_placed(r, s, loc, radius, "a contact of high order, a multiple root");
 }
 
 /* Room for one more special point (and its located record): 0, or -1 out
@@ -87,18 +87,19 @@ static int grow_specials(ic_trace_result *r)
 }
 
 /* The first of the points 0 .. n - 1 that is the same as xyz (within
- * IC_TRACE_SAME_APPROX L when either is approximate), or -1. */
+ * IC_TRACE_SAME_APPROX L when either is approximate; two crossings, xyz's
+ * known to place, within IC_TRACE_SAME_PLACES of their places), or -1. */
 static int same_special(const ic_trace_result *r, int n, const double xyz[3], int approximate,
                         double place)
 {
     for (int i = 0; i < n; i++) {
         double d[3];
         ic_axpy3(d, r->specials[i].xyz, -1.0, xyz);
-        const double same = fmax((r->specials[i].approximate || approximate
-                                      ? IC_TRACE_SAME_APPROX
-                                      : IC_TRACE_SAME_EXACT) *
-                                     r->scale,
-                                 IC_TRACE_SAME_PLACES * fmax(place, r->located[i].place_radius));
+        double same = (r->specials[i].approximate || approximate ? IC_TRACE_SAME_APPROX
+                                                                  : IC_TRACE_SAME_EXACT) *
+                      r->scale;
+        if (place >= 0 && r->located[i].crossing) /* two crossings */
+            same = fmax(same, IC_TRACE_SAME_PLACES * fmax(place, r->located[i].place_radius));
         if (ic_norm3(d) < same)
             return i;
     }
@@ -145,6 +146,7 @@ ic_status ic_trace_add_placed_special(ic_trace_result *r, ic_pair *pair, const i
     ic_trace_located *loc = &r->located[r->nspecials];
     loc->pt = *pt;
     loc->place_radius = 0.0;
+    loc->crossing = 0;
     ic_trace_special *s = &r->specials[r->nspecials++];
     memcpy(s->xyz, pt->xyz, sizeof s->xyz);
     s->approximate = approximate;
@@ -165,12 +167,14 @@ ic_status ic_trace_add_placed_special(ic_trace_result *r, ic_pair *pair, const i
         s->type = loc->res.type;
         s->nbranches = loc->res.nbranches;
         if (!approximate) {
+            loc->crossing = place >= 0;
             if (place >= 0)
                 loc->place_radius = place;
             if (place < 0) /* the place not known: measured */
                 check_contact_place(r, s, loc, pair, &o);
             else if (place > IC_TRACE_CROSSING_PLACE_REL * r->scale)
-                not_placed(r, s, loc, place);
+                not_placed(r, s, loc, place,
+                           "a crossing of a tangential curve, its bend's bracket that wide");
             /* located only approximately: the same as a point met before
              * within IC_TRACE_SAME_APPROX L or within both places' radii */
             const int j = s->approximate ? same_approximate(r, *index) : -1;

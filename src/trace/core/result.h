@@ -40,6 +40,7 @@ typedef struct {
     int res_ok;
     double place_radius; /* the radius it is known to: an approximate contact's, a
                           * crossing's (crossing.c); else 0 */
+    int crossing;        /* a crossing of a tangential curve, placed by crossing.c */
 } ic_trace_located;
 
 /* The result of ic_trace (trace/core/result.c, trace/join.c, trace/singular.c). */

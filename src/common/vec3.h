@@ -46,4 +46,20 @@ static inline double ic_normalize3(double *a)
     return len;
 }
 
+/* The distance between the points a and b. */
+static inline double ic_dist3(const double *a, const double *b)
+{
+    return hypot(hypot(a[0] - b[0], a[1] - b[1]), a[2] - b[2]);
+}
+
+/* An orthonormal basis e1, e2 of the plane normal to the unit vector n (e1
+ * from the axis x, or y when n is near x). */
+static inline void ic_plane_basis3(const double *n, double *e1, double *e2)
+{
+    const double ax[3] = {fabs(n[0]) < 0.6 ? 1 : 0, fabs(n[0]) < 0.6 ? 0 : 1, 0};
+    ic_cross3(e1, n, ax);
+    ic_scale3(e1, e1, 1 / ic_norm3(e1));
+    ic_cross3(e2, n, e1);
+}
+
 #endif

@@ -30,10 +30,7 @@ ic_status ic_local_tangential_bend(ic_pair *pair, const ic_local_point *pt, doub
     }
     const double *N = sh[0].geo.normal;
     double e1[3], e2[3];
-    const double a[3] = {fabs(N[0]) < 0.6 ? 1.0 : 0.0, fabs(N[0]) < 0.6 ? 0.0 : 1.0, 0.0};
-    ic_cross3(e1, N, a);
-    ic_normalize3(e1);
-    ic_cross3(e2, N, e1);
+    ic_plane_basis3(N, e1, e2);
     const double side = ic_dot3(N, sh[1].geo.normal) < 0 ? -1.0 : 1.0;
     *bend = side * trace_second_form(&sh[1], e1, e2) - trace_second_form(&sh[0], e1, e2);
     return isfinite(*bend) ? IC_OK : ic_error_set(err, IC_ERR_UNABLE, 0, "the bend is not finite");

@@ -91,10 +91,7 @@ static int point_of_a(ic_surface *A, const ic_local_point *pt, double rho, doubl
         return 0;
     double n[3] = {t[1], t[2], t[3]}, e1[3], e2[3];
     ic_scale3(n, n, 1 / ic_norm3(n));
-    const double ax[3] = {fabs(n[0]) < 0.6 ? 1 : 0, fabs(n[0]) < 0.6 ? 0 : 1, 0};
-    ic_cross3(e1, n, ax);
-    ic_scale3(e1, e1, 1 / ic_norm3(e1));
-    ic_cross3(e2, n, e1);
+    ic_plane_basis3(n, e1, e2);
     for (int k = 0; k < 3; k++)
         x[k] = pt->xyz[k] + rho * (cos(theta) * e1[k] + sin(theta) * e2[k]);
     for (int it = 0; it < 8; it++) { /* back onto A along its gradient */

@@ -61,13 +61,6 @@ static int point_and_bend(const walk *w, const double X[3], const double params[
     return ic_local_tangential_bend(w->pair, &q->p, &q->bend, NULL) == IC_OK;
 }
 
-static double dist3(const double *a, const double *b)
-{
-    double d[3];
-    ic_axpy3(d, a, -1.0, b);
-    return ic_norm3(d);
-}
-
 /* The bend's zero between a and b (bends of opposite signs), by bisection,
  * each midpoint put back on the tangential curve; *place the last
  * bracket's length and the band where the bend is noise. */
@@ -76,9 +69,9 @@ static ic_local_point bisect(const walk *w, bent a, bent b, double *place)
     const double tiny = 4 * DBL_EPSILON * w->lopt->scale;
     /* where the bend is below its noise (the floor) its sign says nothing:
      * that band about the root, by the first bracket's slope */
-    const double band = 2 * w->floor * dist3(a.p.xyz, b.p.xyz) / fabs(a.bend - b.bend);
+    const double band = 2 * w->floor * ic_dist3(a.p.xyz, b.p.xyz) / fabs(a.bend - b.bend);
     for (int it = 0; it < IC_TRACE_CROSSING_BISECTIONS; it++) {
-        const double len = dist3(a.p.xyz, b.p.xyz);
+        const double len = ic_dist3(a.p.xyz, b.p.xyz);
         if (!(len > tiny))
             break;
         double X[3];
@@ -103,7 +96,7 @@ static ic_local_point bisect(const walk *w, bent a, bent b, double *place)
         else
             b = m;
     }
-    *place = dist3(a.p.xyz, b.p.xyz) + band;
+    *place = ic_dist3(a.p.xyz, b.p.xyz) + band;
     return fabs(a.bend) <= fabs(b.bend) ? a.p : b.p;
 }
 
@@ -114,10 +107,7 @@ static int curve_direction(const walk *w, const ic_local_point *Q, const double 
                            double T[3])
 {
     double e1[3], e2[3];
-    const double a[3] = {fabs(N[0]) < 0.6 ? 1.0 : 0.0, fabs(N[0]) < 0.6 ? 0.0 : 1.0, 0.0};
-    ic_cross3(e1, N, a);
-    ic_normalize3(e1);
-    ic_cross3(e2, N, e1);
+    ic_plane_basis3(N, e1, e2);
     double best = 0.5 * h;
     int found = 0;
     ic_local_point far;
@@ -219,7 +209,7 @@ int ic_trace_locate_crossing(ic_pair *pair, const ic_local_options *lopt,
     }
     int k = found[0] ? 0 : 1;
     if (found[0] && found[1]) /* the nearer to the end */
-        k = dist3(lo[0].p.xyz, near->xyz) <= dist3(lo[1].p.xyz, near->xyz) ? 0 : 1;
+        k = ic_dist3(lo[0].p.xyz, near->xyz) <= ic_dist3(lo[1].p.xyz, near->xyz) ? 0 : 1;
     if (!found[k])
         return 0;
     *P = bisect(&w, lo[k], hi[k], place);

@@ -152,11 +152,6 @@ static int point_of_tangential_curve(ic_point_type t)
            t == IC_POINT_TANGENTIAL_CURVE;
 }
 
-static double dist3(const double *a, const double *b)
-{
-    return hypot(hypot(a[0] - b[0], a[1] - b[1]), a[2] - b[2]);
-}
-
 /* x lies within radius of a tangential curve, and of no curve's end and
  * no transversal curve (a crossing of the tangential curve, crossing.c,
  * where the transversal curve is joined through). */
@@ -165,8 +160,8 @@ static int inside_tangential(const ic_trace_result *r, const double *x, double r
     int on = 0;
     for (int c = 0; c < r->ncurves; c++) {
         const ic_trace_curve *cv = &r->curves[c];
-        if (!cv->closed && (dist3(cv->points[0].xyz, x) <= radius ||
-                            dist3(cv->points[cv->npoints - 1].xyz, x) <= radius))
+        if (!cv->closed && (ic_dist3(cv->points[0].xyz, x) <= radius ||
+                            ic_dist3(cv->points[cv->npoints - 1].xyz, x) <= radius))
             return 0;
         if (!cv->tangential &&
             ic_trace_polyline_distance(cv->points, cv->npoints, x, radius) <= radius)

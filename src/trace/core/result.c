@@ -29,8 +29,9 @@ static int is_contact(ic_point_type t)
     return t == IC_POINT_ISOLATED_CONTACT || t == IC_POINT_HIGHER_ORDER_CONTACT;
 }
 
-/* A point located only to within radius (above IC_TRACE_PLACE_REL L):
- * approximate, and said. */
+/* A point located only to within radius (above IC_TRACE_PLACE_REL L for a
+ * contact, IC_TRACE_CROSSING_PLACE_REL L for a crossing): approximate, and
+ * the report says why. */
 static void not_placed(ic_trace_result *r, ic_trace_special *s, ic_trace_located *loc,
                        double radius, const char *why)
 {

@@ -12,7 +12,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "api/api.h"
 #include "certify/match.h"
+#include "certify/plan.h"
 #include "harness.h"
 #include "intercurve.h"
 #include "local/pair_access.h"
@@ -134,9 +136,41 @@ static inline double *search_curves(const traced *t, const ic_pairing *pg, ic_ce
     return z;
 }
 
+/* The cover of a check replayed from its certificate file (plan.h) gives
+ * the same verdict, the same reason and the same cells and crossings: the
+ * file holds the cover whole, and the replay proves each leaf as growing it
+ * did (a cover refused where it could not decide a cell is refused at that
+ * cell, with the replay's own reason). 1 so, 0 the test failed. */
+static inline int same_on_replay(const ic_pairing *pg, const traced *t, const ic_certify_limits *lim,
+                                 const ic_certify_claim *claim, const ic_certify_io *grown,
+                                 const ic_certify_summary *s)
+{
+    ic_error err;
+    ic_cover_plan *plan = NULL;
+    char why[200];
+    if (!REQUIRE(ic_api_read_certificate(grown->doc, "CERT", &plan, why, sizeof why, &err) ==
+                         IC_OK &&
+                     plan,
+                 "certificate file: %s", err.message))
+        return 0;
+    ic_certify_io io = {.replay = plan};
+    ic_certify_summary r;
+    const ic_status st = ic_certify_run(pg, t->opt.box, t->opt.has_box, lim, claim, &io, &r, &err);
+    ic_cover_plan_free(plan);
+    return REQUIRE(st == IC_OK, "replay: %s", err.message) &&
+           REQUIRE(r.accepted == s->accepted && r.cells == s->cells && r.empty == s->empty &&
+                       r.regular == s->regular && r.crossings == s->crossings &&
+                       (strcmp(r.reason, s->reason) == 0 ||
+                        (!s->accepted && strstr(r.reason, "left undecided"))),
+                   "replay: accepted %d, %ld cells, %ld regular, %ld crossings (%s); grown: %d, "
+                   "%ld, %ld, %ld (%s)",
+                   r.accepted, r.cells, r.regular, r.crossings, r.reason, s->accepted, s->cells,
+                   s->regular, s->crossings, s->reason);
+}
+
 /* The checker's verdict on the cover of t's region and the claim (its
  * singular points, tangential tubes and curves), as ic_certify_run gives
- * it. With `drop_crossing` (no tubes), the cover grown by hand loses one
+ * it, and the same on its certificate file's replay (same_on_replay). With `drop_crossing` (no tubes), the cover grown by hand loses one
  * crossing of its first regular cell that has any (a crossing count off by
  * one). 1 accepted, 0 refused (reason says why), -1 the test failed. */
 static inline int verdict_of(const traced *t, const ic_certify_claim *claim, int drop_crossing,
@@ -147,12 +181,15 @@ static inline int verdict_of(const traced *t, const ic_certify_claim *claim, int
     if (!drop_crossing) { /* the checker as the tracer runs it */
         const ic_certify_limits lim = ic_certify_limits_for(200000, 0);
         ic_certify_summary s;
-        if (!REQUIRE(ic_certify_run(pg, t->opt.box, t->opt.has_box, &lim, claim, &s, &err) ==
-                         IC_OK,
+        ic_certify_io io = {.keep = 1};
+        if (!REQUIRE(ic_certify_run(pg, t->opt.box, t->opt.has_box, &lim, claim, &io, &s,
+                                    &err) == IC_OK,
                      "certify: %s", err.message))
             return -1;
+        const int same = same_on_replay(pg, t, &lim, claim, &io, &s);
+        free(io.doc);
         snprintf(reason, 240, "%s", s.reason);
-        return s.accepted;
+        return same ? s.accepted : -1;
     }
     ic_certificate *c = ic_certificate_new(pg, t->opt.box, t->opt.has_box, &err);
     if (!REQUIRE(c, "certificate: %s", err.message))

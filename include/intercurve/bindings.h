@@ -46,6 +46,13 @@ IC_API IC_NODISCARD ic_status ic_problem_trace(ic_trace_result **res, ic_pair **
                                                double time_limit, int threads, double fit_tol,
                                                ic_error *err);
 
+/** ic_problem_trace, and the checker's cover kept as a certificate file
+ *  (ic_trace_options.keep_certificate): ic_trace_result_certificate(*res)
+ *  gives its text (docs/output-formats.md, "The certificate file"). */
+IC_API IC_NODISCARD ic_status ic_problem_trace_keep_certificate(
+    ic_trace_result **res, ic_pair **pair, const ic_problem *problem, double tol, int depth,
+    double time_limit, int threads, double fit_tol, ic_error *err);
+
 /** The trace document of res, a trace of `pair` (ic_trace_write_json), as
  *  a NUL-terminated text in *json, *len bytes long without the NUL; the
  *  caller frees it with ic_free. *json is NULL on failure (ic_trace_write_json's
@@ -71,6 +78,27 @@ IC_API IC_NODISCARD ic_status ic_problem_verify(const ic_problem *problem,
 IC_API IC_NODISCARD ic_status ic_problem_verify_json(char **json, size_t *len,
                                                      const ic_problem *problem,
                                                      const char *trace_json, ic_error *err);
+
+/**
+ * ic_problem_verify with a certificate file (the text of `intercurve trace
+ * --certificate`, NUL terminated) whose cover is replayed instead of grown,
+ * as `intercurve verify --certificate` does (docs/tracing.md, "The
+ * certificate file"): each of its leaves is proven again and must be what
+ * the file says (else out->accepted is 0 and out->reason names the cell).
+ * IC_ERR_INVALID also for a file that is not a certificate of this
+ * problem's region (the message names the JSON path).
+ */
+IC_API IC_NODISCARD ic_status ic_problem_verify_certificate(const ic_problem *problem,
+                                                            const char *trace_json,
+                                                            const char *certificate_json,
+                                                            ic_trace_certificate *out,
+                                                            ic_error *err);
+
+/** The same, the summary as ic_problem_verify_json writes it;
+ *  certificate_json NULL: as ic_problem_verify_json. */
+IC_API IC_NODISCARD ic_status ic_problem_verify_certificate_json(
+    char **json, size_t *len, const ic_problem *problem, const char *trace_json,
+    const char *certificate_json, ic_error *err);
 
 /**
  * The point document of `intercurve point` (ic_local_write_json) as a

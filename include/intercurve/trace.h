@@ -75,6 +75,12 @@ typedef struct {
      *  tracer's own account is in tracer_complete): for callers who need the
      *  curves only, and fast */
     int certify;
+    /** 1: the checker's cover is kept as a certificate file
+     *  (ic_trace_result_certificate; docs/output-formats.md, "The
+     *  certificate file"), which `intercurve verify --certificate` checks
+     *  again cell by cell; 0: not kept (default: a cover may hold a million
+     *  cells) */
+    int keep_certificate;
 } ic_trace_options;
 
 IC_API void ic_trace_defaults(ic_trace_options *opt);
@@ -298,6 +304,10 @@ IC_API const ic_trace_curve *ic_trace_result_curve(const ic_trace_result *res, i
 IC_API int ic_trace_result_num_specials(const ic_trace_result *res);
 IC_API const ic_trace_special *ic_trace_result_special(const ic_trace_result *res, int i);
 IC_API const ic_trace_report *ic_trace_result_report(const ic_trace_result *res);
+/** The certificate file of the last check (JSON text, NUL terminated;
+ *  docs/output-formats.md, "The certificate file") when the trace kept it
+ *  (ic_trace_options.keep_certificate) and the checker ran; else NULL. */
+IC_API const char *ic_trace_result_certificate(const ic_trace_result *res);
 /** The classification of a point of curve c: a recorded special point's type
  *  where the point is one (a tangential curve end), tangential-curve along a
  *  tangential curve, transversal otherwise (and without a point p). */

@@ -41,8 +41,29 @@ ic_status ic_api_list_surfaces(FILE *f, const char *path, int json, int *read_fa
  * curves held against a cover grown afresh; *out the verdict. IC_OK when the
  * check ran (accepted or refused: out says), IC_ERR_INVALID for a document
  * that is not a trace of curves (the message names the JSON path), the
- * pair's or the region's errors, IC_ERR_NOMEM. */
+ * pair's or the region's errors, IC_ERR_NOMEM. With cert_text (NULL: none)
+ * the certificate file's cover is replayed instead of grown
+ * (certify/plan.h): every leaf proven again, refused where the file says
+ * otherwise; IC_ERR_INVALID for a file that is not a certificate of this
+ * problem's region. */
 ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const char *name,
-                        ic_trace_certificate *out, ic_error *err);
+                        const char *cert_text, const char *cert_name, ic_trace_certificate *out,
+                        ic_error *err);
+
+/* A certificate file (its text; name for messages) read into the cover it
+ * holds (certificate_read.c): *plan the caller's to free
+ * (ic_cover_plan_free), NULL for a file of a check that did not run, whose
+ * reason is copied into reason[size]. IC_ERR_INVALID naming the JSON path
+ * of what is wrong, IC_ERR_NOMEM. */
+typedef struct ic_cover_plan ic_cover_plan;
+
+/* The certificate file of a trace res (an ic_trace_result kept with
+ * keep_certificate; void * to be an ic_file_writer): the checker's cover,
+ * or where the checker did not run a file that says so and why
+ * (ic_api_unchecked_reason). IC_ERR_IO when f fails. */
+ic_status ic_api_write_certificate(FILE *f, void *res, ic_error *err);
+const char *ic_api_unchecked_reason(const ic_trace_result *res);
+ic_status ic_api_read_certificate(const char *text, const char *name, ic_cover_plan **plan,
+                                  char *reason, size_t size, ic_error *err);
 
 #endif

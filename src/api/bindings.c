@@ -20,9 +20,10 @@
 
 void ic_free(void *mem) { free(mem); }
 
-ic_status ic_problem_trace(ic_trace_result **res, ic_pair **pair, const ic_problem *problem,
-                           double tol, int depth, double time_limit, int threads,
-                           double fit_tol, ic_error *err)
+/* ic_problem_trace, the certificate file kept or not. */
+static ic_status trace_problem(ic_trace_result **res, ic_pair **pair, const ic_problem *problem,
+                               double tol, int depth, double time_limit, int threads,
+                               double fit_tol, int keep_certificate, ic_error *err)
 {
     IC_ARG_NOT_NULL(res, "res");
     IC_ARG_NOT_NULL(pair, "pair");
@@ -40,8 +41,24 @@ ic_status ic_problem_trace(ic_trace_result **res, ic_pair **pair, const ic_probl
     opt.depth = depth;
     opt.time_limit = time_limit;
     opt.threads = threads; /* ic_trace refuses it out of range */
+    opt.keep_certificate = keep_certificate;
     ic_api_stage failed;
     return ic_api_trace_problem(res, pair, problem, &opt, fit_tol, &failed, err);
+}
+
+ic_status ic_problem_trace(ic_trace_result **res, ic_pair **pair, const ic_problem *problem,
+                           double tol, int depth, double time_limit, int threads,
+                           double fit_tol, ic_error *err)
+{
+    return trace_problem(res, pair, problem, tol, depth, time_limit, threads, fit_tol, 0, err);
+}
+
+ic_status ic_problem_trace_keep_certificate(ic_trace_result **res, ic_pair **pair,
+                                            const ic_problem *problem, double tol, int depth,
+                                            double time_limit, int threads, double fit_tol,
+                                            ic_error *err)
+{
+    return trace_problem(res, pair, problem, tol, depth, time_limit, threads, fit_tol, 1, err);
 }
 
 /* What a document writer needs, to be printed into a memory stream. */
@@ -94,17 +111,39 @@ ic_status ic_problem_verify(const ic_problem *problem, const char *trace_json,
     IC_ARG_NOT_NULL(problem, "problem");
     IC_ARG_NOT_NULL(trace_json, "trace_json");
     IC_ARG_NOT_NULL(out, "out");
-    return ic_api_verify(problem, trace_json, "the trace document", out, err);
+    return ic_api_verify(problem, trace_json, "the trace document", NULL, NULL, out, err);
+}
+
+ic_status ic_problem_verify_certificate(const ic_problem *problem, const char *trace_json,
+                                        const char *certificate_json, ic_trace_certificate *out,
+                                        ic_error *err)
+{
+    IC_ARG_NOT_NULL(problem, "problem");
+    IC_ARG_NOT_NULL(trace_json, "trace_json");
+    IC_ARG_NOT_NULL(certificate_json, "certificate_json");
+    IC_ARG_NOT_NULL(out, "out");
+    return ic_api_verify(problem, trace_json, "the trace document", certificate_json,
+                         "the certificate file", out, err);
 }
 
 ic_status ic_problem_verify_json(char **json, size_t *len, const ic_problem *problem,
                                  const char *trace_json, ic_error *err)
 {
+    return ic_problem_verify_certificate_json(json, len, problem, trace_json, NULL, err);
+}
+
+ic_status ic_problem_verify_certificate_json(char **json, size_t *len, const ic_problem *problem,
+                                             const char *trace_json, const char *certificate_json,
+                                             ic_error *err)
+{
     IC_ARG_NOT_NULL(json, "json");
     *json = NULL;
     IC_ARG_NOT_NULL(problem, "problem");
     ic_trace_certificate c;
-    const ic_status st = ic_problem_verify(problem, trace_json, &c, err);
+    const ic_status st =
+        certificate_json ? ic_problem_verify_certificate(problem, trace_json, certificate_json, &c,
+                                                         err)
+                         : ic_problem_verify(problem, trace_json, &c, err);
     if (st != IC_OK)
         return st;
     const document d = {NULL, NULL, &c, NULL, 0};

@@ -7,10 +7,12 @@
  */
 #include "api/api.h"
 #include "certify/match.h"
+#include "certify/plan.h"
 #include "local/pair_access.h"
 #include "trace/certify_result.h"
 
 #include <cjson/cJSON.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -182,8 +184,48 @@ static ic_status read_tubes(const cJSON *doc, const char *name, ic_certify_tube 
     return IC_OK;
 }
 
+/* The check of the claim: the cover grown, or the file's replayed. */
+static ic_status check(const ic_problem *problem, const ic_pair *pair, const cJSON *doc,
+                       const ic_certify_claim *claim, ic_certify_io *io,
+                       ic_trace_certificate *out, ic_error *err)
+{
+    const cJSON *cells = cJSON_GetObjectItemCaseSensitive(
+        cJSON_GetObjectItemCaseSensitive(doc, "report"), "cells");
+    double box[3][2];
+    const int has_box = ic_problem_box(problem, box);
+    const ic_certify_limits lim =
+        ic_certify_limits_for(cJSON_IsNumber(cells) ? (long)cells->valuedouble : 0, 0);
+    ic_certify_summary s;
+    const ic_status st =
+        ic_certify_run(ic_pair_pairing(pair), box, has_box, &lim, claim, io, &s, err);
+    ic_trace_certificate_from(out, &s);
+    out->accepted = st == IC_OK && s.accepted;
+    return st;
+}
+
+/* The certificate file's cover (NULL: none given), or the verdict of a
+ * file that holds none (*done then). */
+static ic_status read_plan(const char *cert_text, const char *cert_name, ic_cover_plan **plan,
+                           ic_trace_certificate *out, int *done, ic_error *err)
+{
+    *plan = NULL, *done = 0;
+    if (!cert_text)
+        return IC_OK;
+    char reason[200];
+    const ic_status st =
+        ic_api_read_certificate(cert_text, cert_name, plan, reason, sizeof reason, err);
+    if (st == IC_OK && !*plan) {
+        *done = 1;
+        out->checked = 1;
+        snprintf(out->reason, sizeof out->reason,
+                 "%s holds no cover: the trace's check did not run (%s)", cert_name, reason);
+    }
+    return st;
+}
+
 ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const char *name,
-                        ic_trace_certificate *out, ic_error *err)
+                        const char *cert_text, const char *cert_name, ic_trace_certificate *out,
+                        ic_error *err)
 {
     memset(out, 0, sizeof *out);
     cJSON *doc = cJSON_Parse(doc_text);
@@ -205,14 +247,11 @@ ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const c
         st = read_singular(doc, name, &sing, &scale, &passages, &of_surface, &nsing, err);
     if (st == IC_OK)
         st = read_tubes(doc, name, &tubes, &ntubes, &txyz, err);
-    if (st == IC_OK) {
-        const cJSON *cells = cJSON_GetObjectItemCaseSensitive(
-            cJSON_GetObjectItemCaseSensitive(doc, "report"), "cells");
-        double box[3][2];
-        const int has_box = ic_problem_box(problem, box);
-        const ic_certify_limits lim =
-            ic_certify_limits_for(cJSON_IsNumber(cells) ? (long)cells->valuedouble : 0, 0);
-        ic_certify_summary s;
+    ic_cover_plan *plan = NULL;
+    int done = 0;
+    if (st == IC_OK)
+        st = read_plan(cert_text, cert_name, &plan, out, &done, err);
+    if (st == IC_OK && !done) {
         const ic_certify_claim claim = {.curves = curves,
                                         .ncurves = n,
                                         .singular = (const double(*)[3])sing,
@@ -222,10 +261,10 @@ ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const c
                                         .nsingular = nsing,
                                         .tubes = tubes,
                                         .ntubes = ntubes};
-        st = ic_certify_run(ic_pair_pairing(pair), box, has_box, &lim, &claim, &s, err);
-        ic_trace_certificate_from(out, &s);
-        out->accepted = st == IC_OK && s.accepted;
+        ic_certify_io io = {.replay = plan};
+        st = check(problem, pair, doc, &claim, &io, out, err);
     }
+    ic_cover_plan_free(plan);
     free(curves);
     free(z);
     free(sing);

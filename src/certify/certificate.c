@@ -325,6 +325,18 @@ long ic_certificate_add_crossing(ic_certificate *c, const ic_crossing *x)
     return c->ncross++;
 }
 
+void ic_certificate_count(ic_certificate *c, ic_cell_kind kind)
+{
+    ic_certify_summary *s = &c->summary;
+    s->empty += kind == IC_CELL_EMPTY;
+    s->outside += kind == IC_CELL_OUTSIDE;
+    s->diagonal += kind == IC_CELL_DIAGONAL;
+    s->regular += kind == IC_CELL_REGULAR;
+    s->singular += kind == IC_CELL_SINGULAR;
+    s->tangential += kind == IC_CELL_TANGENTIAL;
+    s->refused += kind == IC_CELL_REFUSED;
+}
+
 void ic_certificate_refuse(ic_certificate *c, const char *fmt, ...)
 {
     c->summary.accepted = 0;

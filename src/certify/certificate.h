@@ -104,6 +104,9 @@ typedef struct {
     double deadline;
 } ic_certify_limits;
 
+/* A certificate file's cover to replay (plan.h). */
+typedef struct ic_cover_plan ic_cover_plan;
+
 typedef struct {
     const ic_pairing *pg;
     int dim, m;
@@ -148,6 +151,10 @@ typedef struct {
     /* work memory of face.c, kept from face to face: boxes of a face */
     ic_interval (*face_stack)[4];
     int face_cap;
+    /* a file's cover to replay instead of growing one (plan.h), and its
+     * next node */
+    const ic_cover_plan *plan;
+    long plan_next;
     ic_certify_summary summary;
 } ic_certificate;
 
@@ -257,6 +264,9 @@ static inline int ic_cell_unexamined(ic_cell_kind kind)
 /* Appends a cell (its box) or a crossing: the index, or -1 out of memory. */
 long ic_certificate_add_cell(ic_certificate *c, const double *lo, const double *hi);
 long ic_certificate_add_crossing(ic_certificate *c, const ic_crossing *x);
+
+/* A decided leaf of this kind counted in the summary. */
+void ic_certificate_count(ic_certificate *c, ic_cell_kind kind);
 
 /* Refuses: the first reason is kept. */
 void ic_certificate_refuse(ic_certificate *c, const char *fmt, ...) IC_PRINTF(2, 3);

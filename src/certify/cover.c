@@ -8,6 +8,7 @@
  * ends the cover: the certificate is refused with the reason.
  */
 #include "certificate.h"
+#include "plan.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -80,18 +81,6 @@ static int split(ic_certificate *c, long i, int k, double at, long *stack, int *
     return 0;
 }
 
-static void count(ic_certificate *c, ic_cell_kind kind)
-{
-    ic_certify_summary *s = &c->summary;
-    s->empty += kind == IC_CELL_EMPTY;
-    s->outside += kind == IC_CELL_OUTSIDE;
-    s->diagonal += kind == IC_CELL_DIAGONAL;
-    s->regular += kind == IC_CELL_REGULAR;
-    s->singular += kind == IC_CELL_SINGULAR;
-    s->tangential += kind == IC_CELL_TANGENTIAL;
-    s->refused += kind == IC_CELL_REFUSED;
-}
-
 /* Decides leaf i or splits it: 1 decided or split, 0 refused, -1 out of
  * memory. */
 static int grow_leaf(ic_certificate *c, long i, int depth, const ic_certify_limits *lim,
@@ -100,14 +89,14 @@ static int grow_leaf(ic_certificate *c, long i, int depth, const ic_certify_limi
     const int rc = ic_certify_leaf(c, i, lim);
     if (rc != 0) {
         if (rc > 0)
-            count(c, c->cells[i].kind);
+            ic_certificate_count(c, c->cells[i].kind);
         return rc;
     }
     double rel;
     const int k = widest(c, i, &rel);
     const ic_cell *cl = &c->cells[i];
     if (rel < lim->min_width) {
-        count(c, IC_CELL_REFUSED);
+        ic_certificate_count(c, IC_CELL_REFUSED);
         ic_certificate_refuse(c, "a cell of width %.3g of the region at [%.9g, %.9g] x [%.9g, "
                                  "%.9g] (first two coordinates) is neither empty nor regular nor "
                                  "by a singular point or tangential curve found: one missed, a "
@@ -116,7 +105,7 @@ static int grow_leaf(ic_certificate *c, long i, int depth, const ic_certify_limi
         return 0;
     }
     if (c->ncells + 2 > lim->max_cells) {
-        count(c, IC_CELL_REFUSED);
+        ic_certificate_count(c, IC_CELL_REFUSED);
         ic_certificate_refuse(c, "the cover needs more than %ld cells", lim->max_cells);
         return 0;
     }
@@ -129,11 +118,28 @@ static int grow_leaf(ic_certificate *c, long i, int depth, const ic_certify_limi
     return split(c, i, k, split_point(c, i, k, depth), stack, n) < 0 ? -1 : 1;
 }
 
+/* Cell i as the plan's next node says (plan.h): split there, or a leaf
+ * proven to be what the file says. 1 done, 0 refused, -1 out of memory. */
+static int replay_leaf(ic_certificate *c, long i, const ic_certify_limits *lim, long *stack,
+                       int *n)
+{
+    int axis;
+    double at;
+    const int rc = ic_certify_replay_node(c, i, c->plan_next++, lim, &axis, &at);
+    if (rc == 2)
+        return split(c, i, axis, at, stack, n) < 0 ? -1 : 1;
+    if (rc == 1)
+        ic_certificate_count(c, c->cells[i].kind);
+    else if (rc == 0)
+        ic_certificate_count(c, IC_CELL_REFUSED);
+    return rc;
+}
+
 ic_status ic_certify_cover(ic_certificate *c, const ic_certify_limits *lim, ic_error *err)
 {
     const double start = now();
     /* depth first: the stack never holds more than two cells per level */
-    enum { MAX_STACK = 4096 };
+    enum { MAX_STACK = 2 * (IC_CERTIFY_MAX_LEVELS + 1) };
     long *stack = malloc(MAX_STACK * sizeof *stack);
     int *depth = malloc(MAX_STACK * sizeof *depth);
     if (!stack || !depth) {
@@ -157,7 +163,7 @@ ic_status ic_certify_cover(ic_certificate *c, const ic_certify_limits *lim, ic_e
             rc = 0;
             break;
         }
-        rc = grow_leaf(c, i, d, lim, stack, &n);
+        rc = c->plan ? replay_leaf(c, i, lim, stack, &n) : grow_leaf(c, i, d, lim, stack, &n);
         for (int k = before; k < n; k++)
             depth[k] = d + 1;
     }

@@ -85,11 +85,22 @@ typedef struct {
     int ntubes;
 } ic_certify_claim;
 
-/* The cover of pg's region (box: the problem's) grown within lim, and the
- * claim held against it (run.c): *out the summary. IC_OK, or an error (out
- * of memory, a region without a finite box). */
+/* A check's certificate file (plan.h): the one to replay, and the one
+ * it writes. */
+typedef struct {
+    const ic_cover_plan *replay; /* NULL: the cover is grown */
+    int keep;                    /* 1: the cover written as a file into doc */
+    char *doc;                   /* the file (the caller frees it), len bytes */
+    size_t len;
+} ic_certify_io;
+
+/* The cover of pg's region (box: the problem's) grown within lim, or with
+ * io->replay replayed, and the claim held against it (run.c): *out the
+ * summary, io->doc the file when io->keep. IC_OK, or an error (out of
+ * memory, a region without a finite box, a replayed tree that does not fit
+ * the region: IC_ERR_INVALID). io may be NULL. */
 ic_status ic_certify_run(const ic_pairing *pg, const double box[3][2], int has_box,
                          const ic_certify_limits *lim, const ic_certify_claim *claim,
-                         ic_certify_summary *out, ic_error *err);
+                         ic_certify_io *io, ic_certify_summary *out, ic_error *err);
 
 #endif

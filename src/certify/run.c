@@ -1,8 +1,11 @@
 /* The whole check in one call (certificate.h): the cover grown and proven,
  * the curves held against it, the summary kept, the cover freed. */
 #include "match.h"
+#include "plan.h"
 
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* The checker's work limits: cells of the cover (a few times as many as
@@ -52,10 +55,29 @@ static ic_certify_limits with_tubes(const ic_certificate *c, const ic_certify_li
     return out;
 }
 
+/* The cover as a certificate file in io->doc. */
+static ic_status keep_file(const ic_certificate *c, ic_certify_io *io, ic_error *err)
+{
+    FILE *mem = open_memstream(&io->doc, &io->len);
+    if (!mem)
+        return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory writing the certificate");
+    ic_status st = ic_certificate_write_cover(mem, c, err);
+    /* a memory stream fails only for want of memory */
+    if (fclose(mem) != 0 || st == IC_ERR_IO)
+        st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory writing the certificate");
+    if (st != IC_OK) {
+        free(io->doc);
+        io->doc = NULL, io->len = 0;
+    }
+    return st;
+}
+
 ic_status ic_certify_run(const ic_pairing *pg, const double box[3][2], int has_box,
                          const ic_certify_limits *lim, const ic_certify_claim *claim,
-                         ic_certify_summary *out, ic_error *err)
+                         ic_certify_io *io, ic_certify_summary *out, ic_error *err)
 {
+    if (io)
+        io->doc = NULL, io->len = 0;
     memset(out, 0, sizeof *out);
     ic_certificate *c = ic_certificate_new(pg, box, has_box, err);
     if (!c)
@@ -72,8 +94,11 @@ ic_status ic_certify_run(const ic_pairing *pg, const double box[3][2], int has_b
     else if (placed == 0)
         ic_certificate_refuse(c, "the region's image has no enclosure: singular boxes and "
                                  "tangential tubes cannot be placed");
-    else {
+    else if (io && io->replay) /* a tree of another region: bad input */
+        st = ic_cover_plan_check(io->replay, c, err);
+    if (st == IC_OK && placed > 0) {
         const ic_certify_limits grown = with_tubes(c, lim);
+        c->plan = io ? io->replay : NULL;
         st = ic_certify_cover(c, &grown, err);
     }
     /* a claimed singular point where the cover proves the curve smooth */
@@ -89,6 +114,8 @@ ic_status ic_certify_run(const ic_pairing *pg, const double box[3][2], int has_b
                             claim->nsingular) < 0)
         st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");
     *out = c->summary;
+    if (st == IC_OK && io && io->keep)
+        st = keep_file(c, io, err);
     ic_certificate_free(c);
     return st;
 }

@@ -1,6 +1,7 @@
 /* intercurve trace: the whole intersection as JSON (docs/output-formats.md). */
 #include "cli/cli.h"
 #include "cli/trace_options.h"
+#include "api/api.h"
 
 #include <math.h>
 
@@ -13,6 +14,7 @@ enum {
     OPT_FIT_TOL,
     OPT_NO_EXACT,
     OPT_THREADS,
+    OPT_CERTIFICATE,
     NOPTIONS
 };
 
@@ -70,6 +72,13 @@ static const ic_cli_option TRACE_OPTIONS[NOPTIONS] = {
     [OPT_THREADS] =
         IC_CLI_OPTION_THREADS("threads that search at once, 0 for all the machine's cores;\n"
                               "the output is the same whatever N (docs/tracing.md, \"Threads\")"),
+    [OPT_CERTIFICATE] = {.name = "--certificate",
+                         .metavar = "CERT.json",
+                         .kind = IC_OPT_TEXT,
+                         .help = "also writes the checker's cover of the search region, cell by\n"
+                                 "cell, to CERT.json, for `intercurve verify --certificate`\n"
+                                 "(docs/output-formats.md, \"The certificate file\"); where the\n"
+                                 "checker did not run, a file that says why"},
 };
 
 static const ic_cli_command TRACE = {
@@ -132,6 +141,24 @@ static ic_status write_result(FILE *f, void *user, ic_error *err)
     return ic_trace_write_json(f, o->res, o->pair, err);
 }
 
+/* The certificate file, when asked for: 0, or EXIT_COMPUTE after the
+ * reason. */
+static int write_certificate(const char *path, ic_trace_result *res)
+{
+    if (!path)
+        return 0;
+    ic_error err;
+    ic_error_clear(&err);
+    if (ic_write_file_atomic(path, ic_api_write_certificate, res, &err) != IC_OK) {
+        fprintf(stderr, "intercurve trace: %s\n", err.message);
+        return EXIT_COMPUTE;
+    }
+    if (!ic_trace_result_certificate(res))
+        fprintf(stderr, "intercurve trace: %s holds no cover: %s\n", path,
+                ic_api_unchecked_reason(res));
+    return 0;
+}
+
 /* The result to -o's file (whole or not at all) or to standard output;
  * 0, or EXIT_COMPUTE after the reason. */
 static int write_output(const char *path, trace_output *o)
@@ -165,12 +192,15 @@ int ic_cmd_trace(int argc, char **argv)
     opt.threads = (int)v[OPT_THREADS].integer;
     if (v[OPT_TIME_LIMIT].given)
         opt.time_limit = v[OPT_TIME_LIMIT].real;
+    opt.keep_certificate = v[OPT_CERTIFICATE].given;
     const double fit_tol = has_bsplines((out_format)v[OPT_FORMAT].choice) ? v[OPT_FIT_TOL].real : 0;
     ic_cli_traced t;
     if ((rc = ic_cli_trace_file(file, &opt, fit_tol, "trace", &t)) != 0)
         return rc;
     trace_output o = {(out_format)v[OPT_FORMAT].choice, t.res, t.pair, ic_problem_title(t.problem)};
     rc = write_output(v[OPT_OUTPUT].text, &o);
+    if (rc == 0)
+        rc = write_certificate(v[OPT_CERTIFICATE].text, t.res);
     ic_cli_traced_free(&t);
     return rc;
 }

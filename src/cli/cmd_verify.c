@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { OPT_TRACE, NOPTIONS };
+enum { OPT_TRACE, OPT_CERTIFICATE, NOPTIONS };
 
 static const ic_cli_option VERIFY_OPTIONS[NOPTIONS] = {
     [OPT_TRACE] = {.name = "--trace",
@@ -16,6 +16,13 @@ static const ic_cli_option VERIFY_OPTIONS[NOPTIONS] = {
                    .need = IC_OPT_REQUIRED,
                    .help = "the trace document to check (intercurve trace PROBLEM.json -o "
                            "TRACE.json)"},
+    [OPT_CERTIFICATE] = {.name = "--certificate",
+                         .metavar = "CERT.json",
+                         .kind = IC_OPT_TEXT,
+                         .help = "replays this certificate file's cover (intercurve trace\n"
+                                 "--certificate CERT.json) instead of growing one: its splits are\n"
+                                 "taken, every leaf is proven again and must be what the file\n"
+                                 "says (docs/tracing.md, \"The certificate file\")"},
 };
 
 static const ic_cli_command VERIFY = {
@@ -30,7 +37,9 @@ static const ic_cli_command VERIFY = {
     .noptions = NOPTIONS,
     .notes = "example:\n"
              "  intercurve trace examples/cylinders.json -o cylinders.trace.json\n"
-             "  intercurve verify examples/cylinders.json --trace cylinders.trace.json\n",
+             "  intercurve verify examples/cylinders.json --trace cylinders.trace.json\n"
+             "  intercurve trace examples/cylinders.json -o t.json --certificate c.json\n"
+             "  intercurve verify examples/cylinders.json --trace t.json --certificate c.json\n",
 };
 
 /* The whole file as a string (the caller frees it); NULL after the reason. */
@@ -74,16 +83,20 @@ int ic_cmd_verify(int argc, char **argv)
     ic_problem *p = NULL;
     if ((rc = ic_cli_load_problem(&p, file, 0)) != 0)
         return rc;
+    const char *cert_path = v[OPT_CERTIFICATE].text;
     char *doc = read_text(v[OPT_TRACE].text);
-    if (!doc) {
+    char *cert = doc && cert_path ? read_text(cert_path) : NULL;
+    if (!doc || (cert_path && !cert)) {
+        free(doc);
         ic_problem_free(p);
         return EXIT_INPUT;
     }
     ic_error err;
     ic_error_clear(&err);
     ic_trace_certificate c;
-    const ic_status st = ic_api_verify(p, doc, v[OPT_TRACE].text, &c, &err);
+    const ic_status st = ic_api_verify(p, doc, v[OPT_TRACE].text, cert, cert_path, &c, &err);
     free(doc);
+    free(cert);
     ic_problem_free(p);
     if (st != IC_OK) {
         fprintf(stderr, "intercurve verify: %s\n", err.message);

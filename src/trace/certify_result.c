@@ -112,6 +112,8 @@ ic_status ic_trace_certify(ic_trace_result *r, ic_pair *pair, const ic_trace_opt
     if (sum_out)
         sum_out->nseeds = 0;
     rep->tracer_complete = rep->complete;
+    free(r->certificate); /* a file of an earlier round's check */
+    r->certificate = NULL;
     if (!rep->complete)
         return IC_OK;
     if (!opt->certify) {
@@ -150,9 +152,11 @@ ic_status ic_trace_certify(ic_trace_result *r, ic_pair *pair, const ic_trace_opt
                                     .tubes = tubes,
                                     .ntubes = ntubes};
     ic_certify_summary sum;
+    ic_certify_io io = {.keep = opt->keep_certificate};
     ic_status st = z && sing && scale && txyz && passages && of_surface
-                       ? ic_certify_run(pg, opt->box, opt->has_box, &lim, &claim, &sum, err)
+                       ? ic_certify_run(pg, opt->box, opt->has_box, &lim, &claim, &io, &sum, err)
                        : ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");
+    r->certificate = io.doc;
     free(txyz);
     free(tubes);
     free(passages);

@@ -28,6 +28,7 @@ void ic_trace_defaults(ic_trace_options *opt)
     opt->exact_paths = 1;
     opt->threads = IC_TRACE_THREADS_DEFAULT; /* all the cores */
     opt->certify = 1;
+    opt->keep_certificate = 0;
     ic_local_defaults(&opt->local);
 }
 
@@ -63,6 +64,9 @@ ic_status ic_trace_check_options(const ic_trace_options *o, ic_error *err)
     if (o->certify != 0 && o->certify != 1)
         return ic_error_set(err, IC_ERR_INVALID, 0, "trace: certify %d is not 0 or 1",
                             o->certify);
+    if (o->keep_certificate != 0 && o->keep_certificate != 1)
+        return ic_error_set(err, IC_ERR_INVALID, 0, "trace: keep_certificate %d is not 0 or 1",
+                            o->keep_certificate);
     if (o->threads < 0 || o->threads > IC_TRACE_MAX_THREADS)
         return ic_error_set(err, IC_ERR_INVALID, 0, "trace: threads %d is not in 0..%d",
                             o->threads, IC_TRACE_MAX_THREADS);

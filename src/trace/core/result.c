@@ -295,6 +295,7 @@ void ic_trace_result_free(ic_trace_result *r)
     free(r->located);
     free(r->deferred);
     free(r->coincident);
+    free(r->certificate);
     ic_curve_index_free(r->index);
     free(r->deferred_why);
     /* the fits are the curve layer's (ic_trace_fit), freed as it says; the
@@ -326,6 +327,11 @@ const ic_trace_special *ic_trace_result_special(const ic_trace_result *r, int i)
 const ic_trace_report *ic_trace_result_report(const ic_trace_result *r)
 {
     return r ? &r->report : NULL;
+}
+
+const char *ic_trace_result_certificate(const ic_trace_result *r)
+{
+    return r ? r->certificate : NULL;
 }
 
 /* The report's method (ic_trace_report.method): the search's, and this

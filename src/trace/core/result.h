@@ -73,6 +73,7 @@ struct ic_trace_result {
     ic_curve_fit **fits;
     void (*free_fits)(ic_curve_fit **fits, int n);
     ic_trace_workers *workers; /* the trace's other threads (NULL: one thread) */
+    char *certificate; /* the last check's certificate file, when kept */
 };
 
 /* The report's method of the general path. */

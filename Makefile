@@ -144,8 +144,8 @@ install: all
 
 fuzz: deps
 	cmake -S . -B build-fuzz -DCMAKE_C_COMPILER=clang -DIC_FUZZ=ON -DIC_BUILD_TESTS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
-	cmake --build build-fuzz -j2 --target fuzz_expr fuzz_problem fuzz_trace fuzz_cad
-	mkdir -p fuzz/corpus/expr fuzz/corpus/problem fuzz/corpus/trace fuzz/corpus/cad
+	cmake --build build-fuzz -j2 --target fuzz_expr fuzz_problem fuzz_trace fuzz_cad fuzz_certificate
+	mkdir -p fuzz/corpus/expr fuzz/corpus/problem fuzz/corpus/trace fuzz/corpus/cad fuzz/corpus/certificate
 	./build-fuzz/fuzz/fuzz_expr -max_total_time=$(FUZZ_SECONDS) -max_len=256 fuzz/corpus/expr fuzz/seeds/expr
 	./build-fuzz/fuzz/fuzz_problem -max_total_time=$(FUZZ_SECONDS) -max_len=4096 \
 	  -dict=fuzz/problem.dict -artifact_prefix=fuzz/ fuzz/corpus/problem fuzz/seeds/problem
@@ -153,6 +153,8 @@ fuzz: deps
 	  -dict=fuzz/problem.dict -artifact_prefix=fuzz/ fuzz/corpus/trace fuzz/seeds/trace
 	./build-fuzz/fuzz/fuzz_cad -max_total_time=$(FUZZ_SECONDS) -max_len=8192 \
 	  -dict=fuzz/cad.dict -artifact_prefix=fuzz/ fuzz/corpus/cad fuzz/seeds/cad
+	./build-fuzz/fuzz/fuzz_certificate -max_total_time=$(FUZZ_SECONDS) -max_len=4096 -timeout=10 \
+	  -artifact_prefix=fuzz/ fuzz/corpus/certificate fuzz/seeds/certificate
 
 clean:
 	rm -rf build build-asan build-fuzz build-gcc-release build-clang-release build-peers

@@ -568,6 +568,13 @@ static void binding_and_plot_args(fixture *fx)
     BAD(ic_problem_trace, "pair", ic_problem_trace(&res, NULL, pb, 1e-9, 4, 0, 0, 0, &err));
     BAD(ic_problem_trace, "problem", ic_problem_trace(&res, &pair, NULL, 1e-9, 4, 0, 0, 0, &err));
     CHECK(res == NULL && pair == NULL, "problem_trace outputs NULL on failure");
+    res = (ic_trace_result *)1, pair = (ic_pair *)1;
+    BAD(ic_problem_trace_keep_certificate, "res", ic_problem_trace_keep_certificate(NULL, &pair, pb, 1e-9, 4, 0, 0, 0, &err));
+    BAD(ic_problem_trace_keep_certificate, "pair", ic_problem_trace_keep_certificate(&res, NULL, pb, 1e-9, 4, 0, 0, 0, &err));
+    BAD(ic_problem_trace_keep_certificate, "problem", ic_problem_trace_keep_certificate(&res, &pair, NULL, 1e-9, 4, 0, 0, 0, &err));
+    CHECK(res == NULL && pair == NULL, "problem_trace_keep_certificate outputs NULL on failure");
+    CHECK(ic_trace_result_certificate(NULL) == NULL, "a NULL result has no certificate");
+    CHECK(ic_trace_result_certificate(fx->res) == NULL, "a result not kept has no certificate");
     BAD(ic_trace_json_alloc, "json", ic_trace_json_alloc(NULL, &len, fx->res, fx->pair, &err));
     BAD(ic_trace_json_alloc, "res", ic_trace_json_alloc(&json, &len, NULL, fx->pair, &err));
     BAD(ic_trace_json_alloc, "pair", ic_trace_json_alloc(&json, &len, fx->res, NULL, &err));
@@ -577,6 +584,12 @@ static void binding_and_plot_args(fixture *fx)
     BAD(ic_problem_verify, "out", ic_problem_verify(pb, "{}", NULL, &err));
     BAD(ic_problem_verify_json, "json", ic_problem_verify_json(NULL, &len, pb, "{}", &err));
     BAD(ic_problem_verify_json, "problem", ic_problem_verify_json(&json, &len, NULL, "{}", &err));
+    BAD(ic_problem_verify_certificate, "problem", ic_problem_verify_certificate(NULL, "{}", "{}", &cert, &err));
+    BAD(ic_problem_verify_certificate, "trace_json", ic_problem_verify_certificate(pb, NULL, "{}", &cert, &err));
+    BAD(ic_problem_verify_certificate, "certificate_json", ic_problem_verify_certificate(pb, "{}", NULL, &cert, &err));
+    BAD(ic_problem_verify_certificate, "out", ic_problem_verify_certificate(pb, "{}", "{}", NULL, &err));
+    BAD(ic_problem_verify_certificate_json, "json", ic_problem_verify_certificate_json(NULL, &len, pb, "{}", "{}", &err));
+    BAD(ic_problem_verify_certificate_json, "problem", ic_problem_verify_certificate_json(&json, &len, NULL, "{}", "{}", &err));
     BAD(ic_certificate_write_json, "f", ic_certificate_write_json(NULL, &cert, &err));
     BAD(ic_certificate_write_json, "c", ic_certificate_write_json(stdout, NULL, &err));
     BAD(ic_problem_point_json, "json", ic_problem_point_json(NULL, &len, pb, values, 3, 0, 2, "auto", 1e-6, &err));

@@ -72,5 +72,86 @@ check "the tangential line called transversal: exit 2 ($out)" $?
 "$bin" verify "$problem" >/dev/null 2>&1
 [ $? -eq 1 ]
 check "no --trace: exit 1" $?
+# certificate files (docs/output-formats.md, "The certificate file"): the
+# cover written by trace --certificate and replayed by verify --certificate
+# proves the same trace; each leaf is proven again, so a file changed where
+# it matters is refused (exit 2, the node named) and a file that is not a
+# tree over this problem's region is bad input (exit 1, the JSON path)
+roundtrip() { # problem, stem
+    "$bin" trace "$1" -o "$tmp/$2.json" --certificate "$tmp/$2.cert.json"
+    check "trace --certificate of $2" $?
+    out="$("$bin" verify "$1" --trace "$tmp/$2.json" --certificate "$tmp/$2.cert.json")"
+    [ $? -eq 0 ] && [[ "$out" == proven:* ]]
+    check "the certificate of $2 replayed: proven ($out)" $?
+    grown="$("$bin" verify "$1" --trace "$tmp/$2.json")"
+    [ "${out%%, boxes*}" == "${grown%%, boxes*}" ]
+    check "the replay of $2 has the grown cover's cells ($out | $grown)" $?
+}
+roundtrip "$problem" cyl
+roundtrip "$branch" branch
+roundtrip "$line" line
+roundtrip "$src/examples/torus-sphere.json" torus
+cedit() { # python expression on d (the certificate), output file
+    /usr/bin/python3 -c "import json, sys
+d = json.load(open(sys.argv[1]))
+def first(kind):
+    return next(i for i, n in enumerate(d['cells']) if n[0] == kind)
+$1
+json.dump(d, open(sys.argv[2], 'w'))" "$tmp/cyl.cert.json" "$2"
+}
+refused() { # file, message, expected text
+    out="$("$bin" verify "$problem" --trace "$tmp/cyl.json" --certificate "$1")"
+    [ $? -eq 2 ] && [[ "$out" == "not proven"*"$3"* ]]
+    check "$2: exit 2, '$3' ($out)" $?
+}
+bad() { # file, message, expected text
+    err="$("$bin" verify "$problem" --trace "$tmp/cyl.json" --certificate "$1" 2>&1)"
+    [ $? -eq 1 ] && [[ "$err" == *"$3"* ]]
+    check "$2: exit 1, '$3' ($err)" $?
+}
+# the true cover does not make a trace with a curve dropped proven
+out="$("$bin" verify "$problem" --trace "$tmp/dropped.json" --certificate "$tmp/cyl.cert.json")"
+[ $? -eq 2 ] && [[ "$out" == *"not traced"* ]]
+check "a curve dropped, the true certificate: exit 2, not traced ($out)" $?
+cedit "i = first('regular'); d['cells'][i] = ['empty']" "$tmp/kind.json"
+refused "$tmp/kind.json" "a regular leaf called empty" "the file says empty, the check finds regular"
+cedit "i = first('empty'); d['cells'][i] = ['singular']" "$tmp/sing.json"
+refused "$tmp/sing.json" "an empty leaf called singular" "the file says singular, the check finds empty"
+cedit "i = first('regular'); d['cells'][i][2].pop()" "$tmp/dropx.json"
+refused "$tmp/dropx.json" "a crossing dropped" "crossings, the check finds"
+cedit "i = first('regular'); d['cells'][i][2][0][3][0] += 1e-6" "$tmp/movex.json"
+refused "$tmp/movex.json" "a crossing moved by 1e-6" "is not the root the check isolates"
+cedit "i = first('regular'); d['cells'][i] = ['undecided']" "$tmp/undecided.json"
+refused "$tmp/undecided.json" "an undecided leaf" "left undecided"
+cedit "i = first('split'); n = d['cells'][i]; d['cells'][i] = ['split', n[1], 7.0]" "$tmp/splitout.json"
+bad "$tmp/splitout.json" "a split outside its cell" "cells[0]: split at 7"
+cedit "d['cells'] = d['cells'][:-1]" "$tmp/short.json"
+bad "$tmp/short.json" "a tree cut short" "the tree ends early"
+cedit "d['cells'].append(['empty'])" "$tmp/long.json"
+bad "$tmp/long.json" "a node after the tree" "after the end of the tree"
+cedit "d['region']['hi'][0] = 2" "$tmp/region.json"
+bad "$tmp/region.json" "another region" "region: coordinate 0"
+cedit "d['cells'][0] = ['split', 3, 0.1]" "$tmp/axis.json"
+bad "$tmp/axis.json" "a split axis out of range" "cells[0]: a split node is"
+cedit "d['cells'][0] = ['cube']" "$tmp/kindname.json"
+bad "$tmp/kindname.json" "an unknown kind" "cells[0]: not [kind"
+cedit "d['format'] = 'other'" "$tmp/format.json"
+bad "$tmp/format.json" "not a certificate" "format: not"
+refused "$tmp/branch.cert.json" "a certificate of another problem on the same region" \
+    "is not the root the check isolates"
+bad "$tmp/torus.cert.json" "a certificate of another region" "region: coordinate 0"
+roundtrip "$src/examples/viviani.json" viviani
+bad "$tmp/viviani.cert.json" "a certificate of another pairing" "pairing"
+echo '{"format": "intercurve-certificate", "version": 1, "checked": false, "reason": "no"}' \
+    >"$tmp/unchecked.json"
+refused "$tmp/unchecked.json" "a file of a check that did not run" "holds no cover"
+"$bin" verify "$problem" --trace "$tmp/cyl.json" --certificate "$tmp/missing.json" >/dev/null 2>&1
+[ $? -eq 1 ]
+check "a missing certificate file: exit 1" $?
+# a trace the checker does not run on still writes a file, saying why
+"$bin" trace "$problem" --time-limit 1e-9 -o "$tmp/short.trace.json" \
+    --certificate "$tmp/none.cert.json" 2>"$tmp/none.err"
+grep -q '"checked":[[:space:]]*false' "$tmp/none.cert.json" && grep -q "holds no cover" "$tmp/none.err"
+check "an unchecked trace's certificate says so ($(cat "$tmp/none.err"))" $?
 echo "test_verify: $fails failed"
 [ "$fails" -eq 0 ]

@@ -125,24 +125,32 @@ class Problem:
         """True for a self-intersection problem."""
         return bool(_lib.library().ic_problem_is_self(self._handle))
 
-    def trace(self, tol=None, depth=None, fit_tol=None, time_limit=0.0, threads=None):
+    def trace(self, tol=None, depth=None, fit_tol=None, time_limit=0.0, threads=None,
+              certificate=False):
         """Traces the whole intersection, as `intercurve trace`: tol is the
         truncation error per step and fit_tol the B-splines' tolerance, both
         fractions of the problem's size (fit_tol 0: no B-splines); depth the
         start-point search (1..9); time_limit seconds (0: none); threads
         that search at once (0..256, 0: all the cores; the same result
-        whatever the number). None takes the command's default (default()).
-        Returns a TraceResult; InputError for values out of range,
-        ComputationError when the trace fails."""
+        whatever the number); certificate True keeps the checker's cover as
+        the result's `certificate` (the JSON text of `intercurve trace
+        --certificate`, docs/output-formats.md). None takes the command's
+        default (default()). Returns a TraceResult; InputError for values
+        out of range, ComputationError when the trace fails."""
         tol, fit_tol = _or_default(tol, "tol"), _or_default(fit_tol, "fit_tol")
         depth, threads = _or_default(depth, "depth"), _or_default(threads, "threads")
         lib = _lib.library()
         res, pair, err = ctypes.c_void_p(), ctypes.c_void_p(), _lib.new_error()
         with self._lock:
-            st = lib.ic_problem_trace(ctypes.byref(res), ctypes.byref(pair), self._handle,
-                                      float(tol), int(depth), float(time_limit),
-                                      int(threads), float(fit_tol), ctypes.byref(err))
+            entry = lib.ic_problem_trace_keep_certificate if certificate else lib.ic_problem_trace
+            st = entry(ctypes.byref(res), ctypes.byref(pair), self._handle, float(tol),
+                       int(depth), float(time_limit), int(threads), float(fit_tol),
+                       ctypes.byref(err))
             _lib.check(st, err)
+            cert = None
+            if certificate:
+                text = lib.ic_trace_result_certificate(res)
+                cert = text.decode() if text is not None else None
             try:
                 buf, length = ctypes.c_void_p(), ctypes.c_size_t()
                 st = lib.ic_trace_json_alloc(ctypes.byref(buf), ctypes.byref(length), res,
@@ -153,24 +161,32 @@ class Problem:
                 _free_trace(res, pair)
                 raise
         options = dict(tol=tol, depth=depth, fit_tol=fit_tol, time_limit=time_limit,
-                       threads=threads)
-        return TraceResult(document, self, options, (res, pair))
+                       threads=threads, certificate=bool(certificate))
+        return TraceResult(document, self, options, (res, pair), cert)
 
-    def verify(self, trace):
+    def verify(self, trace, certificate=None):
         """Checks a trace of this problem again with the independent checker,
         without the tracer, as `intercurve verify` (docs/tracing.md, "The
         certificate"): trace is a TraceResult, a trace document (dict) or
-        its JSON text. Returns the checker's summary, the keys of
+        its JSON text; certificate (None: the cover is grown afresh) a
+        certificate file (dict or JSON text, as TraceResult.certificate)
+        whose cover is replayed, every leaf proven again, as `intercurve
+        verify --certificate`. Returns the checker's summary, the keys of
         report["certificate"]; its "accepted" is the verdict. InputError
-        for a document that is not a trace of this problem's kind."""
+        for a document that is not a trace of this problem's kind, or a
+        certificate that is not one of this problem's region."""
         if isinstance(trace, TraceResult):
             trace = trace.document
         text = trace if isinstance(trace, str) else json.dumps(trace)
+        cert = certificate
+        if cert is not None and not isinstance(cert, str):
+            cert = json.dumps(cert)
         lib = _lib.library()
         buf, length, err = ctypes.c_void_p(), ctypes.c_size_t(), _lib.new_error()
         with self._lock:
-            st = lib.ic_problem_verify_json(ctypes.byref(buf), ctypes.byref(length),
-                                            self._handle, text.encode(), ctypes.byref(err))
+            st = lib.ic_problem_verify_certificate_json(
+                ctypes.byref(buf), ctypes.byref(length), self._handle, text.encode(),
+                cert.encode() if cert is not None else None, ctypes.byref(err))
             _lib.check(st, err)
         return json.loads(_lib.take_text(buf, length))["certificate"]
 
@@ -252,11 +268,14 @@ class TraceResult:
     (SpecialPoint objects: tangential and singular points), `report` (a
     dict: what was proven, docs/output-formats.md), `complete` (the
     report's verdict), `document` (the whole trace document), `problem` and
-    `options` (the trace's). Pickles without its native handles (a plot of
-    an unpickled result traces again with the same options)."""
+    `options` (the trace's), `certificate` (the certificate file's JSON
+    text when traced with certificate=True and the checker ran, else None).
+    Pickles without its native handles (a plot of an unpickled result
+    traces again with the same options)."""
 
-    def __init__(self, document, problem, options, handles=None):
+    def __init__(self, document, problem, options, handles=None, certificate=None):
         self.document = document
+        self.certificate = certificate
         self.problem = problem
         self.options = dict(options)
         self.curves = [Curve(c) for c in document["curves"]]
@@ -279,10 +298,12 @@ class TraceResult:
         return self._handles
 
     def __getstate__(self):
-        return {"document": self.document, "problem": self.problem, "options": self.options}
+        return {"document": self.document, "problem": self.problem, "options": self.options,
+                "certificate": self.certificate}
 
     def __setstate__(self, state):
-        self.__init__(state["document"], state["problem"], state["options"])
+        self.__init__(state["document"], state["problem"], state["options"],
+                      certificate=state.get("certificate"))
 
     def __eq__(self, other):
         """Equal when the documents are (every number the same double)."""

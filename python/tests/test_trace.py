@@ -2,6 +2,7 @@
 its curvature and torsion from the parametrisation in conftest.py), the
 numpy arrays' shapes, the B-spline on both surfaces."""
 
+import json
 import numpy as np
 import pytest
 
@@ -174,3 +175,28 @@ def test_verify_again(viviani_trace):
     assert refused["accepted"] is False and "not traced" in refused["reason"]
     with pytest.raises(ic.InputError):
         p.verify("not a document")
+
+
+def test_certificate_file():
+    # trace(certificate=True) keeps the checker's cover; verify replays it
+    # (every leaf proven again): the same verdict and cells, and a leaf
+    # changed is refused with the node named; a file of another region is
+    # bad input
+    p = ic.Problem.load(example("cylinders.json"))
+    t = p.trace(certificate=True)
+    assert t.complete and t.certificate is not None
+    cert = json.loads(t.certificate)
+    assert cert["format"] == "intercurve-certificate" and cert["checked"] is True
+    again = p.verify(t, certificate=t.certificate)
+    assert again["accepted"] is True
+    assert again["cells"] == t.report["certificate"]["cells"]
+    k = next(i for i, n in enumerate(cert["cells"]) if n[0] == "regular")
+    changed = dict(cert, cells=cert["cells"][:k] + [["empty"]] + cert["cells"][k + 1:])
+    refused = p.verify(t, certificate=changed)
+    assert refused["accepted"] is False
+    assert "cells[%d]: the file says empty" % k in refused["reason"]
+    other = dict(cert, region=dict(cert["region"], hi=[2, 2, 2]))
+    with pytest.raises(ic.InputError, match="region"):
+        p.verify(t, certificate=other)
+    assert p.trace().certificate is None  # not kept unless asked for
+

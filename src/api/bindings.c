@@ -20,16 +20,23 @@
 
 void ic_free(void *mem) { free(mem); }
 
-/* ic_problem_trace, the certificate file kept or not. */
+/* The pointers of ic_problem_trace checked, in the caller's name; *res and
+ * *pair NULL. */
+#define TRACE_ARGS_NOT_NULL()                                                                      \
+    do {                                                                                           \
+        IC_ARG_NOT_NULL(res, "res");                                                               \
+        IC_ARG_NOT_NULL(pair, "pair");                                                             \
+        *res = NULL;                                                                               \
+        *pair = NULL;                                                                              \
+        IC_ARG_NOT_NULL(problem, "problem");                                                       \
+    } while (0)
+
+/* ic_problem_trace, the certificate file kept or not (the pointers
+ * checked). */
 static ic_status trace_problem(ic_trace_result **res, ic_pair **pair, const ic_problem *problem,
                                double tol, int depth, double time_limit, int threads,
                                double fit_tol, int keep_certificate, ic_error *err)
 {
-    IC_ARG_NOT_NULL(res, "res");
-    IC_ARG_NOT_NULL(pair, "pair");
-    *res = NULL;
-    *pair = NULL;
-    IC_ARG_NOT_NULL(problem, "problem");
     if (!(tol > 0 && tol <= MAX_REL_TOL))
         return ic_error_set(err, IC_ERR_INVALID, 0, "tol %g is not in (0, %g]", tol, MAX_REL_TOL);
     if (!(fit_tol >= 0 && fit_tol <= MAX_REL_TOL))
@@ -50,6 +57,7 @@ ic_status ic_problem_trace(ic_trace_result **res, ic_pair **pair, const ic_probl
                            double tol, int depth, double time_limit, int threads,
                            double fit_tol, ic_error *err)
 {
+    TRACE_ARGS_NOT_NULL();
     return trace_problem(res, pair, problem, tol, depth, time_limit, threads, fit_tol, 0, err);
 }
 
@@ -58,6 +66,7 @@ ic_status ic_problem_trace_keep_certificate(ic_trace_result **res, ic_pair **pai
                                             double time_limit, int threads, double fit_tol,
                                             ic_error *err)
 {
+    TRACE_ARGS_NOT_NULL();
     return trace_problem(res, pair, problem, tol, depth, time_limit, threads, fit_tol, 1, err);
 }
 
@@ -129,6 +138,9 @@ ic_status ic_problem_verify_certificate(const ic_problem *problem, const char *t
 ic_status ic_problem_verify_json(char **json, size_t *len, const ic_problem *problem,
                                  const char *trace_json, ic_error *err)
 {
+    IC_ARG_NOT_NULL(json, "json");
+    *json = NULL;
+    IC_ARG_NOT_NULL(problem, "problem");
     return ic_problem_verify_certificate_json(json, len, problem, trace_json, NULL, err);
 }
 

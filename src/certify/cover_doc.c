@@ -14,7 +14,8 @@ static void write_crossings(json_out *j, const ic_certificate *c, const ic_cell 
 {
     ic_json_out_array(j);
     for (int x = cl->first; x < cl->first + cl->ncross + cl->nbox; x++) {
-        const ic_crossing *cr = &c->cross[x];
+        ic_crossing tight = c->cross[x], *cr = &tight;
+        ic_certify_tighten(c, cr); /* the root to a few ulps, for the file's reader */
         double mid[4];
         for (int d = 0; d < c->dim; d++)
             mid[d] = 0.5 * cr->K[d].lo + 0.5 * cr->K[d].hi;

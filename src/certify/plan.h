@@ -21,7 +21,8 @@
 
 /* A crossing as the file gives it: the face and side of the cell, the box
  * face (-1: none; certificate.h, ic_crossing.box), and the centre of its
- * enclosure, which must lie in the enclosure the check finds. */
+ * enclosure narrowed by ic_certify_tighten, which must lie in the
+ * enclosure the check finds, narrowed the same way. */
 typedef struct {
     int face, side, box;
     double z[4];

@@ -143,7 +143,8 @@ static int same_crossings(ic_certificate *c, long i, long k)
         return 0;
     }
     for (int j = 0; j < cl->ncross + cl->nbox; j++) {
-        const ic_crossing *x = &c->cross[cl->first + j];
+        ic_crossing tight = c->cross[cl->first + j], *x = &tight;
+        ic_certify_tighten(c, x); /* as the file's writer did (cover_doc.c) */
         const ic_plan_crossing *f = &c->plan->crossings[nd->first + j];
         int inside = x->face == f->face && x->side == f->side && x->box == f->box;
         for (int d = 0; inside && d < c->dim; d++)

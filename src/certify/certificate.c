@@ -89,6 +89,27 @@ double ic_certificate_rel(const ic_certificate *c, int k, double d, int floor)
     return d / w * (fmax(c->span[k], least) / longest);
 }
 
+/* A self-intersection's periods cut elsewhere than at the domain's start,
+ * and the second preimage's (p, q) elsewhere than the first's (u, v): the
+ * double curves of a symmetric surface (a surface of revolution, a torus
+ * with a figure-eight section) often run along v = 0, in the seam, and have
+ * both preimages at the same u, so with the periods cut at the domain's
+ * start, or both at the same place, the curve lies in a face of the region
+ * or crosses two faces at once, on an edge, where no crossing can be
+ * isolated. A period may be cut anywhere: the sheets are evaluated across
+ * their seam (a NURBS net's interval and point evaluations wrap a periodic
+ * parameter). */
+static void offset_seams(ic_certificate *c)
+{
+    for (int k = 0; k < 4; k++) {
+        if (!c->periodic[k])
+            continue;
+        const double f = k < 2 ? IC_CERTIFY_SELF_SEAM_OFFSET : 2 * IC_CERTIFY_SELF_SEAM_OFFSET;
+        const double d = f * (c->hi[k] - c->lo[k]);
+        c->lo[k] += d, c->hi[k] += d;
+    }
+}
+
 ic_certificate *ic_certificate_new(const ic_pairing *pg, const double box[3][2], int has_box,
                                    ic_error *err)
 {
@@ -103,8 +124,10 @@ ic_certificate *ic_certificate_new(const ic_pairing *pg, const double box[3][2],
     c->has_box = has_box;
     if (has_box)
         memcpy(c->box, box, sizeof c->box);
-    if (pg->kind->region(pg, box, has_box, c->lo, c->hi, c->periodic, err) != IC_OK ||
-        ic_certificate_add_cell(c, c->lo, c->hi) < 0) {
+    const ic_status st = pg->kind->region(pg, box, has_box, c->lo, c->hi, c->periodic, err);
+    if (st == IC_OK && pg->kind == &ic_pairing_self)
+        offset_seams(c);
+    if (st != IC_OK || ic_certificate_add_cell(c, c->lo, c->hi) < 0) {
         if (err && err->code == IC_OK)
             ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");
         ic_certificate_free(c);

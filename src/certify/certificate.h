@@ -158,6 +158,12 @@ typedef struct {
     ic_certify_summary summary;
 } ic_certificate;
 
+/* A self-intersection's (u, v) periods cut this fraction of the period
+ * after the domain's start, its (p, q) periods twice as far (certificate.c):
+ * not at the domain's start, not where each other's are, and at
+ * irrational-looking places no symmetric problem favours. */
+#define IC_CERTIFY_SELF_SEAM_OFFSET 0.0371
+
 /* A new certificate over the pairing's search region (box: the problem's,
  * has_box 0 when it has none); NULL out of memory or when the region has
  * no finite box (err says). */

@@ -32,35 +32,69 @@ static int injective(const ic_pairing *p, const double lo[2], const double hi[2]
     return 0;
 }
 
+/* The period of the sheet's parameter k, 0 where it is not periodic. */
+static double period(const ic_pairing *p, int k)
+{
+    double dom[2][2];
+    int periodic[2];
+    ic_surface_get_domain(p->S[0], dom, periodic);
+    return periodic[k] ? dom[k][1] - dom[k][0] : 0.0;
+}
+
+/* The shift of the (p, q) box by whole periods that brings coordinate k
+ * within `band` of the (u, v) box, in *shift; 0 when none does. On a
+ * periodic parameter the diagonal also runs where u lies by one edge of
+ * the domain and p by the other: the same point of the surface. */
+static int near_shift(const ic_pairing *p, const double *lo, const double *hi, int k,
+                      double band, double *shift)
+{
+    const double T = period(p, k);
+    for (int s = -1; s <= 1; s++) {
+        if (s != 0 && T == 0.0)
+            continue;
+        if (hi[k] >= lo[k + 2] + s * T - band && lo[k] <= hi[k + 2] + s * T + band) {
+            *shift = s * T;
+            return 1;
+        }
+    }
+    return 0;
+}
+
 /* One sheet pair per curve ((u, v) before (p, q): a cell wholly after is
  * the mirror of one before); a leaf within `band` of the diagonal (two leaf
- * widths of the first search) is skipped only where R is proven one-to-one
- * over the hull of its two parameter boxes, which then holds no pair of
- * distinct preimages. Elsewhere it is searched like any cell (before: every
- * such leaf was skipped, and at depth 3 the band held the whole domain of
- * Enneper's surface: no curve, "complete"). */
+ * widths of the first search), modulo the periods, is skipped only where R
+ * is proven one-to-one over the hull of its two parameter boxes, which then
+ * holds no pair of distinct preimages. Elsewhere it is searched like any
+ * cell (before: every such leaf was skipped, and at depth 3 the band held
+ * the whole domain of Enneper's surface: no curve, "complete"). */
 static int skip(const ic_pairing *p, const double *lo, const double *hi, int leaf,
                 const double band[2])
 {
     if (lo[0] > hi[2])
         return 1;
-    const int near = hi[0] >= lo[2] - band[0] && lo[0] <= hi[2] + band[0] &&
-                     hi[1] >= lo[3] - band[1] && lo[1] <= hi[3] + band[1];
-    if (!leaf || !near)
+    double shift[2];
+    if (!leaf || !near_shift(p, lo, hi, 0, band[0], &shift[0]) ||
+        !near_shift(p, lo, hi, 1, band[1], &shift[1]))
         return 0;
-    const double hlo[2] = {fmin(lo[0], lo[2]), fmin(lo[1], lo[3])};
-    const double hhi[2] = {fmax(hi[0], hi[2]), fmax(hi[1], hi[3])};
+    const double hlo[2] = {fmin(lo[0], lo[2] + shift[0]), fmin(lo[1], lo[3] + shift[1])};
+    const double hhi[2] = {fmax(hi[0], hi[2] + shift[0]), fmax(hi[1], hi[3] + shift[1])};
     return injective(p, hlo, hhi);
 }
 
-/* Preimages apart by more than a millionth of the band: Newton from a cell
- * by the diagonal that lands on the diagonal itself (a trivial solution,
- * apart by rounding) gives no start point; a true pair of preimages close
+/* Preimages apart by more than a millionth of the band, modulo the
+ * periods: Newton from a cell by the diagonal that lands on the diagonal
+ * itself (a trivial solution, apart by rounding, or by a whole period on a
+ * periodic parameter) gives no start point; a true pair of preimages close
  * together does. */
 static int distinct(const ic_pairing *p, const double *z, const double band[2])
 {
-    (void)p;
-    return fabs(z[0] - z[2]) + fabs(z[1] - z[3]) > SELF_DISTINCT_OF_BAND * (band[0] + band[1]);
+    double gap = 0.0;
+    for (int k = 0; k < 2; k++) {
+        const double T = period(p, k);
+        const double d = z[k] - z[k + 2];
+        gap += fabs(T > 0.0 ? remainder(d, T) : d);
+    }
+    return gap > SELF_DISTINCT_OF_BAND * (band[0] + band[1]);
 }
 
 static ic_status region(const ic_pairing *p, const double box[3][2], int has_box, double *lo,

@@ -132,9 +132,14 @@ bad "$tmp/long.json" "a node after the tree" "after the end of the tree"
 cedit "d['region']['hi'][0] = 2" "$tmp/region.json"
 bad "$tmp/region.json" "another region" "region: coordinate 0"
 cedit "d['cells'][0] = ['split', 3, 0.1]" "$tmp/axis.json"
-bad "$tmp/axis.json" "a split axis out of range" "cells[0]: a split node is"
+bad "$tmp/axis.json" "a split axis out of range" "cells[0]: a node of kind split is"
 cedit "d['cells'][0] = ['cube']" "$tmp/kindname.json"
 bad "$tmp/kindname.json" "an unknown kind" "cells[0]: not [kind"
+cp "$tmp/cyl.cert.json" "$tmp/trailing.json" && echo '{"checked": false}' >>"$tmp/trailing.json"
+bad "$tmp/trailing.json" "a second document after the file's" "not one JSON document"
+"$bin" trace "$problem" -o "$tmp/same.json" --certificate "$tmp/same.json" 2>/dev/null
+[ $? -eq 1 ] && [ ! -e "$tmp/same.json" ]
+check "-o and --certificate the same file: exit 1, nothing written" $?
 cedit "d['format'] = 'other'" "$tmp/format.json"
 bad "$tmp/format.json" "not a certificate" "format: not"
 refused "$tmp/branch.cert.json" "a certificate of another problem on the same region" \
@@ -148,6 +153,42 @@ refused "$tmp/unchecked.json" "a file of a check that did not run" "holds no cov
 "$bin" verify "$problem" --trace "$tmp/cyl.json" --certificate "$tmp/missing.json" >/dev/null 2>&1
 [ $? -eq 1 ]
 check "a missing certificate file: exit 1" $?
+# attacks a review found (issue 23): a file may choose any tree, so what it
+# leaves unexamined must not depend on how coarse its cells are.
+# 1. No curve, a made-up higher-order contact at the centre of small-loop's
+#    loop (its box wider than the loop) and a tree of 13 nodes with one
+#    singular cell holding the whole loop: the claimed point is refuted,
+#    the cell halved piece by piece down to where each is proven smooth
+loop="$src/examples/small-loop.json"
+echo '{"curves": [], "points": [{"xyz": [0.3, 0.2, 0.105], "type": "higher-order-contact",
+  "branches": 0, "approximate": false}], "report": {"cells": 0}}' >"$tmp/hoc.trace.json"
+echo '{"format": "intercurve-certificate", "version": 1, "checked": true, "accepted": true,
+  "reason": "", "pairing": "implicit/implicit", "dimension": 3,
+  "region": {"lo": [-1, -1, -1], "hi": [1, 1, 1], "periodic": [0, 0, 0]},
+  "cells": [["split", 0, 0.288], ["empty"], ["split", 0, 0.312], ["split", 1, 0.188],
+  ["empty"], ["split", 1, 0.212], ["split", 2, 0.093], ["empty"], ["split", 2, 0.117],
+  ["singular"], ["empty"], ["empty"], ["empty"]]}' >"$tmp/hoc.cert.json"
+out="$("$bin" verify "$loop" --trace "$tmp/hoc.trace.json" --certificate "$tmp/hoc.cert.json")"
+[ $? -eq 2 ] && [[ "$out" == *"singular point 0 (of the result's) near (0.3, 0.2, 0.105) is none"* ]]
+check "a made-up contact in a cell fitted to its box: exit 2, refuted ($out)" $?
+#    the same point called a surface's own singular point is refuted too
+sed 's/higher-order-contact/surface-singular/' "$tmp/hoc.trace.json" >"$tmp/ss.trace.json"
+out="$("$bin" verify "$loop" --trace "$tmp/ss.trace.json" --certificate "$tmp/hoc.cert.json")"
+[ $? -eq 2 ]
+check "a made-up surface singular point: exit 2 ($out)" $?
+# 2. A transversal curve called tangential (its tube's cells unexamined),
+#    and a tangential circle added in empty space: the tube's points are not
+#    where the surfaces touch (grown or replayed)
+cp "$tmp/cyl.json" "$tmp/t.json"
+edit "d['curves'][0]['type'] = 'tangential'" "$tmp/calledtangential.json"
+out="$("$bin" verify "$problem" --trace "$tmp/calledtangential.json")"
+[ $? -eq 2 ] && [[ "$out" == *"curve 0 is called tangential but its point 0 is not a point where the surfaces touch"* ]]
+check "a transversal curve called tangential: exit 2 ($out)" $?
+edit "import math
+d['curves'].append(dict(d['curves'][0], type='tangential', closed=True, points=[dict(d['curves'][0]['points'][0], xyz=[0.2 * math.cos(t / 8), 0.2 * math.sin(t / 8), 1.2], params=[None, None]) for t in range(50)]))" "$tmp/faketube.json"
+out="$("$bin" verify "$problem" --trace "$tmp/faketube.json")"
+[ $? -eq 2 ] && [[ "$out" == *"is called tangential"* ]]
+check "a tangential circle in empty space: exit 2 ($out)" $?
 # a trace the checker does not run on still writes a file, saying why
 "$bin" trace "$problem" --time-limit 1e-9 -o "$tmp/short.trace.json" \
     --certificate "$tmp/none.cert.json" 2>"$tmp/none.err"

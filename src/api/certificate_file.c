@@ -116,7 +116,8 @@ static ic_status read_node(const cJSON *a, const char *name, long k, ic_cover_pl
     const int want = nd->kind == IC_CELL_SPLIT || nd->kind == IC_CELL_REGULAR ? 3 : 1;
     if (n != want || (want == 3 && !integer(cJSON_GetArrayItem(a, 1), 0, p->dim - 1, &nd->axis)))
         return ic_error_set(err, IC_ERR_INVALID, 0,
-                            "%s: cells[%ld]: a %s node is %s", name, k, kind->valuestring,
+                            "%s: cells[%ld]: a node of kind %s is %s", name, k,
+                            kind->valuestring,
                             want == 1 ? "its kind alone"
                                       : "[kind, axis 0..dimension-1, at or crossings]");
     if (nd->kind == IC_CELL_SPLIT) {
@@ -189,16 +190,20 @@ ic_status ic_api_read_certificate(const char *text, const char *name, ic_cover_p
                                   char *reason, size_t size, ic_error *err)
 {
     *plan = NULL;
-    cJSON *doc = cJSON_Parse(text);
+    const char *end = NULL;
+    cJSON *doc = cJSON_ParseWithOpts(text, &end, 1); /* nothing after the document */
     if (!doc)
-        return ic_error_set(err, IC_ERR_INVALID, 0, "%s: not a JSON document", name);
+        return ic_error_set(err, IC_ERR_INVALID, 0,
+                            "%s: not one JSON document (it stops being one at byte %ld)", name,
+                            end ? (long)(end - text) : 0L);
     int checked = 0;
     ic_status st = read_kind(doc, name, &checked, reason, size, err);
     ic_cover_plan *p = st == IC_OK && checked ? calloc(1, sizeof *p) : NULL;
     if (st == IC_OK && checked && !p)
         st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory reading %s", name);
     if (p) {
-        snprintf(p->where, sizeof p->where, "%s: cells", name);
+        snprintf(p->where, sizeof p->where, "%s", name);
+        snprintf(p->reason, sizeof p->reason, "%s", reason);
         st = read_head(doc, name, p, err);
         if (st == IC_OK)
             st = read_cells(doc, name, p, err);

@@ -12,6 +12,7 @@
 #include "trace/certify_result.h"
 
 #include <cjson/cJSON.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -120,7 +121,10 @@ static int passages_allowed(const cJSON *q)
     const int type = point_type(q);
     const cJSON *b = cJSON_GetObjectItemCaseSensitive(q, "branches");
     const cJSON *a = cJSON_GetObjectItemCaseSensitive(q, "approximate");
-    if (type < 0 || !cJSON_IsNumber(b) || !cJSON_IsBool(a))
+    /* a count the tracer could give (IC_LOCAL_MAX_BRANCHES at most), else
+     * not bounded: never a cast of a number out of int's range */
+    if (type < 0 || !cJSON_IsNumber(b) || !cJSON_IsBool(a) || !(b->valuedouble >= 0) ||
+        b->valuedouble > IC_LOCAL_MAX_BRANCHES || b->valuedouble != floor(b->valuedouble))
         return -1;
     return ic_certify_passages_allowed((ic_point_type)type, (int)b->valuedouble,
                                        cJSON_IsTrue(a));
@@ -130,7 +134,7 @@ static int passages_allowed(const cJSON *q)
  * *scale, the passages their types allow and whether each is a surface's
  * own singular point, the caller's to free, and their number. */
 static ic_status read_singular(const cJSON *doc, const char *name, double (**p)[3],
-                               double **scale, int **passages, int **of_surface, int *n,
+                               double **scale, int **passages, int *n,
                                ic_error *err)
 {
     const cJSON *ps = cJSON_GetObjectItemCaseSensitive(doc, "points");
@@ -140,8 +144,7 @@ static ic_status read_singular(const cJSON *doc, const char *name, double (**p)[
     *p = malloc((size_t)(*n + 1) * sizeof **p);
     *scale = malloc((size_t)(*n + 1) * sizeof **scale);
     *passages = malloc((size_t)(*n + 1) * sizeof **passages);
-    *of_surface = malloc((size_t)(*n + 1) * sizeof **of_surface);
-    if (!*p || !*scale || !*passages || !*of_surface)
+    if (!*p || !*scale || !*passages)
         return ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory reading %s", name);
     int k = 0;
     for (const cJSON *q = ps ? ps->child : NULL; q; q = q->next, k++) {
@@ -150,7 +153,6 @@ static ic_status read_singular(const cJSON *doc, const char *name, double (**p)[
                                 name, k);
         (*scale)[k] = box_scale(q);
         (*passages)[k] = passages_allowed(q);
-        (*of_surface)[k] = point_type(q) == IC_POINT_SURFACE_SINGULAR;
     }
     return IC_OK;
 }
@@ -218,7 +220,8 @@ static ic_status read_plan(const char *cert_text, const char *cert_name, ic_cove
         *done = 1;
         out->checked = 1;
         snprintf(out->reason, sizeof out->reason,
-                 "%s holds no cover: the trace's check did not run (%s)", cert_name, reason);
+                 "%s holds no cover: the trace's check did not run%s%s", cert_name,
+                 reason[0] ? ": " : "", reason);
     }
     return st;
 }
@@ -236,7 +239,7 @@ ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const c
     double *z = NULL;
     double(*sing)[3] = NULL;
     double *scale = NULL;
-    int *passages = NULL, *of_surface = NULL;
+    int *passages = NULL;
     ic_certify_tube *tubes = NULL;
     double *txyz = NULL;
     int n = 0, nsing = 0, ntubes = 0;
@@ -244,7 +247,7 @@ ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const c
     if (st == IC_OK)
         st = read_curves(doc, ic_pair_pairing(pair), name, &curves, &n, &z, err);
     if (st == IC_OK)
-        st = read_singular(doc, name, &sing, &scale, &passages, &of_surface, &nsing, err);
+        st = read_singular(doc, name, &sing, &scale, &passages, &nsing, err);
     if (st == IC_OK)
         st = read_tubes(doc, name, &tubes, &ntubes, &txyz, err);
     ic_cover_plan *plan = NULL;
@@ -257,7 +260,6 @@ ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const c
                                         .singular = (const double(*)[3])sing,
                                         .singular_scale = scale,
                                         .singular_passages = passages,
-                                        .singular_of_surface = of_surface,
                                         .nsingular = nsing,
                                         .tubes = tubes,
                                         .ntubes = ntubes};
@@ -270,7 +272,6 @@ ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const c
     free(sing);
     free(scale);
     free(passages);
-    free(of_surface);
     free(tubes);
     free(txyz);
     ic_pair_free(pair);

@@ -309,10 +309,10 @@ int ic_certificate_singular_box(const ic_certificate *c, long i)
                : -1;
 }
 
-int ic_certificate_refute_smooth(ic_certificate *c, int nclaimed, const int *of_surface)
+int ic_certificate_refute_smooth(ic_certificate *c, int nclaimed)
 {
     for (int s = 0; s < nclaimed && s < c->nsingular; s++) {
-        if (c->box_cells[s] > c->box_smooth[s] || (of_surface && of_surface[s]))
+        if (c->box_cells[s] > c->box_smooth[s])
             continue;
         const double *p = c->singular[s];
         ic_certificate_refuse(c, "singular point %d (of the result's) near (%.9g, %.9g, %.9g) is "

@@ -11,13 +11,14 @@
  *              coordinate; every crossing of the cell's faces is isolated
  *              by a Krawczyk test on its face, and sorted along `axis` the
  *              crossings pair up into the cell's arcs;
- *   singular - neither of those, but the cell's image lies within the
+ *   singular - not empty nor outside, and the cell's image lies within the
  *              singular box of a singular point the result reports (half
  *              width IC_CERTIFY_SINGULAR_HALF of the region's size): what
  *              the cell holds is not proven, only the crossings of the
- *              regular cells around it;
+ *              regular cells around it (tried before regular);
  *   tangential - the same, within the tube about a tangential curve the
- *              result reports (radius IC_CERTIFY_TUBE_HALF, tube.c);
+ *              result reports (radius IC_CERTIFY_TUBE_HALF, tube.c), whose
+ *              points must be where the surfaces touch (claims.c);
  * or refused, with the reason. The checker then holds the traced curves
  * against the crossings (match.c). It uses the pairing's equations and the
  * surfaces' enclosures (system.h), never the tracer's decisions.
@@ -238,11 +239,14 @@ int ic_certificate_singular_box(const ic_certificate *c, long i);
 #define ic_certificate_in_singular_box(c, i) (ic_certificate_singular_box((c), (i)) >= 0)
 
 /* Refuses the certificate at the first of the claimed singular points
- * 0..nclaimed-1 (of_surface[s] set: a surface's own point, skipped; NULL
- * none) whose box holds no cell, or only cells where the intersection is
- * proven smooth (a full-rank Jacobian: no branch point, contact, cusp or
- * tacnode there): 1 none such, 0 refused. */
-int ic_certificate_refute_smooth(ic_certificate *c, int nclaimed, const int *of_surface);
+ * 0..nclaimed-1 whose box holds no cell, or only cells where the
+ * intersection is proven smooth, piece by piece (a full-rank Jacobian: no
+ * branch point, contact, cusp or tacnode there; leaf.c): 1 none such, 0
+ * refused. A surface's own singular point (a pole, an apex) is not spared:
+ * there the sheet's normal, and so the Jacobian, degenerates, and no piece
+ * about it is smooth (before, such points were skipped, and a file could
+ * claim one anywhere). */
+int ic_certificate_refute_smooth(ic_certificate *c, int nclaimed);
 
 /* The tubes' radius: of the region's image diagonal (a fraction). */
 #define IC_CERTIFY_TUBE_HALF 5e-4

@@ -60,6 +60,17 @@ int ic_certify_passages_allowed(ic_point_type type, int nbranches, int approxima
 int ic_certify_passages(ic_certificate *c, const ic_certify_curve *curves, int ncurves,
                         const int *allowed, int nallowed);
 
+/* The largest residual at a point of a tangential curve (claims.c): its
+ * distances to the surfaces over the region's size, and the sine of the
+ * angle between their normals. The tracer's tangential points are on both
+ * surfaces to 1e-12 of the region's size where implicit, to sqrt(eps) of it
+ * on a net (a double root, known across to half the digits only). */
+#define IC_CERTIFY_TANGENTIAL_RESIDUAL 1e-6
+
+/* Every point of every tangential curve of the claim is a point where the
+ * surfaces touch (claims.c), else c is refused: 1, 0 refused. */
+int ic_certify_tubes_real(ic_certificate *c, const ic_certify_curve *curves, int ncurves);
+
 /* The work limits of a check after a search of search_cells cells (run.c),
  * with a deadline on the monotonic clock (0: none). */
 ic_certify_limits ic_certify_limits_for(long search_cells, double deadline);
@@ -75,11 +86,6 @@ typedef struct {
     /* per singular point, the most passages of curves through its box
      * (ic_certify_passages_allowed; -1 any); NULL: not checked */
     const int *singular_passages;
-    /* per singular point, 1 when it is a surface's own singular point
-     * (a pole, an apex), which a smooth curve may pass through: never
-     * refuted as no singular point (ic_certificate_refute_smooth); NULL:
-     * none is */
-    const int *singular_of_surface;
     int nsingular;
     const ic_certify_tube *tubes; /* its tangential curves, each in a tube */
     int ntubes;

@@ -44,8 +44,9 @@ struct ic_cover_plan {
     long nnodes;
     ic_plan_crossing *crossings;
     long ncrossings;
-    /* where the nodes came from, for messages: "FILE: cells" */
+    /* the file's name, for messages, and the reason it gives for a refusal */
     char where[200];
+    char reason[240];
 };
 
 /* A leaf kind's name in the file ("split" for a split, "undecided" for a

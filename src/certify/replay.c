@@ -67,11 +67,11 @@ static ic_status check_split(const ic_cover_plan *p, long k, const double *lo, c
     const ic_plan_node *nd = &p->nodes[k];
     if (nd->axis < 0 || nd->axis >= p->dim)
         return ic_error_set(err, IC_ERR_INVALID, 0,
-                            "%s[%ld]: split axis %d: the search has coordinates 0..%d", p->where,
+                            "%s: cells[%ld]: split axis %d: the search has coordinates 0..%d", p->where,
                             k, nd->axis, p->dim - 1);
     if (!(nd->at > lo[nd->axis] && nd->at < hi[nd->axis]))
         return ic_error_set(err, IC_ERR_INVALID, 0,
-                            "%s[%ld]: split at %.17g: not inside the cell's [%.17g, %.17g] "
+                            "%s: cells[%ld]: split at %.17g: not inside the cell's [%.17g, %.17g] "
                             "along coordinate %d",
                             p->where, k, nd->at, lo[nd->axis], hi[nd->axis], nd->axis);
     return IC_OK;
@@ -82,6 +82,7 @@ static ic_status check_tree(const ic_cover_plan *p, const ic_certificate *c, ic_
 {
     typedef struct {
         double lo[4], hi[4];
+        int depth;
     } cell_box;
     enum { MAX_STACK = 2 * (IC_CERTIFY_MAX_LEVELS + 1) };
     cell_box *stack = malloc(MAX_STACK * sizeof *stack);
@@ -90,6 +91,7 @@ static ic_status check_tree(const ic_cover_plan *p, const ic_certificate *c, ic_
     int n = 1;
     memcpy(stack[0].lo, c->lo, sizeof c->lo);
     memcpy(stack[0].hi, c->hi, sizeof c->hi);
+    stack[0].depth = 0;
     ic_status st = IC_OK;
     long k = 0;
     for (; k < p->nnodes && n > 0 && st == IC_OK; k++) {
@@ -97,15 +99,17 @@ static ic_status check_tree(const ic_cover_plan *p, const ic_certificate *c, ic_
         if (p->nodes[k].kind != IC_CELL_SPLIT)
             continue;
         st = check_split(p, k, b.lo, b.hi, err);
-        if (st == IC_OK && n + 2 > MAX_STACK)
-            st = ic_error_set(err, IC_ERR_INVALID, 0, "%s[%ld]: the tree is deeper than %d levels",
-                              p->where, k, IC_CERTIFY_MAX_LEVELS);
+        if (st == IC_OK && (b.depth >= IC_CERTIFY_MAX_LEVELS || n + 2 > MAX_STACK))
+            st = ic_error_set(err, IC_ERR_INVALID, 0,
+                              "%s: cells[%ld]: the tree is deeper than %d levels", p->where, k,
+                              IC_CERTIFY_MAX_LEVELS);
         if (st != IC_OK)
             break;
         const int a = p->nodes[k].axis;
         stack[n + 1] = b, stack[n] = b; /* the lower half on top, next in preorder */
         stack[n + 1].hi[a] = p->nodes[k].at;
         stack[n].lo[a] = p->nodes[k].at;
+        stack[n].depth = stack[n + 1].depth = b.depth + 1;
         n += 2;
     }
     free(stack);
@@ -113,11 +117,12 @@ static ic_status check_tree(const ic_cover_plan *p, const ic_certificate *c, ic_
         return st;
     if (n > 0)
         return ic_error_set(err, IC_ERR_INVALID, 0,
-                            "%s: the tree ends early: %d cells after node %ld have no node",
-                            p->where, n, p->nnodes - 1);
+                            "%s: cells: the tree ends early: %d cells after its %ld nodes have "
+                            "none",
+                            p->where, n, p->nnodes);
     if (k < p->nnodes)
         return ic_error_set(err, IC_ERR_INVALID, 0,
-                            "%s[%ld]: after the end of the tree (%ld nodes make it)", p->where, k,
+                            "%s: cells[%ld]: after the end of the tree (%ld nodes make it)", p->where, k,
                             k);
     return IC_OK;
 }
@@ -136,7 +141,7 @@ static int same_crossings(ic_certificate *c, long i, long k)
     const ic_cell *cl = &c->cells[i];
     if (cl->axis != nd->axis || cl->ncross != nd->ncross || cl->nbox != nd->nbox) {
         ic_certificate_refuse(c,
-                              "%s[%ld]: the file's regular cell is monotone along %d with %d + %d "
+                              "%s: cells[%ld]: the file's regular cell is monotone along %d with %d + %d "
                               "crossings, the check finds %d with %d + %d",
                               c->plan->where, k, nd->axis, nd->ncross, nd->nbox, cl->axis,
                               cl->ncross, cl->nbox);
@@ -151,7 +156,7 @@ static int same_crossings(ic_certificate *c, long i, long k)
             inside = f->z[d] >= x->K[d].lo && f->z[d] <= x->K[d].hi;
         if (!inside) {
             ic_certificate_refuse(c,
-                                  "%s[%ld]: crossing %d of the file (face %d, side %d) is not the "
+                                  "%s: cells[%ld]: crossing %d of the file (face %d, side %d) is not the "
                                   "root the check isolates there",
                                   c->plan->where, k, j, f->face, f->side);
             return 0;
@@ -170,14 +175,15 @@ int ic_certify_replay_node(ic_certificate *c, long i, long k, const ic_certify_l
         return 2;
     }
     if (nd->kind == IC_CELL_REFUSED) {
-        ic_certificate_refuse(c, "%s[%ld]: a cell the file's cover left undecided", p->where, k);
+        ic_certificate_refuse(c, "%s: cells[%ld]: a cell the file's cover left undecided (%s)",
+                              p->where, k, p->reason[0] ? p->reason : "the file gives no reason");
         return 0;
     }
     const int rc = ic_certify_leaf(c, i, lim);
     if (rc < 0)
         return -1;
     if (rc == 0 || c->cells[i].kind != nd->kind) {
-        ic_certificate_refuse(c, "%s[%ld]: the file says %s, the check finds %s", p->where, k,
+        ic_certificate_refuse(c, "%s: cells[%ld]: the file says %s, the check finds %s", p->where, k,
                               ic_cell_kind_name(nd->kind),
                               rc == 0 ? "neither that nor any other leaf"
                                       : ic_cell_kind_name(c->cells[i].kind));

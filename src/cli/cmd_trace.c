@@ -4,6 +4,7 @@
 #include "api/api.h"
 
 #include <math.h>
+#include <string.h>
 
 enum {
     OPT_FORMAT,
@@ -184,6 +185,13 @@ int ic_cmd_trace(int argc, char **argv)
     int rc = ic_cli_parse(&TRACE, argc, argv, &file, v);
     if (rc != 0)
         return rc == IC_CLI_HELP ? 0 : rc;
+    const char *out_path = v[OPT_OUTPUT].text, *cert_path = v[OPT_CERTIFICATE].text;
+    if (out_path && cert_path && strcmp(out_path, cert_path) == 0) {
+        fprintf(stderr, "intercurve trace: -o and --certificate name the same file %s: the "
+                        "certificate would replace the trace\n",
+                cert_path);
+        return EXIT_INPUT;
+    }
     ic_trace_options opt;
     ic_trace_defaults(&opt);
     opt.tol = v[OPT_TOL].real;

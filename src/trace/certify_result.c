@@ -133,11 +133,9 @@ ic_status ic_trace_certify(ic_trace_result *r, ic_pair *pair, const ic_trace_opt
     double *scale = malloc((size_t)(r->nspecials + 1) * sizeof *scale);
     double(*sing)[3] = singular_points(r, scale);
     int *passages = malloc((size_t)(r->nspecials + 1) * sizeof *passages);
-    int *of_surface = malloc((size_t)(r->nspecials + 1) * sizeof *of_surface);
-    for (int k = 0; passages && of_surface && k < r->nspecials; k++) {
+    for (int k = 0; passages && k < r->nspecials; k++) {
         passages[k] = ic_certify_passages_allowed(r->specials[k].type, r->specials[k].nbranches,
                                                   r->specials[k].approximate);
-        of_surface[k] = r->specials[k].type == IC_POINT_SURFACE_SINGULAR;
     }
     ic_certify_tube *tubes = malloc((size_t)(r->ncurves + 1) * sizeof *tubes);
     int ntubes = 0;
@@ -147,20 +145,18 @@ ic_status ic_trace_certify(ic_trace_result *r, ic_pair *pair, const ic_trace_opt
                                     .singular = (const double(*)[3])sing,
                                     .singular_scale = scale,
                                     .singular_passages = passages,
-                                    .singular_of_surface = of_surface,
                                     .nsingular = r->nspecials,
                                     .tubes = tubes,
                                     .ntubes = ntubes};
     ic_certify_summary sum;
     ic_certify_io io = {.keep = opt->keep_certificate};
-    ic_status st = z && sing && scale && txyz && passages && of_surface
+    ic_status st = z && sing && scale && txyz && passages
                        ? ic_certify_run(pg, opt->box, opt->has_box, &lim, &claim, &io, &sum, err)
                        : ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");
     r->certificate = io.doc;
     free(txyz);
     free(tubes);
     free(passages);
-    free(of_surface);
     free(sing);
     free(scale);
     free(z);

@@ -1,0 +1,45 @@
+/*
+ * The claim's tangential curves held against the surfaces (match.h): the
+ * cells in a tube are not examined (tube.c), so a tube stands only where
+ * the surfaces do touch. Each point of a curve the result calls tangential
+ * must lie on both surfaces with their normals parallel, to
+ * IC_CERTIFY_TANGENTIAL_RESIDUAL. A sampled test, not an enclosure: it
+ * refutes a tube about a transversal curve or about nothing (a tube claimed
+ * in empty space, or about a curve that crosses at a visible angle), not a
+ * transversal curve whose surfaces meet at an angle below the tolerance.
+ */
+#include "match.h"
+
+#include <math.h>
+
+/* The point of curve k at j, refused when it is no tangential point. */
+static int tangential_point(ic_certificate *c, int k, int j, const double *z)
+{
+    double w[4], F[8];
+    ic_certificate_wrap(c, z, w);
+    const double L = c->singular_half / IC_CERTIFY_SINGULAR_HALF;
+    const int n = c->pg->kind->contact_residuals(c->pg, w, L, F);
+    double worst = 0.0;
+    for (int i = 0; i < n; i++)
+        worst = fmax(worst, fabs(F[i]));
+    if (n < 0 || worst <= IC_CERTIFY_TANGENTIAL_RESIDUAL)
+        return 1; /* a singular normal: a surface's own point, not tested */
+    ic_certificate_refuse(c,
+                          "curve %d is called tangential but its point %d is not a point where "
+                          "the surfaces touch (residual %.3g of the region's size and in the "
+                          "normals' angle, more than %g)",
+                          k, j, worst, IC_CERTIFY_TANGENTIAL_RESIDUAL);
+    return 0;
+}
+
+int ic_certify_tubes_real(ic_certificate *c, const ic_certify_curve *curves, int ncurves)
+{
+    for (int k = 0; k < ncurves; k++) {
+        if (!curves[k].tangential)
+            continue;
+        for (int j = 0; j < curves[k].npoints; j++)
+            if (!tangential_point(c, k, j, curves[k].z + (size_t)j * (size_t)c->dim))
+                return 0;
+    }
+    return 1;
+}

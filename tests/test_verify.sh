@@ -189,6 +189,12 @@ d['curves'].append(dict(d['curves'][0], type='tangential', closed=True, points=[
 out="$("$bin" verify "$problem" --trace "$tmp/faketube.json")"
 [ $? -eq 2 ] && [[ "$out" == *"is called tangential"* ]]
 check "a tangential circle in empty space: exit 2 ($out)" $?
+# 3. A point of a curve moved off the curve within one cell (a spike): not
+#    on the intersection
+edit "c = d['curves'][0]['points']; c[len(c) // 2] = dict(c[len(c) // 2], xyz=[x * 1.01 for x in c[len(c) // 2]['xyz']])" "$tmp/spike.json"
+out="$("$bin" verify "$problem" --trace "$tmp/spike.json")"
+[ $? -eq 2 ] && [[ "$out" == *"of curve 0 is not on the intersection"* ]]
+check "a point moved off its curve by 1 %: exit 2 ($out)" $?
 # a trace the checker does not run on still writes a file, saying why
 "$bin" trace "$problem" --time-limit 1e-9 -o "$tmp/short.trace.json" \
     --certificate "$tmp/none.cert.json" 2>"$tmp/none.err"

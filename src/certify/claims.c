@@ -1,7 +1,12 @@
 /*
- * The claim's tangential curves held against the surfaces (match.h): the
- * cells in a tube are not examined (tube.c), so a tube stands only where
- * the surfaces do touch. Each point of a curve the result calls tangential
+ * The claim's points held against the surfaces (match.h): every point of a
+ * traced curve must lie on the intersection, to first order within
+ * IC_CERTIFY_POINT_REACH of the region's width (the walk through the cells,
+ * match.c, checks chords and crossings, not each point: a point moved off
+ * the curve inside one cell went unseen), except inside a singular box,
+ * where a surface's own singular point may leave no gradient to measure by.
+ * And the cells in a tube are not examined (tube.c), so a tube stands only
+ * where the surfaces do touch. Each point of a curve the result calls tangential
  * must lie on both surfaces with their normals parallel, to
  * IC_CERTIFY_TANGENTIAL_RESIDUAL. A sampled test, not an enclosure: it
  * refutes a tube about a transversal curve or about nothing (a tube claimed
@@ -40,6 +45,45 @@ int ic_certify_tubes_real(ic_certificate *c, const ic_certify_curve *curves, int
         for (int j = 0; j < curves[k].npoints; j++)
             if (!tangential_point(c, k, j, curves[k].z + (size_t)j * (size_t)c->dim))
                 return 0;
+    }
+    return 1;
+}
+
+/* The point z (search coordinates) lies within a singular box, in space. */
+static int in_a_box(const ic_certificate *c, const double *z)
+{
+    double xyz[3];
+    if (c->pg->kind->position(c->pg, z, xyz, NULL) != IC_OK)
+        return 0;
+    for (int s = 0; s < c->nsingular; s++) {
+        const double h = c->singular_half * c->singular_scale[s];
+        const double *p = c->singular[s];
+        if (fabs(xyz[0] - p[0]) <= h && fabs(xyz[1] - p[1]) <= h && fabs(xyz[2] - p[2]) <= h)
+            return 1;
+    }
+    return 0;
+}
+
+int ic_certify_points_on(ic_certificate *c, const ic_certify_curve *curves, int ncurves)
+{
+    double width = 0.0;
+    for (int k = 0; k < c->dim; k++)
+        width = fmax(width, c->hi[k] - c->lo[k]);
+    for (int k = 0; k < ncurves; k++) {
+        if (curves[k].tangential)
+            continue; /* its own test: ic_certify_tubes_real */
+        for (int j = 0; j < curves[k].npoints; j++) {
+            const double *z = curves[k].z + (size_t)j * (size_t)c->dim;
+            double w[4];
+            ic_certificate_wrap(c, z, w);
+            if (ic_certify_near_curve(c, w, IC_CERTIFY_POINT_REACH * width) || in_a_box(c, w))
+                continue;
+            ic_certificate_refuse(c,
+                                  "point %d of curve %d is not on the intersection (farther "
+                                  "than %g of the region's width, to first order)",
+                                  j, k, IC_CERTIFY_POINT_REACH);
+            return 0;
+        }
     }
     return 1;
 }

@@ -67,6 +67,16 @@ int ic_certify_passages(ic_certificate *c, const ic_certify_curve *curves, int n
  * on a net (a double root, known across to half the digits only). */
 #define IC_CERTIFY_TANGENTIAL_RESIDUAL 1e-6
 
+/* How far a traced point may lie off the intersection, to first order, as
+ * a fraction of the region's largest width (claims.c): the tracer's points
+ * are on both surfaces to 1e-11 of the problem's size and better. */
+#define IC_CERTIFY_POINT_REACH 1e-8
+
+/* Every point of every transversal curve of the claim lies on the
+ * intersection or in a singular box (claims.c), else c is refused: 1, 0
+ * refused. */
+int ic_certify_points_on(ic_certificate *c, const ic_certify_curve *curves, int ncurves);
+
 /* Every point of every tangential curve of the claim is a point where the
  * surfaces touch (claims.c), else c is refused: 1, 0 refused. */
 int ic_certify_tubes_real(ic_certificate *c, const ic_certify_curve *curves, int ncurves);

@@ -106,6 +106,8 @@ ic_status ic_certify_run(const ic_pairing *pg, const double box[3][2], int has_b
         ic_certificate_refute_smooth(c, claim->nsingular);
     if (st == IC_OK && c->summary.accepted)
         ic_certify_tubes_real(c, claim->curves, claim->ncurves);
+    if (st == IC_OK && c->summary.accepted)
+        ic_certify_points_on(c, claim->curves, claim->ncurves);
     int apart = 1;
     if (st == IC_OK && c->summary.accepted && (apart = ic_certificate_tubes_apart(c)) < 0)
         st = ic_error_set(err, IC_ERR_NOMEM, 0, "out of memory certifying");

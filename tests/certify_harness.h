@@ -37,13 +37,14 @@ static inline void release(traced *t)
 /* A problem's JSON text traced with the defaults but a time limit in
  * seconds (0: none), a self-intersection with its one surface, as
  * `intercurve trace` pairs it. */
-static inline int trace_json_limited(traced *t, const char *name, const char *json,
-                                     double time_limit)
+static inline int trace_json_with(traced *t, const char *name, const char *json,
+                                  double time_limit, int keep_certificate)
 {
     ic_error err;
     memset(t, 0, sizeof *t);
     ic_trace_defaults(&t->opt);
     t->opt.time_limit = time_limit;
+    t->opt.keep_certificate = keep_certificate;
     ic_status st = ic_problem_parse(&t->problem, json, strlen(json), &err);
     if (st == IC_OK) {
         t->opt.has_box = ic_problem_box(t->problem, t->opt.box);
@@ -55,6 +56,18 @@ static inline int trace_json_limited(traced *t, const char *name, const char *js
     if (st == IC_OK)
         st = ic_trace(&t->res, t->pair, &t->opt, &err);
     return REQUIRE(st == IC_OK, "%s: %s", name, err.message) ? 0 : -1;
+}
+
+static inline int trace_json_limited(traced *t, const char *name, const char *json,
+                                     double time_limit)
+{
+    return trace_json_with(t, name, json, time_limit, 0);
+}
+
+/* The same with the certificate file kept (ic_trace_result_certificate). */
+static inline int trace_json_keep(traced *t, const char *name, const char *json)
+{
+    return trace_json_with(t, name, json, 0, 1);
 }
 
 /* The same with the defaults. */

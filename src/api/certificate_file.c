@@ -51,6 +51,10 @@ static ic_status read_head(const cJSON *doc, const char *name, ic_cover_plan *p,
         !finite_numbers(cJSON_GetObjectItemCaseSensitive(region, "hi"), p->hi, p->dim))
         return ic_error_set(err, IC_ERR_INVALID, 0,
                             "%s: region: lo and hi must be %d finite numbers each", name, p->dim);
+    const cJSON *origin = cJSON_GetObjectItemCaseSensitive(region, "origin");
+    if (origin && !finite_numbers(origin, p->origin, p->dim))
+        return ic_error_set(err, IC_ERR_INVALID, 0,
+                            "%s: region: origin must be %d finite numbers", name, p->dim);
     return IC_OK;
 }
 

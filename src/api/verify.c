@@ -10,6 +10,7 @@
 #include "certify/plan.h"
 #include "local/pair_access.h"
 #include "trace/certify_result.h"
+#include "trace/frame.h"
 
 #include <cjson/cJSON.h>
 #include <math.h>
@@ -29,6 +30,16 @@ static int numbers(const cJSON *a, double *out, int n)
         out[i] = x->valuedouble;
     }
     return 1;
+}
+
+/* A point of the document in the moved problem's coordinates (trace/frame.h:
+ * the check runs where the trace ran). */
+static void move_point(const ic_frame *fr, double xyz[3], double params[2][2])
+{
+    for (int k = 0; k < 3; k++)
+        xyz[k] -= fr->xyz[k];
+    for (int k = 0; params && k < 4; k++)
+        params[k / 2][k % 2] -= fr->params[k / 2][k % 2];
 }
 
 /* One point's xyz and params (null for an implicit sheet). */
@@ -86,6 +97,7 @@ static ic_status read_curves(const cJSON *doc, const ic_pairing *pg, const char 
                                     "%s: curves[%d].points[%d]: xyz must be 3 numbers and "
                                     "params two [u, v] pairs or null",
                                     name, k, i);
+            move_point(&pg->frame, xyz, params);
             pg->kind->flatten(pg, xyz, params, *z + at * (size_t)dim);
         }
     }
@@ -133,7 +145,8 @@ static int passages_allowed(const cJSON *q)
 /* The document's singular points (points[].xyz): *p, their boxes' sizes
  * *scale, the passages their types allow and whether each is a surface's
  * own singular point, the caller's to free, and their number. */
-static ic_status read_singular(const cJSON *doc, const char *name, double (**p)[3],
+static ic_status read_singular(const cJSON *doc, const char *name, const ic_frame *fr,
+                               double (**p)[3],
                                double **scale, int **passages, int *n,
                                ic_error *err)
 {
@@ -151,6 +164,7 @@ static ic_status read_singular(const cJSON *doc, const char *name, double (**p)[
         if (!numbers(cJSON_GetObjectItemCaseSensitive(q, "xyz"), (*p)[k], 3))
             return ic_error_set(err, IC_ERR_INVALID, 0, "%s: points[%d].xyz: must be 3 numbers",
                                 name, k);
+        move_point(fr, (*p)[k], NULL);
         (*scale)[k] = box_scale(q);
         (*passages)[k] = passages_allowed(q);
     }
@@ -160,8 +174,8 @@ static ic_status read_singular(const cJSON *doc, const char *name, double (**p)[
 /* The document's tangential curves (curves[] of type "tangential", read
  * by read_curves already): tubes[] and one block of points (*xyz), the
  * caller's to free. */
-static ic_status read_tubes(const cJSON *doc, const char *name, ic_certify_tube **tubes,
-                            int *n, double **xyz, ic_error *err)
+static ic_status read_tubes(const cJSON *doc, const char *name, const ic_frame *fr,
+                            ic_certify_tube **tubes, int *n, double **xyz, ic_error *err)
 {
     const cJSON *cs = cJSON_GetObjectItemCaseSensitive(doc, "curves");
     size_t total = 0;
@@ -181,20 +195,21 @@ static ic_status read_tubes(const cJSON *doc, const char *name, ic_certify_tube 
         const int closed = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(c, "closed"));
         (*tubes)[(*n)++] = (ic_certify_tube){*xyz + 3 * at, cJSON_GetArraySize(pts), closed};
         for (const cJSON *p = pts->child; p; p = p->next, at++)
-            numbers(cJSON_GetObjectItemCaseSensitive(p, "xyz"), *xyz + 3 * at, 3);
+            if (numbers(cJSON_GetObjectItemCaseSensitive(p, "xyz"), *xyz + 3 * at, 3))
+                move_point(fr, *xyz + 3 * at, NULL);
     }
     return IC_OK;
 }
 
 /* The check of the claim: the cover grown, or the file's replayed. */
-static ic_status check(const ic_problem *problem, const ic_pair *pair, const cJSON *doc,
+static ic_status check(const ic_trace_moved *m, const ic_pair *pair, const cJSON *doc,
                        const ic_certify_claim *claim, ic_certify_io *io,
                        ic_trace_certificate *out, ic_error *err)
 {
     const cJSON *cells = cJSON_GetObjectItemCaseSensitive(
         cJSON_GetObjectItemCaseSensitive(doc, "report"), "cells");
-    double box[3][2];
-    const int has_box = ic_problem_box(problem, box);
+    const double(*box)[2] = m->box;
+    const int has_box = m->has_box;
     const ic_certify_limits lim =
         ic_certify_limits_for(cJSON_IsNumber(cells) ? (long)cells->valuedouble : 0, 0);
     ic_certify_summary s;
@@ -202,6 +217,19 @@ static ic_status check(const ic_problem *problem, const ic_pair *pair, const cJS
         ic_certify_run(ic_pair_pairing(pair), box, has_box, &lim, claim, io, &s, err);
     ic_trace_certificate_from(out, &s);
     out->accepted = st == IC_OK && s.accepted;
+    return st;
+}
+
+/* The problem moved as its trace was (trace/frame.h), and its box. */
+static ic_status moved_problem(ic_trace_moved *m, const ic_problem *problem, ic_pair *pair,
+                               ic_error *err)
+{
+    double box[3][2];
+    const int has_box = ic_problem_box(problem, box);
+    ic_status st = ic_trace_move(m, pair, box, has_box, err);
+    if (st == IC_OK && !m->pair)
+        memcpy(m->box, box, sizeof m->box);
+    m->has_box = has_box;
     return st;
 }
 
@@ -243,13 +271,18 @@ ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const c
     ic_certify_tube *tubes = NULL;
     double *txyz = NULL;
     int n = 0, nsing = 0, ntubes = 0;
+    ic_trace_moved m = {0};
     ic_status st = ic_api_problem_pair(&pair, problem, err);
     if (st == IC_OK)
-        st = read_curves(doc, ic_pair_pairing(pair), name, &curves, &n, &z, err);
+        st = moved_problem(&m, problem, pair, err);
+    ic_pair *checked = m.pair ? m.pair : pair;
+    const ic_frame *fr = &ic_pair_pairing(checked)->frame;
     if (st == IC_OK)
-        st = read_singular(doc, name, &sing, &scale, &passages, &nsing, err);
+        st = read_curves(doc, ic_pair_pairing(checked), name, &curves, &n, &z, err);
     if (st == IC_OK)
-        st = read_tubes(doc, name, &tubes, &ntubes, &txyz, err);
+        st = read_singular(doc, name, fr, &sing, &scale, &passages, &nsing, err);
+    if (st == IC_OK)
+        st = read_tubes(doc, name, fr, &tubes, &ntubes, &txyz, err);
     ic_cover_plan *plan = NULL;
     int done = 0;
     if (st == IC_OK)
@@ -264,7 +297,7 @@ ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const c
                                         .tubes = tubes,
                                         .ntubes = ntubes};
         ic_certify_io io = {.replay = plan};
-        st = check(problem, pair, doc, &claim, &io, out, err);
+        st = check(&m, checked, doc, &claim, &io, out, err);
     }
     ic_cover_plan_free(plan);
     free(curves);
@@ -274,6 +307,7 @@ ic_status ic_api_verify(const ic_problem *problem, const char *doc_text, const c
     free(passages);
     free(tubes);
     free(txyz);
+    ic_trace_moved_release(&m);
     ic_pair_free(pair);
     cJSON_Delete(doc);
     return st;

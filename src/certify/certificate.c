@@ -110,6 +110,14 @@ static void offset_seams(ic_certificate *c)
     }
 }
 
+double ic_certificate_origin(const ic_certificate *c, int k)
+{
+    const ic_frame *fr = &c->pg->frame;
+    if (c->dim == 3)
+        return fr->xyz[k];
+    return c->dim == 2 ? fr->params[c->pg->P][k] : fr->params[k / 2][k % 2];
+}
+
 ic_certificate *ic_certificate_new(const ic_pairing *pg, const double box[3][2], int has_box,
                                    ic_error *err)
 {
@@ -314,7 +322,8 @@ int ic_certificate_refute_smooth(ic_certificate *c, int nclaimed)
     for (int s = 0; s < nclaimed && s < c->nsingular; s++) {
         if (c->box_cells[s] > c->box_smooth[s])
             continue;
-        const double *p = c->singular[s];
+        double p[3];
+        ic_frame_shown(&c->pg->frame, c->singular[s], p);
         ic_certificate_refuse(c, "singular point %d (of the result's) near (%.9g, %.9g, %.9g) is "
                                  "none: %s",
                               s, p[0], p[1], p[2],

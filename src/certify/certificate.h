@@ -168,6 +168,10 @@ typedef struct {
 /* A new certificate over the pairing's search region (box: the problem's,
  * has_box 0 when it has none); NULL out of memory or when the region has
  * no finite box (err says). */
+/* Where search coordinate k was moved from (the pairing's frame, trace/frame.h):
+ * the user's coordinate is z[k] + this. */
+double ic_certificate_origin(const ic_certificate *c, int k);
+
 ic_certificate *ic_certificate_new(const ic_pairing *pg, const double box[3][2], int has_box,
                                    ic_error *err);
 void ic_certificate_free(ic_certificate *c);

@@ -101,7 +101,10 @@ static int grow_leaf(ic_certificate *c, long i, int depth, const ic_certify_limi
                                  "%.9g] (first two coordinates) is neither empty nor regular nor "
                                  "by a singular point or tangential curve found: one missed, a "
                                  "box edge across a sheet, or surfaces too close",
-                              rel, cl->lo[0], cl->hi[0], cl->lo[1], cl->hi[1]);
+                              rel, cl->lo[0] + ic_certificate_origin(c, 0),
+                              cl->hi[0] + ic_certificate_origin(c, 0),
+                              cl->lo[1] + ic_certificate_origin(c, 1),
+                              cl->hi[1] + ic_certificate_origin(c, 1));
         return 0;
     }
     if (c->ncells + 2 > lim->max_cells) {

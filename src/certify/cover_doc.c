@@ -77,6 +77,14 @@ static void write_region(json_out *j, const ic_certificate *c)
     ic_json_out_vector(j, c->hi, c->dim);
     ic_json_out_key(j, "periodic");
     ic_json_out_ints(j, periodic, c->dim);
+    double origin[4];
+    int moved = 0;
+    for (int k = 0; k < c->dim; k++)
+        moved |= (origin[k] = ic_certificate_origin(c, k)) != 0.0;
+    if (moved) { /* the problem was moved (docs/tracing.md, "Far from the origin") */
+        ic_json_out_key(j, "origin");
+        ic_json_out_vector(j, origin, c->dim);
+    }
     ic_json_out_end_object(j);
 }
 

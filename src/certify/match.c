@@ -145,7 +145,8 @@ static void format_point(const ic_certificate *c, const double *z, char *out, si
 {
     int at = snprintf(out, size, "(");
     for (int k = 0; k < c->dim && at > 0 && (size_t)at < size; k++)
-        at += snprintf(out + at, size - (size_t)at, "%s%.9g", k ? ", " : "", z[k]);
+        at += snprintf(out + at, size - (size_t)at, "%s%.9g", k ? ", " : "",
+                       z[k] + ic_certificate_origin(c, k));
     if (at > 0 && (size_t)at < size)
         snprintf(out + at, size - (size_t)at, ")");
 }

@@ -81,14 +81,16 @@ int ic_certify_passages(ic_certificate *c, const ic_certify_curve *curves, int n
                                    c->singular_half * c->singular_scale[s]);
         free(xyz);
     }
-    for (int s = 0; s < nallowed && s < c->nsingular; s++)
+    for (int s = 0; s < nallowed && s < c->nsingular; s++) {
+        double shown[3];
+        ic_frame_shown(&c->pg->frame, c->singular[s], shown);
         if (allowed[s] >= 0 && met[s] > allowed[s])
             ic_certificate_refuse(c,
                                   "the box of singular point %d (of the result's) near (%.9g, "
                                   "%.9g, %.9g) is met %d times by the curves, more than its "
                                   "type allows (%d)",
-                                  s + 1, c->singular[s][0], c->singular[s][1], c->singular[s][2],
-                                  met[s], allowed[s]);
+                                  s + 1, shown[0], shown[1], shown[2], met[s], allowed[s]);
+    }
     free(met);
     return 1;
 }

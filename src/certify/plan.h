@@ -40,6 +40,7 @@ struct ic_cover_plan {
     char pairing[64];
     int dim;
     double lo[4], hi[4];
+    double origin[4]; /* where the region was moved from (region.origin; 0 absent) */
     ic_plan_node *nodes;
     long nnodes;
     ic_plan_crossing *crossings;

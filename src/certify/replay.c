@@ -52,6 +52,12 @@ static ic_status same_region(const ic_cover_plan *p, const ic_certificate *c, ic
                             "%s: dimension %d: this problem's search has %d coordinates",
                             p->where, p->dim, c->dim);
     for (int k = 0; k < c->dim; k++)
+        if (p->origin[k] != ic_certificate_origin(c, k))
+            return ic_error_set(err, IC_ERR_INVALID, 0,
+                                "%s: region: origin %d is %.17g, this problem's %.17g (a "
+                                "certificate of another problem or box)",
+                                p->where, k, p->origin[k], ic_certificate_origin(c, k));
+    for (int k = 0; k < c->dim; k++)
         if (p->lo[k] != c->lo[k] || p->hi[k] != c->hi[k])
             return ic_error_set(err, IC_ERR_INVALID, 0,
                                 "%s: region: coordinate %d is [%.17g, %.17g], this problem's "

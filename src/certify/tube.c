@@ -146,10 +146,12 @@ static int overlap(ic_certificate *c, int a, int b, const double *at_a)
                 continue;
             if (a == b && along(ta, at_a, i, j) <= apart)
                 continue;
+            double shown[3];
+            ic_frame_shown(&c->pg->frame, p, shown);
             ic_certificate_refuse(c, "tangential curve %d %s near (%.9g, %.9g, %.9g): traced "
                                      "twice over there, or two curves within the tube",
-                                  a, a == b ? "comes back on itself" : "meets another", p[0],
-                                  p[1], p[2]);
+                                  a, a == b ? "comes back on itself" : "meets another", shown[0],
+                                  shown[1], shown[2]);
             return 1;
         }
     return 0;

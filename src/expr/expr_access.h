@@ -10,6 +10,13 @@
  * thread of a trace evaluates (trace/workers.c). IC_ERR_NOMEM. */
 ic_status ic_expr_copy(ic_expr **out, const ic_expr *e, ic_error *err);
 
+/* The formula g(y) = f(var_at + y) - out_at moved to a new origin
+ * (shift.c): equal to f's in real arithmetic, every constant combined
+ * exactly, so a feature far from the origin keeps its digits. var_at has
+ * f's nvars offsets, out_at its noutputs (NULL: none). IC_ERR_NOMEM. */
+ic_status ic_expr_shifted(ic_expr **out, const ic_expr *f, const double *var_at,
+                          const double *out_at, ic_error *err);
+
 /* One term of a formula written as a sum: coef times register reg. */
 typedef struct {
     int reg;

@@ -43,6 +43,10 @@ struct ic_expr {
 int ic_tape_emit(ic_expr *e, ic_opcode op, int a, int b, long n, double c, int column,
                  ic_error *err);
 
+/* Ends a tape built by ic_tape_emit: registers no output needs removed,
+ * the sharing table dropped. -1 out of memory. */
+int ic_expr_finish(ic_expr *e);
+
 /* Evaluates one operation on doubles; used by folding and by ic_expr_eval.
  * Returns a non-finite value where the operation is undefined. */
 double ic_op_eval_double(ic_opcode op, double a, double b, long n, double c);

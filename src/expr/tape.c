@@ -216,6 +216,8 @@ static int remove_dead_code(ic_expr *e)
     return 0;
 }
 
+int ic_expr_finish(ic_expr *e) { return remove_dead_code(e); }
+
 ic_status ic_expr_compile(ic_expr **out, const char *const *formulas, int nformulas,
                           const char *const *vars, int nvars, const ic_constant *consts,
                           int nconsts, int *which, ic_error *err)

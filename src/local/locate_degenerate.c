@@ -73,10 +73,12 @@ static ic_status locate_degenerate(ic_pair *pair, ic_local_point *pt, const ic_l
             return IC_OK;
         }
     }
+    double at[3];
+    ic_frame_shown(&pair->pairing.frame, near->xyz, at);
     return ic_error_set(err, IC_ERR_UNABLE, 0,
                         "no degenerate tangential point (contact order 3..%d) within %g of "
                         "(%g, %g, %g)",
-                        MAX_DEGENERATE_ORDER, reach, near->xyz[0], near->xyz[1], near->xyz[2]);
+                        MAX_DEGENERATE_ORDER, reach, at[0], at[1], at[2]);
 }
 
 /* (a contact order whose apparatus fails is passed over: out of memory

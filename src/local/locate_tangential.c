@@ -294,10 +294,12 @@ ic_status ic_local_locate_tangential(ic_pair *pair, ic_local_point *pt, const ic
     ic_tres_setup(&c, pair, near, opt, z);
     const int m = ic_tres_residuals(&c, z, F);
     const double worst = m > 0 ? solve(&c, z, m, F) : INFINITY;
+    double at[3];
+    ic_frame_shown(&ic_pair_pairing(pair)->frame, near->xyz, at);
     if (!(worst <= LOCATE_ACCEPT))
         return ic_error_set(err, IC_ERR_UNABLE, 0,
                             "no tangential point converged near (%g, %g, %g) (residual %.3g)",
-                            near->xyz[0], near->xyz[1], near->xyz[2], worst);
+                            at[0], at[1], at[2], worst);
     ic_tres_unpack(&c, z, pt);
     if (ic_tres_position(&c, z, pt->xyz, err) != IC_OK)
         return IC_ERR_UNABLE;

@@ -106,6 +106,7 @@ void ic_pair_free(ic_pair *p)
 
 int ic_pair_is_self(const ic_pair *p) { return p ? p->self : 0; }
 const ic_pairing *ic_pair_pairing(const ic_pair *p) { return &p->pairing; }
+void ic_pair_set_frame(ic_pair *pair, const ic_frame *fr) { pair->pairing.frame = *fr; }
 ic_surface *ic_pair_surface(const ic_pair *p, int which)
 {
     return p && (which == 0 || which == 1) ? p->s[which] : NULL;

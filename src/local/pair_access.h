@@ -32,6 +32,10 @@ void ic_pair_nomem_take(ic_pair *pair, ic_pair *copy);
 /* The pair's pairing (pairing/pairing.h), built with it. */
 const ic_pairing *ic_pair_pairing(const ic_pair *pair);
 
+/* Notes that the pair's surfaces are a problem moved by fr (trace/frame.c),
+ * so that messages show the user's coordinates (pairing.h: frame). */
+void ic_pair_set_frame(ic_pair *pair, const ic_frame *fr);
+
 /* The pair's jet space of order 2 in nvars (2: a parametric sheet's, 3: an
  * implicit one's) variables, made with the pair: using it allocates
  * nothing. */

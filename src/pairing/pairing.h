@@ -16,6 +16,7 @@
 #include "intercurve/expr.h"
 #include "intercurve/jet.h"
 #include "intercurve/surface.h"
+#include "common/frame.h"
 
 typedef struct ic_pairing ic_pairing;
 
@@ -100,6 +101,9 @@ struct ic_pairing {
     int par[2];              /* which sheets are parametric (the loop tests' interface) */
     int P, I;                /* parametric/implicit: the parametric and the implicit sheet */
     ic_jet_space *sp2, *sp3; /* first-order jets over (u, v) and (x, y, z) */
+    /* where the problem was moved from (trace/frame.c): its messages give
+     * points as xyz + frame.xyz; all zeros when nothing moved */
+    ic_frame frame;
 };
 
 /* 1 when a parametric sheet's normal may vanish within `rel` of its

@@ -61,8 +61,10 @@ void ic_trace_list_deferred(ic_trace_result *r, double radius)
             ic_axpy3(d, r->deferred[j].xyz, -1.0, x);
             dup = ic_norm3(d) <= 1e-10 * (r->scale + ic_norm3(x));
         }
+        double at[3];
+        ic_frame_shown(&r->frame, x, at);
         if (!dup && !ic_trace_point_near_found(r, x, radius))
-            ic_trace_failure(&r->report, "start candidate (%g, %g, %g): %s", x[0], x[1], x[2],
+            ic_trace_failure(&r->report, "start candidate (%g, %g, %g): %s", at[0], at[1], at[2],
                              r->deferred_why[i]);
     }
 }

@@ -250,12 +250,14 @@ static int finish_end(ic_trace_result *r, ic_pair *pair, const ic_trace_options 
 static void report_budget(ic_trace_result *r, const ic_trace_options *opt,
                           const ic_local_point *pt, const char *way)
 {
+    double at[3];
+    ic_frame_shown(&r->frame, pt->xyz, at);
     if (ic_trace_out_of_time(&r->budget))
         ic_trace_failure(&r->report, "curve from (%g, %g, %g)%s: stopped at the time limit",
-                         pt->xyz[0], pt->xyz[1], pt->xyz[2], way);
+                         at[0], at[1], at[2], way);
     else
         ic_trace_failure(&r->report, "curve from (%g, %g, %g)%s: stopped at the budget of %d points",
-                         pt->xyz[0], pt->xyz[1], pt->xyz[2], way, opt->max_points);
+                         at[0], at[1], at[2], way, opt->max_points);
 }
 
 /* The curve of the marches m from pt (ic_trace_march_both) into a new
@@ -272,9 +274,11 @@ ic_status ic_trace_add_marches(ic_trace_result *r, ic_pair *pair, const ic_local
             *err = m->err[0];
         return m->st[0];
     }
+    double at[3];
+    ic_frame_shown(&r->frame, pt->xyz, at);
     if (m->st[0] != IC_OK)
-        ic_trace_failure(&r->report, "curve from (%g, %g, %g): %s", pt->xyz[0], pt->xyz[1],
-                         pt->xyz[2], err ? m->err[0].message : "failed");
+        ic_trace_failure(&r->report, "curve from (%g, %g, %g): %s", at[0], at[1], at[2],
+                         err ? m->err[0].message : "failed");
     if (e1 == IC_TRACE_BUDGET)
         report_budget(r, opt, pt, "");
     int n1 = m->n[0];
@@ -295,8 +299,8 @@ ic_status ic_trace_add_marches(ic_trace_result *r, ic_pair *pair, const ic_local
         return IC_ERR_NOMEM;
     }
     if (m->st[1] != IC_OK)
-        ic_trace_failure(&r->report, "curve from (%g, %g, %g), backwards: %s", pt->xyz[0],
-                         pt->xyz[1], pt->xyz[2], err ? m->err[1].message : "failed");
+        ic_trace_failure(&r->report, "curve from (%g, %g, %g), backwards: %s", at[0], at[1],
+                         at[2], err ? m->err[1].message : "failed");
     if (e0 == IC_TRACE_BUDGET)
         report_budget(r, opt, pt, ", backwards");
     int n0 = m->n[1];

@@ -810,10 +810,12 @@ static ic_status no_step(ic_tracer *tr, int near_tangential, ic_trace_event *eve
     if (on_boundary_heading_out(tr, event))
         return IC_OK;
     *event = IC_TRACE_FAILED;
+    double at[3];
+    ic_frame_shown(&ic_pair_pairing(tr->pair)->frame, tr->cur.xyz, at);
     return ic_error_set(err, IC_ERR_UNABLE, 0,
                         "the tracer could not make a step at s = %g, (%g, %g, %g): the corrector "
                         "did not converge down to the minimum step %g",
-                        tr->s, tr->cur.xyz[0], tr->cur.xyz[1], tr->cur.xyz[2], tr->opt.min_step);
+                        tr->s, at[0], at[1], at[2], tr->opt.min_step);
 }
 
 static ic_status step(ic_tracer *tr, ic_trace_event *event, ic_error *err)

@@ -10,6 +10,7 @@
 #include "certify_result.h"
 #include "core/trace_constants.h"
 #include "exact/exact.h"
+#include "frame.h"
 #include "trace_internal.h"
 #include "march_ahead.h"
 #include "workers.h"
@@ -133,6 +134,7 @@ static ic_status new_result(ic_trace_result **out, ic_pair *pair, const ic_trace
     r->scale = ic_trace_problem_scale(pair, user_opt);
     r->report.search_scale = r->scale;
     r->report.method = ic_trace_method_search;
+    r->frame = ic_pair_pairing(pair)->frame;
     *out = r;
     return IC_OK;
 }
@@ -194,8 +196,25 @@ ic_status ic_trace(ic_trace_result **out, ic_pair *pair, const ic_trace_options 
     IC_ARG_NOT_NULL(out, "res");
     IC_ARG_NOT_NULL(pair, "pair");
     IC_ARG_NOT_NULL(user_opt, "opt");
-    const long before = ic_pair_nomem_count(pair);
-    ic_status st = ic_pair_nomem_check(pair, before, trace(out, pair, user_opt, err), err);
+    *out = NULL;
+    /* the options as the user gave them (a bad box named in their numbers) */
+    ic_status st = ic_trace_check_options(user_opt, err);
+    if (st != IC_OK)
+        return st;
+    /* far from the origin: traced moved near it, the result moved back */
+    ic_trace_moved m;
+    st = ic_trace_move(&m, pair, user_opt->box, user_opt->has_box, err);
+    if (st != IC_OK)
+        return st;
+    ic_trace_options opt = *user_opt;
+    if (m.pair && opt.has_box)
+        memcpy(opt.box, m.box, sizeof opt.box);
+    ic_pair *traced = m.pair ? m.pair : pair;
+    const long before = ic_pair_nomem_count(traced);
+    st = ic_pair_nomem_check(traced, before, trace(out, traced, &opt, err), err);
+    if (st == IC_OK)
+        ic_trace_result_move_back(*out, &m.frame);
+    ic_trace_moved_release(&m);
     if (st == IC_ERR_NOMEM) {
         ic_trace_result_free(*out);
         *out = NULL;

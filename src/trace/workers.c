@@ -93,6 +93,8 @@ static ic_status copy_pair(worker *w, ic_pair *pair, ic_error *err)
     if (st == IC_OK)
         st = ic_pair_new(&w->pair, w->own[0],
                          ic_pair_is_self(pair) ? NULL : B != A ? w->own[1] : w->own[0], err);
+    if (st == IC_OK)
+        ic_pair_set_frame(w->pair, &ic_pair_pairing(pair)->frame);
     if (st != IC_OK)
         free_copy(w);
     return st;

@@ -12,7 +12,13 @@ ic_status ic_trace_check_options(const ic_trace_options *o, ic_error *err);
  * (tol, chord, max_step, min_step times L; the locators' scale L). */
 ic_trace_options ic_trace_absolute_options(const ic_trace_options *opt, double L);
 
-/* The problem's length scale L (scale.c; docs/tracing.md, "Scale"). */
+/* The box where the problem's intersection is sought (scale.c): the box
+ * for two implicit surfaces, else the parametric sheets' samples (cut to
+ * the box when there is one); lo > hi along a coordinate nothing spans. */
+void ic_trace_problem_bounds(ic_pair *pair, const ic_trace_options *opt, double lo[3],
+                             double hi[3]);
+/* The problem's length scale L, the diagonal of those bounds (scale.c;
+ * docs/tracing.md, "Scale"). */
 double ic_trace_problem_scale(ic_pair *pair, const ic_trace_options *opt);
 
 /* Seconds on the monotonic clock. */

@@ -37,10 +37,12 @@ static void not_placed(ic_trace_result *r, ic_trace_special *s, ic_trace_located
 {
     s->approximate = 1;
     loc->place_radius = radius;
+    double at[3];
+    ic_frame_shown(&r->frame, s->xyz, at);
     ic_trace_failure(&r->report,
                      "a contact point near (%.6g, %.6g, %.6g) is located only to about %.2g (%s): "
                      "its place and type are approximate",
-                     s->xyz[0], s->xyz[1], s->xyz[2], radius, why);
+                     at[0], at[1], at[2], radius, why);
 }
 
 /* An isolated contact is located by Gauss-Newton on a root of multiplicity
@@ -196,9 +198,11 @@ ic_status ic_trace_add_placed_special(ic_trace_result *r, ic_pair *pair, const i
         s->type = IC_POINT_TANGENTIAL;
         s->nbranches = 0;
         s->approximate = 1;
+        double at[3];
+        ic_frame_shown(&r->frame, s->xyz, at);
         ic_trace_failure(&r->report,
-                         "a tangential point near (%.6g, %.6g, %.6g) could not be classified", s->xyz[0],
-                         s->xyz[1], s->xyz[2]);
+                         "a tangential point near (%.6g, %.6g, %.6g) could not be classified",
+                         at[0], at[1], at[2]);
     }
     return IC_OK;
 }

@@ -6,6 +6,7 @@
 
 #include "common/args.h"
 #include "intercurve/trace.h"
+#include "common/frame.h"
 
 typedef struct ic_curve_index ic_curve_index;
 /* The threads of a trace (trace/workers.h). */
@@ -74,6 +75,9 @@ struct ic_trace_result {
     void (*free_fits)(ic_curve_fit **fits, int n);
     ic_trace_workers *workers; /* the trace's other threads (NULL: one thread) */
     char *certificate; /* the last check's certificate file, when kept */
+    /* where the traced problem was moved from (trace/frame.h): the
+     * failures give points as the user's, xyz + frame.xyz */
+    ic_frame frame;
 };
 
 /* The report's method of the general path. */

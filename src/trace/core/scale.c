@@ -42,9 +42,11 @@ static void sample_bounds(ic_surface *s, const ic_jet_space *sp, double *lo, dou
         }
 }
 
-double ic_trace_problem_scale(ic_pair *pair, const ic_trace_options *opt)
+void ic_trace_problem_bounds(ic_pair *pair, const ic_trace_options *opt, double lo[3],
+                             double hi[3])
 {
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int k = 0; k < 3; k++)
+        lo[k] = INFINITY, hi[k] = -INFINITY;
     /* the pair's space (the surface's workspace for it is made with the
      * surface): a space made here could fail, and a smaller L would follow
      * (tests/test_nomem.c, "trace, mixed") */
@@ -59,6 +61,12 @@ double ic_trace_problem_scale(ic_pair *pair, const ic_trace_options *opt)
         lo[k] = a <= b ? a : opt->box[k][0];
         hi[k] = a <= b ? b : opt->box[k][1];
     }
+}
+
+double ic_trace_problem_scale(ic_pair *pair, const ic_trace_options *opt)
+{
+    double lo[3], hi[3];
+    ic_trace_problem_bounds(pair, opt, lo, hi);
     double d2 = 0;
     for (int k = 0; k < 3; k++)
         d2 += hi[k] > lo[k] ? (hi[k] - lo[k]) * (hi[k] - lo[k]) : 0.0;

@@ -12,6 +12,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <cjson/cJSON.h>
+
 #include "api/api.h"
 #include "certify/match.h"
 #include "certify/plan.h"
@@ -225,6 +227,60 @@ static inline int verdict_of(const traced *t, const ic_certify_claim *claim, int
     snprintf(reason, 240, "%s", c->summary.reason);
     ic_certificate_free(c);
     return ok;
+}
+
+/* The verdict of `verify` on the saved document, mutated by `how`: 0 as
+ * traced, 1 its first curve dropped, 2 its first curve doubled, 3 its
+ * branch point moved by 1e-3 along x; cert: replay the certificate file.
+ * 1 accepted, 0 refused, -1 the test failed. */
+static inline int verify_doc(const traced *t, const char *name, int how, const char *cert)
+{
+    char *doc = NULL;
+    size_t len = 0;
+    ic_error err;
+    if (!REQUIRE(ic_trace_json_alloc(&doc, &len, t->res, t->pair, &err) == IC_OK, "%s: %s", name,
+                 err.message))
+        return -1;
+    cJSON *j = cJSON_Parse(doc);
+    ic_free(doc);
+    cJSON *curves = cJSON_GetObjectItemCaseSensitive(j, "curves");
+    if (how == 1)
+        cJSON_DeleteItemFromArray(curves, 0);
+    if (how == 2)
+        cJSON_AddItemToArray(curves, cJSON_Duplicate(cJSON_GetArrayItem(curves, 0), 1));
+    if (how == 3) {
+        cJSON *x = cJSON_GetArrayItem(cJSON_GetObjectItemCaseSensitive(
+                                          cJSON_GetArrayItem(cJSON_GetObjectItemCaseSensitive(
+                                                                 j, "points"),
+                                                             0),
+                                          "xyz"),
+                                      0);
+        cJSON_SetNumberValue(x, x->valuedouble + 1e-3);
+    }
+    char *text = cJSON_PrintUnformatted(j);
+    cJSON_Delete(j);
+    ic_trace_certificate out;
+    const ic_status st = cert ? ic_problem_verify_certificate(t->problem, text, cert, &out, &err)
+                              : ic_problem_verify(t->problem, text, &out, &err);
+    free(text);
+    return REQUIRE(st == IC_OK, "%s: verify: %s", name, err.message) ? out.accepted : -1;
+}
+
+/* A proven case accepted again by `verify` (grown afresh and from its
+ * certificate file, which t must have kept: trace_json_keep) and its
+ * mutations refused: a curve dropped, a curve doubled, and where it has
+ * special points, the first moved by 1e-3. */
+static inline void verify_saved(const traced *t, const char *name)
+{
+    if (!ic_trace_result_report(t->res)->complete)
+        return;
+    CHECK(verify_doc(t, name, 0, NULL) == 1, "%s: verify refuses the saved trace", name);
+    CHECK(verify_doc(t, name, 0, ic_trace_result_certificate(t->res)) == 1,
+          "%s: verify --certificate refuses the saved trace", name);
+    CHECK(verify_doc(t, name, 1, NULL) == 0, "%s: a curve dropped is accepted", name);
+    CHECK(verify_doc(t, name, 2, NULL) == 0, "%s: a curve doubled is accepted", name);
+    if (ic_trace_result_num_specials(t->res) > 0)
+        CHECK(verify_doc(t, name, 3, NULL) == 0, "%s: the branch point moved is accepted", name);
 }
 
 #endif

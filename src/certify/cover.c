@@ -109,7 +109,13 @@ static int grow_leaf(ic_certificate *c, long i, int depth, const ic_certify_limi
     }
     if (c->ncells + 2 > lim->max_cells) {
         ic_certificate_count(c, IC_CELL_REFUSED);
-        ic_certificate_refuse(c, "the cover needs more than %ld cells", lim->max_cells);
+        ic_certificate_refuse(c, "the cover needs more than %ld cells (undecided when they ran "
+                                 "out: a cell of width %.3g of the region at [%.9g, %.9g] x "
+                                 "[%.9g, %.9g], first two coordinates)",
+                              lim->max_cells, rel, cl->lo[0] + ic_certificate_origin(c, 0),
+                              cl->hi[0] + ic_certificate_origin(c, 0),
+                              cl->lo[1] + ic_certificate_origin(c, 1),
+                              cl->hi[1] + ic_certificate_origin(c, 1));
         return 0;
     }
     /* a pole's strip first: there the cell is singular whatever its

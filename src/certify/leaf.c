@@ -25,34 +25,79 @@ static void cell_box(const ic_cell *cl, int dim, ic_interval *X)
         X[k] = (ic_interval){cl->lo[k], cl->hi[k]};
 }
 
-/* The (u, v) and (p, q) boxes of a self-intersection cell overlap, once a
- * periodic parameter is shifted by `shift` periods: *shift receives it. */
-static int near_diagonal(const ic_certificate *c, const ic_interval *X, double shift[2])
+/* The boxes A of (u, v) and B of (p, q) overlap (2) or lie apart by at
+ * most the wider one's width (1), once a periodic parameter of B is
+ * shifted by whole periods; 0 farther. *Bs receives B so shifted. (Apart,
+ * the test below can prove them empty: a cell beside the diagonal is
+ * neither empty by its enclosure nor regular, as R(a) - R(b) nearly
+ * vanishes there, and a figure-8 Klein bottle's cover ran out of cells at
+ * them.) */
+static int boxes_meet(const ic_certificate *c, const ic_interval A[2], const ic_interval B[2],
+                      ic_interval Bs[2])
 {
+    int overlap = 2;
     for (int k = 0; k < 2; k++) {
         const double T = c->periodic[k] ? c->hi[k] - c->lo[k] : 0.0;
+        const double slack = fmax(A[k].hi - A[k].lo, B[k].hi - B[k].lo);
         int found = 0;
-        for (int s = -1; s <= 1 && !found; s++) {
-            if (s != 0 && T == 0.0)
-                continue;
-            if (X[k].lo <= X[k + 2].hi + s * T && X[k + 2].lo + s * T <= X[k].hi)
-                found = 1, shift[k] = s * T;
-        }
+        for (int pass = 0; pass < 2 && !found; pass++) /* overlapping first */
+            for (int s = -1; s <= 1 && !found; s++) {
+                const double g = pass ? slack : 0.0;
+                if ((s != 0 && T == 0.0) ||
+                    !(A[k].lo <= B[k].hi + s * T + g && B[k].lo + s * T <= A[k].hi + g))
+                    continue;
+                found = 1, Bs[k] = (ic_interval){B[k].lo + s * T, B[k].hi + s * T};
+                overlap = pass ? 1 : overlap;
+            }
         if (!found)
             return 0;
     }
-    return 1;
+    return overlap;
+}
+
+/* A box of one preimage carried back across the sheet's glued edges
+ * (pairing/pairing_glue.c), outward: by the glue its points are the same
+ * points of the surface. */
+static void glue_back(const ic_certificate *c, const ic_interval in[2], ic_interval out[2])
+{
+    double a[2], b[2];
+    const double lo[2] = {in[0].lo, in[1].lo}, hi[2] = {in[0].hi, in[1].hi};
+    ic_pairing_glue_back(c->pg, lo, a);
+    ic_pairing_glue_back(c->pg, hi, b);
+    for (int k = 0; k < 2; k++) {
+        out[k].lo = nextafter(fmin(a[k], b[k]), -INFINITY);
+        out[k].hi = nextafter(fmax(a[k], b[k]), INFINITY);
+    }
+}
+
+/* The (u, v) box A and the (p, q) box of a self-intersection cell where
+ * they meet (boxes_meet's 2, or 1 beside each other): as they are, modulo
+ * the periods, or either carried back across the glued edges; A and B
+ * receive the pair that meets. */
+static int near_diagonal(const ic_certificate *c, const ic_interval *X, ic_interval A[2],
+                         ic_interval B[2])
+{
+    const ic_interval U[2] = {X[0], X[1]}, P[2] = {X[2], X[3]};
+    A[0] = U[0], A[1] = U[1];
+    int meet = boxes_meet(c, U, P, B);
+    if (meet || c->pg->glue.axis < 0)
+        return meet;
+    ic_interval G[2];
+    glue_back(c, P, G);
+    if ((meet = boxes_meet(c, U, G, B)) != 0)
+        return meet;
+    glue_back(c, U, A);
+    return boxes_meet(c, A, P, B);
 }
 
 /* R(a) - R(b) = M (a - b) with M in J_R over the hull of both boxes: when
  * two rows of it form a regular 2 x 2 interval matrix, R(a) = R(b) forces
  * a = b (the trivial solutions of a self-intersection). */
-static int only_diagonal(const ic_certificate *c, const ic_interval *X, const double shift[2])
+static int only_diagonal(const ic_certificate *c, const ic_interval A[2], const ic_interval B[2])
 {
     ic_interval H[2];
     for (int k = 0; k < 2; k++)
-        H[k] = (ic_interval){fmin(X[k].lo, X[k + 2].lo + shift[k]),
-                             fmax(X[k].hi, X[k + 2].hi + shift[k])};
+        H[k] = (ic_interval){fmin(A[k].lo, B[k].lo), fmax(A[k].hi, B[k].hi)};
     ic_interval_grad R[3];
     if (ic_surface_eval_interval_grad(c->pg->S[0], R, H, NULL) != IC_OK)
         return 0;
@@ -271,12 +316,13 @@ int ic_certify_leaf(ic_certificate *c, long i, const ic_certify_limits *lim)
         }
         across = side < 0;
     }
-    double shift[2];
-    if (c->pg->kind == &ic_pairing_self && near_diagonal(c, X, shift)) {
-        if (only_diagonal(c, X, shift)) {
-            cl->kind = IC_CELL_DIAGONAL;
-            return 1;
-        }
+    ic_interval A[2], B[2];
+    const int near = c->pg->kind == &ic_pairing_self ? near_diagonal(c, X, A, B) : 0;
+    if (near && only_diagonal(c, A, B)) { /* beside it: no solution at all */
+        cl->kind = IC_CELL_DIAGONAL;
+        return 1;
+    }
+    if (near == 2) {
         /* beside the diagonal the trivial solutions fill the cell: it is
          * never regular, and singular when a box holds it (a pinch point
          * where the double curve's two preimages meet) */

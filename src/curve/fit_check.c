@@ -158,9 +158,16 @@ static double check_at(ic_pair *pair, const ic_curve_fit *f, const ic_trace_poin
             e = implicit_distance(S, sp->point1, m->X);
         else if (f->pcurves[k].ncontrol)
             e = m->off[k];
-        else {
+        else { /* from the mean of the ends' parameters, and from each end's:
+                * across a glued edge the mean lies far away (a Klein
+                * bottle's u = 2 pi to u = 0), and each start only bounds
+                * the distance from above */
             middle_params(S, a, b, k, uv);
             e = sheet_distance(S, sp->sheet1, m->X, uv);
+            for (int end = 0; end < 2; end++) {
+                const double ea = sheet_distance(S, sp->sheet1, m->X, (end ? b : a)->params[k]);
+                e = ea >= 0 && (e < 0 || ea < e) ? ea : e;
+            }
         }
         if (e < 0)
             return -1;

@@ -25,6 +25,9 @@ ic_status ic_pairing_init(ic_pairing *p, ic_surface *A, ic_surface *B, int self,
     ic_status st = ic_jet_space_new(&p->sp2, 2, 1, err);
     if (st == IC_OK)
         st = ic_jet_space_new(&p->sp3, 3, 1, err);
+    p->glue.axis = -1;
+    if (st == IC_OK && self)
+        ic_pairing_find_glue(p);
     if (st != IC_OK)
         ic_pairing_release(p);
     return st;

@@ -95,6 +95,15 @@ typedef struct {
     .position = position, .loop_free = loop_free, .excluded_centred = excluded_centred,            \
     .may_degenerate = may_degenerate
 
+/* A self-intersection sheet's glued edges (pairing_glue.c): the edges
+ * z[axis] = e0 and e0 + T of a parameter not marked periodic are one curve
+ * of the surface, R(u, w) = R(u + T, g(w)) with g(w) = c - w (flip) or
+ * w + c; axis -1: none. */
+typedef struct {
+    int axis, flip;
+    double T, c;
+} ic_pairing_glue;
+
 struct ic_pairing {
     const ic_pairing_kind *kind;
     ic_surface *S[2];
@@ -104,7 +113,18 @@ struct ic_pairing {
     /* where the problem was moved from (trace/frame.c): its messages give
      * points as xyz + frame.xyz; all zeros when nothing moved */
     ic_frame frame;
+    ic_pairing_glue glue; /* self-intersections only; axis -1 elsewhere */
 };
+
+/* Looks for glued edges of a self-intersection's sheet (pairing_glue.c). */
+void ic_pairing_find_glue(ic_pairing *p);
+/* The preimage b = (p, q) on the far edge's side carried back across the
+ * glue: G^-1(b) = (p - T, g^-1(q)) along its axis (p->glue.axis >= 0). */
+void ic_pairing_glue_back(const ic_pairing *p, const double b[2], double out[2]);
+/* A self-intersection's two preimages z = (u, v, p, q) apart: the sum of
+ * |u - p| and |v - q| modulo the periods, the least of that and the same
+ * with (p, q) carried back across the glue (pairing_self.c). */
+double ic_pairing_self_gap(const ic_pairing *p, const double *z);
 
 /* 1 when a parametric sheet's normal may vanish within `rel` of its
  * domain's widths around the point's parameters (a pole, a pinch point). */

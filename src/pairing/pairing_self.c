@@ -60,6 +60,48 @@ static int near_shift(const ic_pairing *p, const double *lo, const double *hi, i
     return 0;
 }
 
+/* A leaf by the diagonal (lo, hi: (u, v, p, q)) proven to hold no pair
+ * of distinct preimages: R one-to-one over the hull of its two boxes. */
+static int trivial_leaf(const ic_pairing *p, const double *lo, const double *hi,
+                        const double band[2])
+{
+    double shift[2];
+    if (!near_shift(p, lo, hi, 0, band[0], &shift[0]) ||
+        !near_shift(p, lo, hi, 1, band[1], &shift[1]))
+        return 0;
+    const double hlo[2] = {fmin(lo[0], lo[2] + shift[0]), fmin(lo[1], lo[3] + shift[1])};
+    const double hhi[2] = {fmax(hi[0], hi[2] + shift[0]), fmax(hi[1], hi[3] + shift[1])};
+    return injective(p, hlo, hhi);
+}
+
+/* The box [lo, hi] of one preimage carried back across the glued edges. */
+static void glue_back_box(const ic_pairing *p, const double lo[2], const double hi[2],
+                          double out_lo[2], double out_hi[2])
+{
+    double a[2], b[2];
+    ic_pairing_glue_back(p, lo, a);
+    ic_pairing_glue_back(p, hi, b);
+    for (int k = 0; k < 2; k++)
+        out_lo[k] = fmin(a[k], b[k]), out_hi[k] = fmax(a[k], b[k]);
+}
+
+/* The same with either box carried back across the glued edges
+ * (pairing_glue.c): by the glue the points of both boxes are then of one
+ * sheet beside the edge. */
+static int trivial_glued_leaf(const ic_pairing *p, const double *lo, const double *hi,
+                              const double band[2])
+{
+    if (p->glue.axis < 0)
+        return 0;
+    double glo[4] = {lo[0], lo[1], lo[2], lo[3]}, ghi[4] = {hi[0], hi[1], hi[2], hi[3]};
+    glue_back_box(p, lo + 2, hi + 2, glo + 2, ghi + 2);
+    if (trivial_leaf(p, glo, ghi, band))
+        return 1;
+    double alo[4] = {lo[0], lo[1], lo[2], lo[3]}, ahi[4] = {hi[0], hi[1], hi[2], hi[3]};
+    glue_back_box(p, lo, hi, alo, ahi);
+    return trivial_leaf(p, alo, ahi, band);
+}
+
 /* One sheet pair per curve ((u, v) before (p, q): a cell wholly after is
  * the mirror of one before); a leaf within `band` of the diagonal (two leaf
  * widths of the first search), modulo the periods, is skipped only where R
@@ -72,13 +114,7 @@ static int skip(const ic_pairing *p, const double *lo, const double *hi, int lea
 {
     if (lo[0] > hi[2])
         return 1;
-    double shift[2];
-    if (!leaf || !near_shift(p, lo, hi, 0, band[0], &shift[0]) ||
-        !near_shift(p, lo, hi, 1, band[1], &shift[1]))
-        return 0;
-    const double hlo[2] = {fmin(lo[0], lo[2] + shift[0]), fmin(lo[1], lo[3] + shift[1])};
-    const double hhi[2] = {fmax(hi[0], hi[2] + shift[0]), fmax(hi[1], hi[3] + shift[1])};
-    return injective(p, hlo, hhi);
+    return leaf && (trivial_leaf(p, lo, hi, band) || trivial_glued_leaf(p, lo, hi, band));
 }
 
 /* Preimages apart by more than a millionth of the band, modulo the
@@ -86,15 +122,33 @@ static int skip(const ic_pairing *p, const double *lo, const double *hi, int lea
  * itself (a trivial solution, apart by rounding, or by a whole period on a
  * periodic parameter) gives no start point; a true pair of preimages close
  * together does. */
-static int distinct(const ic_pairing *p, const double *z, const double band[2])
+static double gap_mod_periods(const ic_pairing *p, const double a[2], const double b[2])
 {
     double gap = 0.0;
     for (int k = 0; k < 2; k++) {
         const double T = period(p, k);
-        const double d = z[k] - z[k + 2];
+        const double d = a[k] - b[k];
         gap += fabs(T > 0.0 ? remainder(d, T) : d);
     }
-    return gap > SELF_DISTINCT_OF_BAND * (band[0] + band[1]);
+    return gap;
+}
+
+double ic_pairing_self_gap(const ic_pairing *p, const double *z)
+{
+    double gap = gap_mod_periods(p, z, z + 2);
+    if (p->glue.axis >= 0) { /* either preimage may be on the far edge's side */
+        double back[2];
+        ic_pairing_glue_back(p, z + 2, back);
+        gap = fmin(gap, gap_mod_periods(p, z, back));
+        ic_pairing_glue_back(p, z, back);
+        gap = fmin(gap, gap_mod_periods(p, back, z + 2));
+    }
+    return gap;
+}
+
+static int distinct(const ic_pairing *p, const double *z, const double band[2])
+{
+    return ic_pairing_self_gap(p, z) > SELF_DISTINCT_OF_BAND * (band[0] + band[1]);
 }
 
 static ic_status region(const ic_pairing *p, const double box[3][2], int has_box, double *lo,

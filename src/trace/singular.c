@@ -3,6 +3,7 @@
  * curves started, every branch out of a singular point followed. */
 #include "trace_internal.h"
 #include "common/vec3.h"
+#include "local/pair_access.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -20,8 +21,10 @@ static ic_status start_curve(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
     const ic_status st = ic_trace_both_ways(r, tr, pair, pt, opt, &pts, &n, &e);
     if (st == IC_OK || st == IC_ERR_NOMEM)
         return st;
-    ic_trace_failure(&r->report, "%s through (%.6g, %.6g, %.6g): %s", what, pt->xyz[0], pt->xyz[1],
-                     pt->xyz[2], e.message);
+    double at[3];
+    ic_frame_shown(&r->frame, pt->xyz, at);
+    ic_trace_failure(&r->report, "%s through (%.6g, %.6g, %.6g): %s", what, at[0], at[1], at[2],
+                     e.message);
     return IC_ERR_UNABLE;
 }
 
@@ -36,6 +39,19 @@ int ic_trace_found_near(const ic_trace_result *r, const ic_unresolved *u)
  * classified. Where the location fails, the point is dropped, or kept as
  * approximate when keep_unrefined. A point of a tangential curve starts the
  * trace of that curve instead (*curve: its index, else -1). */
+/* The two preimages of a self-intersection point are one, to within
+ * `tol` in parameters, modulo the sheet's periods and across its glued
+ * edges (pairing_glue.c): (u, v) and (u, v + 2 pi) on a sheet periodic in
+ * v are the same point of it (a figure-8 Klein bottle's cells beside the
+ * domain's edge gave such pairs, recorded as unclassified tangential
+ * points where the surface does not meet itself). */
+static int one_preimage(const ic_pair *pair, const ic_local_point *pt, double tol)
+{
+    const double z[4] = {pt->params[0][0], pt->params[0][1], pt->params[1][0],
+                         pt->params[1][1]};
+    return ic_pairing_self_gap(ic_pair_pairing(pair), z) <= tol;
+}
+
 ic_status ic_trace_record_tangential(ic_trace_result *r, ic_tracer *tr, ic_pair *pair,
                                      const ic_local_point *near, double reach, int keep_unrefined,
                                      const ic_trace_options *opt, int *curve)
@@ -51,10 +67,8 @@ ic_status ic_trace_record_tangential(ic_trace_result *r, ic_tracer *tr, ic_pair 
         approximate = 1;
     }
     /* a self-intersection's trivial solution: one preimage twice (every
-     * point of the diagonal has parallel normals) */
-    if (ic_pair_is_self(pair) &&
-        fabs(pt.params[0][0] - pt.params[1][0]) + fabs(pt.params[0][1] - pt.params[1][1]) <=
-            lo.distinct_params)
+     * point of the diagonal has parallel normals), also a period apart */
+    if (ic_pair_is_self(pair) && one_preimage(pair, &pt, lo.distinct_params))
         return IC_OK;
     /* two surfaces that coincide around it: a region, not a point */
     if (ic_trace_in_coincident(r, pt.xyz))

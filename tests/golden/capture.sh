@@ -16,7 +16,13 @@
 # cover's split by lengths in space (overflow-exp proven, cut-open-torus
 # refused at another cell: their json and text), and for the boxes of cusps,
 # tacnodes and higher-order contacts 400 times wider (the certificate's counts
-# of cells of the cusp, tacnode and contact-x4y4 cases: json and text).
+# of cells of the cusp, tacnode and contact-x4y4 cases: json and text), and for
+# issue 23's glued edges and the checker's diagonal test beside the diagonal
+# (enneper-self and whitney-umbrella: the covers' counts), the reason of a
+# cover out of cells naming its cell (eggcrate-k100, overflow-pow1025), and the
+# fit check's distance to a sheet from three starts (viviani's fit 9 knots
+# fewer in every format, sphere-cylinder-branch and the NURBS viviani's
+# fit_error).
 #   capture.sh BUILD_DIR SOURCE_DIR OUTDIR [examples] [K/N]
 # With "examples", only the bundled examples (the sanitized build's run: the
 # whole set takes 20 minutes under AddressSanitizer in a Debug build). With

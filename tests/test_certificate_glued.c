@@ -101,6 +101,14 @@ static void glue_found(void)
         "\"sin(u/2.0000001)*sin(v) + cos(u/2.0000001)*sin(2*v)\"],"
         "\"domain\": [[0, \"2*pi\"], [0, \"2*pi\"]], \"periodic\": [false, true]}]}";
     check_glue("Klein bottle a little off", near, -1, 0, 0.0, 0.0);
+    /* the edges u = 0 and 2 pi are one line (1, 0, v), but the radius
+     * 1 + 0.3 sin(u/4) sin(u/2) makes a crease there: the sheet does not
+     * continue across, and the checker could not use the glue beside it */
+    const char *crease =
+        "{\"self\": true, \"surfaces\": [{\"type\": \"parametric\", \"xyz\": ["
+        "\"(1 + 0.3*sin(u/4)*sin(u/2))*cos(u)\", \"(1 + 0.3*sin(u/4)*sin(u/2))*sin(u)\", "
+        "\"v\"], \"domain\": [[0, \"2*pi\"], [-1, 1]]}]}";
+    check_glue("a crease at the edges", crease, -1, 0, 0.0, 0.0);
     const char *patch =
         "{\"self\": true, \"surfaces\": [{\"type\": \"parametric\", \"xyz\": [\"u\", \"v\", "
         "\"u*v\"], \"domain\": [[-1, 1], [-1, 1]]}]}";

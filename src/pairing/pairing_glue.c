@@ -14,8 +14,9 @@
  * one of the first IC_GLUE_SEEDS samples along edge e0 matched on edge e1
  * by a search and Newton's method, which gives c; then every one of
  * IC_GLUE_SAMPLES points of e0 must be where g puts it on e1, to
- * IC_GLUE_MATCH of the edge's size. The identity R(u, w) = R(u + T, g(w))
- * is then taken as the surface's, as periodicity is.
+ * IC_GLUE_MATCH of the edge's size, and so must the points of the lines
+ * 1/16 of the width inside and outside both edges. The identity R(u, w) =
+ * R(u + T, g(w)) is then taken as the surface's, as periodicity is.
  */
 #include "common/vec3.h"
 #include "pairing.h"
@@ -27,6 +28,9 @@ enum { IC_GLUE_SAMPLES = 9, IC_GLUE_SEEDS = 3, IC_GLUE_SCAN = 64, IC_GLUE_NEWTON
 /* where in its ninth of the edge each sample lies (1 - the golden ratio's
  * inverse): no sample at the middle or a simple fraction of the edge */
 #define IC_GLUE_OFFSET 0.3819660112501051
+/* fraction of the glued parameter's width: the lines beside the edges where
+ * the glue must hold too */
+#define IC_GLUE_BAND (1.0 / 16)
 /* fraction of the edge curve's size: a match closer than this is the same
  * point (rounding of R at a unit feature is about 1e-16) */
 #define IC_GLUE_MATCH 1e-11
@@ -76,21 +80,27 @@ static double sample_at(const double w01[2], int s)
     return w01[0] + (w01[1] - w01[0]) * (s + IC_GLUE_OFFSET) / IC_GLUE_SAMPLES;
 }
 
-/* Every sample of edge e0 is where g_c puts it on edge e1, to tol. */
+/* Every sample of edge e0 is where g_c puts it on edge e1, to tol, and so
+ * are the samples of the lines IC_GLUE_BAND of the width inside and outside
+ * the edge: the checker uses R(u, w) = R(u + T, g(w)) beside the edges too
+ * (certify/leaf.c), so the surface must continue across them as one sheet,
+ * not merely share the edge curve (a crease where two pieces meet). */
 static int glue_holds(const ic_pairing *p, int axis, int flip, double c, const double dom[2][2],
                       double tol)
 {
     const int j = 1 - axis;
-    for (int s = 0; s < IC_GLUE_SAMPLES; s++) {
-        const double w = sample_at(dom[j], s);
-        double P[3], Q[3], d[3];
-        if (!edge_point(p, axis, dom[axis][0], w, P, NULL) ||
-            !edge_point(p, axis, dom[axis][1], flip ? c - w : w + c, Q, NULL))
-            return 0;
-        ic_axpy3(d, Q, -1.0, P);
-        if (!(ic_norm3(d) <= tol))
-            return 0;
-    }
+    const double band = IC_GLUE_BAND * (dom[axis][1] - dom[axis][0]);
+    for (int line = -1; line <= 1; line++)
+        for (int s = 0; s < IC_GLUE_SAMPLES; s++) {
+            const double w = sample_at(dom[j], s), e = line * band;
+            double P[3], Q[3], d[3];
+            if (!edge_point(p, axis, dom[axis][0] + e, w, P, NULL) ||
+                !edge_point(p, axis, dom[axis][1] + e, flip ? c - w : w + c, Q, NULL))
+                return 0;
+            ic_axpy3(d, Q, -1.0, P);
+            if (!(ic_norm3(d) <= tol))
+                return 0;
+        }
     return 1;
 }
 

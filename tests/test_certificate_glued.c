@@ -123,9 +123,52 @@ static void glue_found(void)
     release(&t);
 }
 
+/* A cylinder over the closed curve g(u) = (u(1 - u), u(1 - u) q(u)),
+ * q = t^3 - a^2 t with t = u - 1/2 and a = 1/2 - d, whose ends meet at
+ * the origin at an angle: g(u) = g(1 - u) where q(u) = q(1 - u), and
+ * q(u) - q(1 - u) = 2 t (t^2 - a^2) = 2 (u - 1/2)(u - d)(u - 1 + d), so a
+ * transversal double line at x = d (1 - d), y = 0, of length 1, its
+ * preimages u = d and 1 - d beside the edges (from a review: with the glue
+ * taken from the edges alone, the checker proved it away). Marked periodic
+ * it is refused (the surface does not continue across its ends); unmarked
+ * it is not glued, and any complete answer holds the line. */
+static void double_line_by_the_edges(void)
+{
+    const double d = 0.01;
+    const char *marked =
+        "{\"self\": true, \"surfaces\": [{\"type\": \"parametric\", \"xyz\": [\"u*(1-u)\", "
+        "\"u*(1-u)*((u-0.5)^3 - 0.49^2*(u-0.5))\", \"v\"], \"domain\": [[0, 1], [0, 1]], "
+        "\"periodic\": [true, false]}]}";
+    ic_problem *pr = NULL;
+    ic_error err;
+    CHECK(ic_problem_parse(&pr, marked, strlen(marked), &err) == IC_ERR_INVALID &&
+              strstr(err.message, "does not continue across"),
+          "a tube whose ends meet at an angle, marked periodic: accepted (%s)", err.message);
+    ic_problem_free(pr);
+    const char *unmarked =
+        "{\"self\": true, \"surfaces\": [{\"type\": \"parametric\", \"xyz\": [\"u*(1-u)\", "
+        "\"u*(1-u)*((u-0.5)^3 - 0.49^2*(u-0.5))\", \"v\"], \"domain\": [[0, 1], [0, 1]]}]}";
+    check_glue("a tube whose ends meet at an angle", unmarked, -1, 0, 0.0, 0.0);
+    traced t;
+    tally one = {0};
+    if (trace_json(&t, "double line by the edges", unmarked) == 0) {
+        int found = 0;
+        for (int c = 0; c < ic_trace_result_num_curves(t.res); c++) {
+            const ic_trace_curve *cv = ic_trace_result_curve(t.res, c);
+            found |= fabs(cv->length - 1) <= TIER_LENGTH &&
+                     fabs(cv->points[0].xyz[0] - d * (1 - d)) <= TIER_ON_CURVE &&
+                     fabs(cv->points[0].xyz[1]) <= TIER_ON_CURVE;
+        }
+        judge(&one, &t, "double line by the edges", found);
+        CHECK(found, "double line by the edges: the line at x = d (1 - d) not traced");
+    }
+    release(&t);
+}
+
 int main(void)
 {
     glue_found();
+    double_line_by_the_edges();
     tally t = {0};
     for (int i = 0; i < NCASES; i++) {
         char json[1600], name[120];

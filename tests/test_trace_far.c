@@ -144,8 +144,49 @@ static int same_points(const ic_trace_result *r, const ic_trace_result *ref, dou
     return 1;
 }
 
+/* A feature 1e11 times smaller than its place (from a review): the saved
+ * document keeps the points to the last place of 1e6, 1.2e-10, far more
+ * than 1e-8 of the region's width 4e-5, and verify must still accept it
+ * (the checker's reach for points includes their storage) and refuse its
+ * mutations. */
+static void verify_tiny_far(void)
+{
+    const char *json =
+        "{\"surfaces\": [{\"type\": \"cylinder\", \"center\": [1e6, 1e6, 1e6], \"axis\": [0, 0, "
+        "1], \"radius\": 1e-5}, {\"type\": \"cylinder\", \"center\": [1e6, 1e6, 1e6], \"axis\": "
+        "[1, 0, 0], \"radius\": 7e-6}], \"box\": [[999999.99998, 1000000.00002], "
+        "[999999.99998, 1000000.00002], [999999.99998, 1000000.00002]]}";
+    traced t;
+    if (trace_json_keep(&t, "tiny cylinders at 1e6", json) == 0) {
+        CHECK(ic_trace_result_report(t.res)->complete, "tiny cylinders at 1e6: not proven");
+        verify_saved(&t, "tiny cylinders at 1e6");
+    }
+    release(&t);
+}
+
+/* An undecided region far out is named in the user's coordinates. */
+static void failures_where_the_user_is(void)
+{
+    const char *json =
+        "{\"constants\": {\"o\": 1000000.1}, \"self\": true, \"surfaces\": [{\"type\": "
+        "\"parametric\", \"xyz\": [\"-3e7 + (u-o)*(v-o)\", \"0.3 + 1e-7*(u-o)\", \"-3e7 + "
+        "(v-o)^2\"], \"domain\": [[\"o-1\", \"o+1\"], [\"o-1\", \"o+1\"]]}]}";
+    traced t;
+    if (trace_json(&t, "squashed sheet at 1e6", json) == 0) {
+        const ic_trace_report *rep = ic_trace_result_report(t.res);
+        int named = 0;
+        for (int k = 0; k < rep->nfailures; k++)
+            named |= strstr(rep->failures[k], "undecided") && strstr(rep->failures[k], "[1000000.");
+        CHECK(!rep->complete && named, "squashed sheet at 1e6: %s",
+              rep->nfailures ? rep->failures[0] : "no failure listed");
+    }
+    release(&t);
+}
+
 int main(void)
 {
+    verify_tiny_far();
+    failures_where_the_user_is();
     tally t = {0};
     int kept = 0, proven_at_origin = 0;
     for (int i = 0; i < NCASES; i++) {

@@ -64,11 +64,26 @@ static int in_a_box(const ic_certificate *c, const double *z)
     return 0;
 }
 
+/* Search coordinates' rounding where the user's points are stored: a
+ * trace of a problem moved near the origin (trace/frame.h) is saved at its
+ * place, to half a unit in the last place of the origin there, and verify
+ * moves the points back (exactly, but rounded already); 4 units of the
+ * largest origin's magnitude, 0 when nothing moved. */
+static double stored_rounding(const ic_certificate *c)
+{
+    double far = 0.0;
+    for (int k = 0; k < c->dim; k++)
+        far = fmax(far, fabs(ic_certificate_origin(c, k)));
+    return far > 0 ? 4 * (nextafter(far, INFINITY) - far) : 0.0;
+}
+
 int ic_certify_points_on(ic_certificate *c, const ic_certify_curve *curves, int ncurves)
 {
     double width = 0.0;
     for (int k = 0; k < c->dim; k++)
         width = fmax(width, c->hi[k] - c->lo[k]);
+    /* a point is on the curve to its reach in the region or to its storage */
+    const double reach = fmax(IC_CERTIFY_POINT_REACH * width, stored_rounding(c));
     for (int k = 0; k < ncurves; k++) {
         if (curves[k].tangential)
             continue; /* its own test: ic_certify_tubes_real */
@@ -76,7 +91,7 @@ int ic_certify_points_on(ic_certificate *c, const ic_certify_curve *curves, int 
             const double *z = curves[k].z + (size_t)j * (size_t)c->dim;
             double w[4];
             ic_certificate_wrap(c, z, w);
-            if (ic_certify_near_curve(c, w, IC_CERTIFY_POINT_REACH * width) || in_a_box(c, w))
+            if (ic_certify_near_curve(c, w, reach) || in_a_box(c, w))
                 continue;
             ic_certificate_refuse(c,
                                   "point %d of curve %d is not on the intersection (farther "

@@ -220,35 +220,67 @@ int ic_surface_num_outputs(const ic_surface *s) { return !s ? 0 : s->kind == IC_
  * 1e-16 of it) */
 #define PERIOD_MATCH 1e-9
 
-/* A parameter declared periodic must close the surface: R at both ends of
- * its domain, sampled along the other parameter, is the same point. */
-static ic_status check_period(ic_surface *s, const double domain[2][2], int i, ic_error *err)
+/* fraction of a periodic parameter's width: the lines this far beside its
+ * two ends must match as the ends do (a formula's sheet continues across
+ * its seam as one: the checker evaluates it across, certify/leaf.c) */
+#define PERIOD_BAND (1.0 / 16)
+
+/* The largest difference between R at z[i] = domain[i][0] + t and at
+ * domain[i][1] + t over samples along the other parameter, and where;
+ * samples where the surface is not defined are skipped. */
+static double period_gap(ic_surface *s, const double domain[2][2], int i, double t,
+                         double *size, double *at_worst)
 {
     const int o = 1 - i;
     const double w0 = isfinite(domain[o][0]) ? domain[o][0] : -1.0;
     const double w1 = isfinite(domain[o][1]) ? domain[o][1] : w0 + 2.0;
     enum { SAMPLES = 9 };
-    double x[SAMPLES][2][3], size = 0, worst = 0, at_worst = w0;
-    int ok[SAMPLES];
+    double worst = 0;
     for (int k = 0; k < SAMPLES; k++) {
-        double at[2];
+        double at[2], x[2][3];
         at[o] = w0 + (w1 - w0) * (k + 0.5) / SAMPLES;
-        ok[k] = 1;
+        int ok = 1;
         for (int e = 0; e < 2; e++) {
-            at[i] = domain[i][e];
-            ok[k] = ok[k] && ic_surface_eval(s, x[k][e], at, NULL) == IC_OK; /* else skipped */
+            at[i] = domain[i][e] + t;
+            ok = ok && ic_surface_eval(s, x[e], at, NULL) == IC_OK; /* else skipped */
         }
-        for (int c = 0; ok[k] && c < 3; c++) {
-            size = fmax(size, fmax(fabs(x[k][0][c]), fabs(x[k][1][c])));
-            if (fabs(x[k][1][c] - x[k][0][c]) > worst)
-                worst = fabs(x[k][1][c] - x[k][0][c]), at_worst = at[o];
+        for (int c = 0; ok && c < 3; c++) {
+            *size = fmax(*size, fmax(fabs(x[0][c]), fabs(x[1][c])));
+            if (fabs(x[1][c] - x[0][c]) > worst)
+                worst = fabs(x[1][c] - x[0][c]), *at_worst = at[o];
         }
     }
-    if (!(worst <= PERIOD_MATCH * size))
+    return worst;
+}
+
+/* A parameter declared periodic must close the surface: R at both ends of
+ * its domain, sampled along the other parameter, is the same point; for a
+ * formula also on the lines PERIOD_BAND of the width beside both ends (a
+ * tube whose two ends merely meet, at a crease, is no periodic surface:
+ * the checker, taking it for one, proved a double line beside the seam
+ * away). */
+static ic_status check_period(ic_surface *s, const double domain[2][2], int i, ic_error *err)
+{
+    const int o = 1 - i;
+    const double band = PERIOD_BAND * (domain[i][1] - domain[i][0]);
+    const int lines = s->backend == BACKEND_FORMULA ? 1 : 0;
+    for (int line = 0; line <= 2 * lines; line++) {
+        const double t = line == 0 ? 0.0 : line == 1 ? -band : band;
+        double size = 0, at_worst = 0;
+        const double worst = period_gap(s, domain, i, t, &size, &at_worst);
+        if (worst <= PERIOD_MATCH * size)
+            continue;
+        if (line == 0)
+            return ic_error_set(err, IC_ERR_INVALID, 0,
+                                "parameter %d is not periodic over [%g, %g]: the surface's points "
+                                "at its two ends differ by %.3g at parameter %d = %g",
+                                i + 1, domain[i][0], domain[i][1], worst, o + 1, at_worst);
         return ic_error_set(err, IC_ERR_INVALID, 0,
-                            "parameter %d is not periodic over [%g, %g]: the surface's points at "
-                            "its two ends differ by %.3g at parameter %d = %g",
-                            i + 1, domain[i][0], domain[i][1], worst, o + 1, at_worst);
+                            "parameter %d is not periodic over [%g, %g]: its two ends meet, but "
+                            "the surface does not continue across them (at %g beside both ends "
+                            "its points differ by %.3g at parameter %d = %g)",
+                            i + 1, domain[i][0], domain[i][1], t, worst, o + 1, at_worst);
+    }
     return IC_OK;
 }
 

@@ -305,14 +305,30 @@ static const char *why_text(int why)
     return "not excluded: Newton converged only outside these cells";
 }
 
-static void list_region(ic_trace_report *rep, const region *g, int dim)
+/* Where search coordinate k was moved from (trace/frame.h): the xyz
+ * origin for two implicit surfaces, else the parametric sheets' parameters'
+ * (a parametric/implicit pair searches its parametric sheet's; the
+ * implicit sheet's are 0, so the sum is the parametric one's). */
+static double search_origin(const ic_frame *fr, int dim, int k)
+{
+    if (dim == 3)
+        return fr->xyz[k];
+    return dim == 2 ? fr->params[0][k] + fr->params[1][k] : fr->params[k / 2][k % 2];
+}
+
+static void list_region(ic_trace_result *r, const region *g, int dim)
 {
     static const char *const coords[3] = {"(x, y, z)", "(u, v)", "(u, v, p, q)"};
+    ic_trace_report *rep = &r->report;
     char box[160];
     int len = 0;
-    for (int k = 0; k < dim && len < (int)sizeof box; k++)
-        len += snprintf(box + len, sizeof box - (size_t)len, "%s[%.6g, %.6g]", k ? " x " : "",
-                        g->lo[k], g->hi[k]);
+    for (int k = 0; k < dim && len < (int)sizeof box; k++) {
+        const double o = search_origin(&r->frame, dim, k);
+        /* far out, the digits that tell the cells apart come after the place's */
+        const int digits = r->frame.moved ? 13 : 6;
+        len += snprintf(box + len, sizeof box - (size_t)len, "%s[%.*g, %.*g]", k ? " x " : "",
+                        digits, g->lo[k] + o, digits, g->hi[k] + o);
+    }
     ic_trace_failure(rep, "undecided: %d cell%s in %s %s: %s", g->cells, g->cells == 1 ? "" : "s",
                      coords[dim == 3 ? 0 : dim == 2 ? 1 : 2], box, why_text(g->why));
 }
@@ -366,7 +382,7 @@ void ic_trace_report_open_cells(ic_trace_result *r, const ic_unresolved *u, int 
     int rest_cells = 0;
     for (int j = 0; j < ng; j++) {
         if (j < shown)
-            list_region(rep, &g[j], dim);
+            list_region(r, &g[j], dim);
         else
             rest_cells += g[j].cells;
     }

@@ -14,7 +14,7 @@
  * one of the first IC_GLUE_SEEDS samples along edge e0 matched on edge e1
  * by a search and Newton's method, which gives c; then every one of
  * IC_GLUE_SAMPLES points of e0 must be where g puts it on e1, to
- * IC_GLUE_MATCH of the edge's size, and so must the points of the lines
+ * IC_GLUE_MATCH of its points' magnitude, and so must the points of the lines
  * 1/16 of the width inside and outside both edges. The identity R(u, w) =
  * R(u + T, g(w)) is then taken as the surface's, as periodicity is.
  */
@@ -31,8 +31,8 @@ enum { IC_GLUE_SAMPLES = 9, IC_GLUE_SEEDS = 3, IC_GLUE_SCAN = 64, IC_GLUE_NEWTON
 /* fraction of the glued parameter's width: the lines beside the edges where
  * the glue must hold too */
 #define IC_GLUE_BAND (1.0 / 16)
-/* fraction of the edge curve's size: a match closer than this is the same
- * point (rounding of R at a unit feature is about 1e-16) */
+/* fraction of the largest magnitude of the edge's points (rounding of R is
+ * about 1e-16 of it): a match closer than this is the same point */
 #define IC_GLUE_MATCH 1e-11
 
 /* R at (edge value e along axis, w along the other parameter). */

@@ -7,8 +7,8 @@
  * constants are the doubles the tape holds).
  *
  * Tolerance: TIER_MOVED relative to max(1, |truth|): g runs on values of
- * size at most 1e3 here, a few roundings of 1.1e-16 each, against a truth
- * with 11 more bits; the saddle evaluated where it lies (f itself) is off
+ * size at most 1e3 here (constants too large for one double carried in
+ * two), a few roundings of 1.1e-16 each, against a truth with 11 more bits; the saddle evaluated where it lies (f itself) is off
  * by about 1e-10 at 1e6 (the last place of 1e6), which the test also shows.
  */
 #include <math.h>
@@ -64,6 +64,13 @@ static long double uncombined(const long double *x, int out)
     return (x[0] - 1e6L) - (long double)0.1;
 }
 
+/* x - 0.1 - 0.2 - 0.3 - 1e6 at x = 1e6 + 0.5 + y, by hand */
+static long double tails(const long double *x, int out)
+{
+    (void)out;
+    return (x[0] - 1e6L) - (long double)0.1 - (long double)0.2 - (long double)0.3;
+}
+
 static long double sheet(const long double *x, int out)
 {
     if (out == 0)
@@ -77,6 +84,14 @@ static long double negated(const long double *x, int out)
     return -(x[0] - 1e6L) / 8 + (1e6L - x[1]) * 2 + 1e6L * x[2];
 }
 
+/* O + 0.37 u - 0.21 v + 0.05 less O, by hand (O + 0.05 is no double: its
+ * two doubles carry it) */
+static long double tail(const long double *x, int out)
+{
+    (void)out;
+    return (long double)0.37 * x[0] - (long double)0.21 * x[1] + (long double)0.05;
+}
+
 static const shift_case CASES[] = {
     {"saddle at 1e6", {"z - 1e6 - 0.05*((x - 1e6)^2 - (y - 1e6)^2)"}, 1, 3, {1e6, 1e6, 1e6},
      {0}, saddle, TIER_MOVED},
@@ -84,13 +99,20 @@ static const shift_case CASES[] = {
      {1000.25, 0, -7}, {0}, mixed, TIER_MOVED},
     {"constants that cannot combine", {"(x - 0.1)^2/1e6 + x/3 - 1e6"}, 1, 3,
      {1e6 + 0.5, 0, 0}, {0}, inexact, TIER_MOVED},
-    /* 1e6 + 0.5 - 0.1 is no double: g forms 1e6 + 0.5 + y and rounds
-     * there as f does, to 2 ulps of 1e6 (2.4e-10), and its enclosure
+    /* 1e6 + 0.5 - 0.1 is no double, but it is two (its tail exact): less
+     * 1e6 it is 0.4 and the tail, and g keeps every digit; its enclosure
      * holds the truth only if no constant was rounded */
-    {"a constant that cannot combine", {"x - 0.1 - 1e6"}, 1, 3, {1e6 + 0.5, 0, 0}, {0},
-     uncombined, 2.4e-10},
+    {"a constant that is no double", {"x - 0.1 - 1e6"}, 1, 3, {1e6 + 0.5, 0, 0}, {0},
+     uncombined, TIER_MOVED},
+    /* three such constants: their tails need not sum into one double, and
+     * where they do not, g forms the sum at 1e6 as f does (2 ulps of 1e6,
+     * 2.4e-10); its enclosure holds the truth only if no tail was rounded */
+    {"tails that may not combine", {"x - 0.1 - 0.2 - 0.3 - 1e6"}, 1, 3, {1e6 + 0.5, 0, 0},
+     {0}, tails, 2.4e-10},
     {"a parametric sheet", {"1e6 + u", "v - 2", "1e6 + 0.05*u*v"}, 3, 2, {3, 4}, {1e6, 0, 1e6},
      sheet, TIER_MOVED},
+    {"a small constant after a large one", {"1e6 + 0.37*u - 0.21*v + 0.05"}, 1, 2, {0, 0},
+     {1e6}, tail, TIER_MOVED},
     {"negations, products by constants", {"-(x - 1e6)/8 + (1e6 - y)*2 + 1e6*z"}, 1, 3,
      {1e6, 1e6, 0}, {0}, negated, TIER_MOVED},
 };
@@ -165,7 +187,7 @@ static void check_case(const shift_case *k)
  * rounds to the last place of 1e6 (1.2e-10), which g keeps. */
 static void sheet_where_it_lies(void)
 {
-    const shift_case *k = &CASES[4]; /* the parametric sheet */
+    const shift_case *k = &CASES[5]; /* the parametric sheet */
     static const char *const UV[] = {"u", "v"};
     ic_expr *f = NULL;
     ic_error err;

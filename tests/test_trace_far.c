@@ -1,6 +1,6 @@
 /*
  * Problems far from the origin (docs/tracing.md, "Far from the origin"):
- * seven problems of unit size, each posed at the origin and translated by
+ * eight problems of unit size, each posed at the origin and translated by
  * o = 1e6, -333333.25 and 4e7 along all three axes (formulas in x - o,
  * parametric sheets o + R(u, v), boxes and domains moved with them). At
  * every offset each must be right (its total length against the truth
@@ -19,7 +19,9 @@
  * parametric unit sphere cut by a plane through its centre, 2 pi; the
  * unit cylinder as a sheet against the plane z = x / 2, an ellipse of
  * semi-axes sqrt(5)/2 and 1, 4 (sqrt 5 / 2) E(1/5) (E(1/5) =
- * 1.4890350580958527, mpmath.ellipe(0.2)); the saddle z = 0.05(x^2 - y^2)
+ * 1.4890350580958527, mpmath.ellipe(0.2)), and the same against the plane
+ * z = x / 2 + 0.25 written with its constant after the place (o + 0.5 s -
+ * 0.5 o + 0.25: the section of a cylinder moved along its axis); the saddle z = 0.05(x^2 - y^2)
  * on z = 0 in [-1, 1]^2, two diagonals of 2 sqrt 2.
  *
  * Tolerances: lengths TIER_LENGTH relative (the tracer's tol is a
@@ -73,6 +75,12 @@ static const far_case CASES[] = {
      "{\"type\": \"parametric\", \"params\": [\"s\", \"t\"], \"xyz\": [\"s\", \"t\", \"O + "
      "0.5*(s - O)\"], \"domain\": [[\"O - 1.5\", \"O + 1.5\"], [\"O - 1.5\", \"O + 1.5\"]]}]}",
      0},
+    {"parametric cylinder, a plane with a constant after the place",
+     "{\"surfaces\": [{\"type\": \"parametric\", \"xyz\": [\"O + cos(u)\", \"O + sin(u)\", "
+     "\"O + v\"], \"domain\": [[0, \"2*pi\"], [-1, 1]], \"periodic\": [true, false]},"
+     "{\"type\": \"parametric\", \"params\": [\"s\", \"t\"], \"xyz\": [\"s\", \"t\", \"O + "
+     "0.5*s - 0.5*O + 0.25\"], \"domain\": [[\"O - 1.5\", \"O + 1.5\"], [\"O - 1.5\", \"O + 1.5\"]]}]}",
+     0},
     {"saddle on its tangent plane",
      "{\"surfaces\": [{\"type\": \"parametric\", \"xyz\": [\"u\", \"v\", \"O + 0.05*((u - O)^2 - "
      "(v - O)^2)\"], \"domain\": [[\"O - 1\", \"O + 1\"], [\"O - 1\", \"O + 1\"]]}, {\"type\": \"implicit\", "
@@ -95,7 +103,7 @@ static double truth_length(int i, double o)
 {
     const double L[NCASES] = {2 * PI * sqrt(0.91), clipped_circle(o), 2 * 4 * sqrt(2.0) * E_HALF,
                               2 * 2 * PI * 0.25,   2 * PI,           4 * (sqrt(5.0) / 2) * E_FIFTH,
-                              2 * 2 * sqrt(2.0)};
+                              4 * (sqrt(5.0) / 2) * E_FIFTH, 2 * 2 * sqrt(2.0)};
     return L[i];
 }
 

@@ -32,16 +32,6 @@ static int numbers(const cJSON *a, double *out, int n)
     return 1;
 }
 
-/* A point of the document in the moved problem's coordinates (trace/frame.h:
- * the check runs where the trace ran). */
-static void move_point(const ic_frame *fr, double xyz[3], double params[2][2])
-{
-    for (int k = 0; k < 3; k++)
-        xyz[k] -= fr->xyz[k];
-    for (int k = 0; params && k < 4; k++)
-        params[k / 2][k % 2] -= fr->params[k / 2][k % 2];
-}
-
 /* One point's xyz and params (null for an implicit sheet). */
 static int read_point(const cJSON *p, double xyz[3], double params[2][2])
 {
@@ -97,7 +87,7 @@ static ic_status read_curves(const cJSON *doc, const ic_pairing *pg, const char 
                                     "%s: curves[%d].points[%d]: xyz must be 3 numbers and "
                                     "params two [u, v] pairs or null",
                                     name, k, i);
-            move_point(&pg->frame, xyz, params);
+            ic_frame_move(&pg->frame, -1.0, xyz, params); /* where the check runs */
             pg->kind->flatten(pg, xyz, params, *z + at * (size_t)dim);
         }
     }
@@ -164,7 +154,7 @@ static ic_status read_singular(const cJSON *doc, const char *name, const ic_fram
         if (!numbers(cJSON_GetObjectItemCaseSensitive(q, "xyz"), (*p)[k], 3))
             return ic_error_set(err, IC_ERR_INVALID, 0, "%s: points[%d].xyz: must be 3 numbers",
                                 name, k);
-        move_point(fr, (*p)[k], NULL);
+        ic_frame_move(fr, -1.0, (*p)[k], NULL);
         (*scale)[k] = box_scale(q);
         (*passages)[k] = passages_allowed(q);
     }
@@ -196,7 +186,7 @@ static ic_status read_tubes(const cJSON *doc, const char *name, const ic_frame *
         (*tubes)[(*n)++] = (ic_certify_tube){*xyz + 3 * at, cJSON_GetArraySize(pts), closed};
         for (const cJSON *p = pts->child; p; p = p->next, at++)
             if (numbers(cJSON_GetObjectItemCaseSensitive(p, "xyz"), *xyz + 3 * at, 3))
-                move_point(fr, *xyz + 3 * at, NULL);
+                ic_frame_move(fr, -1.0, *xyz + 3 * at, NULL);
     }
     return IC_OK;
 }

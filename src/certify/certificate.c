@@ -112,10 +112,7 @@ static void offset_seams(ic_certificate *c)
 
 double ic_certificate_origin(const ic_certificate *c, int k)
 {
-    const ic_frame *fr = &c->pg->frame;
-    if (c->dim == 3)
-        return fr->xyz[k];
-    return c->dim == 2 ? fr->params[c->pg->P][k] : fr->params[k / 2][k % 2];
+    return ic_frame_search_origin(&c->pg->frame, c->dim, k);
 }
 
 ic_certificate *ic_certificate_new(const ic_pairing *pg, const double box[3][2], int has_box,

@@ -32,4 +32,26 @@ static inline void ic_frame_shown(const ic_frame *f, const double xyz[3], double
         out[k] = xyz[k] + (f ? f->xyz[k] : 0.0);
 }
 
+/* A point moved by sign times the frame: -1 into the moved problem
+ * (verify), +1 back to the user's (the trace's result); params may be NULL. */
+static inline void ic_frame_move(const ic_frame *f, double sign, double xyz[3],
+                                 double params[2][2])
+{
+    for (int k = 0; k < 3; k++)
+        xyz[k] += sign * f->xyz[k];
+    for (int k = 0; params && k < 4; k++)
+        params[k / 2][k % 2] += sign * f->params[k / 2][k % 2];
+}
+
+/* Where search coordinate k of a search of dimension dim was moved from:
+ * the xyz origin for two implicit surfaces (3), else the sheets'
+ * parameters' (4: u, v, p, q; 2: the parametric sheet's, the implicit
+ * sheet's being 0). */
+static inline double ic_frame_search_origin(const ic_frame *f, int dim, int k)
+{
+    if (dim == 3)
+        return f->xyz[k];
+    return dim == 2 ? f->params[0][k] + f->params[1][k] : f->params[k / 2][k % 2];
+}
+
 #endif

@@ -121,14 +121,6 @@ void ic_trace_moved_release(ic_trace_moved *m)
     memset(m, 0, sizeof *m);
 }
 
-static void point_back(double xyz[3], double params[2][2], const ic_frame *fr)
-{
-    for (int k = 0; k < 3; k++)
-        xyz[k] += fr->xyz[k];
-    for (int k = 0; params && k < 4; k++)
-        params[k / 2][k % 2] += fr->params[k / 2][k % 2];
-}
-
 void ic_trace_result_move_back(ic_trace_result *r, const ic_frame *fr)
 {
     if (!r || !fr->moved)
@@ -136,14 +128,14 @@ void ic_trace_result_move_back(ic_trace_result *r, const ic_frame *fr)
     for (int c = 0; c < r->ncurves; c++)
         for (int i = 0; i < r->curves[c].npoints; i++) {
             ic_trace_point *p = &r->storage[c][i];
-            point_back(p->xyz, p->params, fr);
+            ic_frame_move(fr, 1.0, p->xyz, p->params);
         }
     for (int k = 0; k < r->nspecials; k++) {
-        point_back(r->specials[k].xyz, NULL, fr);
-        point_back(r->located[k].pt.xyz, r->located[k].pt.params, fr);
+        ic_frame_move(fr, 1.0, r->specials[k].xyz, NULL);
+        ic_frame_move(fr, 1.0, r->located[k].pt.xyz, r->located[k].pt.params);
     }
     for (int k = 0; k < r->ncoincident; k++)
-        point_back(r->coincident[k], NULL, fr);
+        ic_frame_move(fr, 1.0, r->coincident[k], NULL);
     ic_curve_index_free(r->index);
     r->index = NULL;
 }

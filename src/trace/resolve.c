@@ -305,17 +305,6 @@ static const char *why_text(int why)
     return "not excluded: Newton converged only outside these cells";
 }
 
-/* Where search coordinate k was moved from (trace/frame.h): the xyz
- * origin for two implicit surfaces, else the parametric sheets' parameters'
- * (a parametric/implicit pair searches its parametric sheet's; the
- * implicit sheet's are 0, so the sum is the parametric one's). */
-static double search_origin(const ic_frame *fr, int dim, int k)
-{
-    if (dim == 3)
-        return fr->xyz[k];
-    return dim == 2 ? fr->params[0][k] + fr->params[1][k] : fr->params[k / 2][k % 2];
-}
-
 static void list_region(ic_trace_result *r, const region *g, int dim)
 {
     static const char *const coords[3] = {"(x, y, z)", "(u, v)", "(u, v, p, q)"};
@@ -323,7 +312,7 @@ static void list_region(ic_trace_result *r, const region *g, int dim)
     char box[160];
     int len = 0;
     for (int k = 0; k < dim && len < (int)sizeof box; k++) {
-        const double o = search_origin(&r->frame, dim, k);
+        const double o = ic_frame_search_origin(&r->frame, dim, k);
         /* far out, the digits that tell the cells apart come after the place's */
         const int digits = r->frame.moved ? 13 : 6;
         len += snprintf(box + len, sizeof box - (size_t)len, "%s[%.*g, %.*g]", k ? " x " : "",
